@@ -1,0 +1,32 @@
+# Compile options shared by every wheelwear target, attached through an interface target
+# so that no global flags are edited.
+add_library(wheelwear_compile_options INTERFACE)
+add_library(wheelwear::compile_options ALIAS wheelwear_compile_options)
+target_compile_options(wheelwear_compile_options INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion
+  # errno is never read; without it sqrt can be vectorised.
+  -fno-math-errno)
+if(WHEELWEAR_NATIVE)
+  target_compile_options(wheelwear_compile_options INTERFACE -march=native)
+endif()
+if(WHEELWEAR_SANITIZE)
+  target_compile_options(wheelwear_compile_options INTERFACE
+    -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all)
+  target_link_options(wheelwear_compile_options INTERFACE -fsanitize=address,undefined)
+endif()
+install(TARGETS wheelwear_compile_options EXPORT wheelwearTargets)
+
+# wheelwear_module(NAME SOURCES ... DEPS ...): one static library per module, with its public
+# headers under NAME/include and a namespaced alias wheelwear::NAME.
+function(wheelwear_module name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+  add_library(wheelwear_${name} STATIC ${ARG_SOURCES})
+  add_library(wheelwear::${name} ALIAS wheelwear_${name})
+  set_target_properties(wheelwear_${name} PROPERTIES EXPORT_NAME ${name} POSITION_INDEPENDENT_CODE ON)
+  target_include_directories(wheelwear_${name} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:include>)
+  target_link_libraries(wheelwear_${name} PUBLIC ${ARG_PUBLIC_DEPS} wheelwear::compile_options
+                                          PRIVATE ${ARG_PRIVATE_DEPS})
+  install(TARGETS wheelwear_${name} EXPORT wheelwearTargets ARCHIVE DESTINATION lib)
+  install(DIRECTORY include/ DESTINATION include)
+endfunction()

@@ -1,0 +1,117 @@
+// `wheelwear creep`: creep forces of one SDEC patch with any of the tangential methods.
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "commands.hpp"
+#include "wheelwear/input_error.hpp"
+#include "wheelwear/pipeline/json_writer.hpp"
+#include "wheelwear/wear/fastsim.hpp"
+#include "wheelwear/wear/linear_theory.hpp"
+
+namespace wheelwear::cli {
+
+namespace {
+
+struct CreepArgs {
+  std::string method = "fastsim-sdec";
+  contactgeom::Sdec sdec{std::nan(""), std::nan(""), 0.0};
+  wear::Creepages creepages;
+  wear::ContactLoad load{std::nan(""), 0.3};
+  wear::Material material;
+  wear::FastsimOptions options;
+  std::string bound = "parabolic";
+  bool json = false;
+};
+
+void run_creep(const CreepArgs& args) {
+  wear::CreepForces forces;
+  int cells = 0, slip_cells = 0;
+  const bool linear = args.method == "linear-sdec" || args.method == "she-sdec";
+  if (linear) {
+    args.sdec.validate();
+    args.load.validate();
+    forces = args.method == "linear-sdec"
+                 ? wear::linear_sdec_forces(args.sdec, args.creepages, args.material)
+                 : wear::she_sdec_forces(args.sdec, args.creepages, args.material, args.load);
+  } else {
+    const auto method = wear::parse_fastsim_method(args.method);
+    if (!method) throw InputError("--method " + args.method + ": unknown method");
+    wear::FastsimOptions options = args.options;
+    options.bound = args.bound == "semi-elliptic" ? wear::TractionBound::semi_elliptic
+                                                  : wear::TractionBound::parabolic;
+    const wear::TangentialSolution solution =
+        wear::fastsim(*method, args.sdec, args.creepages, args.load, args.material, options);
+    forces = solution.forces;
+    cells = solution.cells;
+    slip_cells = solution.slip_cells;
+  }
+  const double mu_n = args.load.mu * args.load.N;
+  const std::string warnings = forces.flags.describe();
+  if (args.json) {
+    pipeline::JsonObject out;
+    out.add("method", args.method)
+        .add("Fx", forces.Fx)
+        .add("Fy", forces.Fy)
+        .add("Fx_muN", forces.Fx / mu_n)
+        .add("Fy_muN", forces.Fy / mu_n);
+    if (forces.has_Mz) out.add("Mz", forces.Mz);
+    if (!linear) out.add("cells", cells).add("slip_cells", slip_cells);
+    out.add("extrapolated", forces.flags.any()).add("warnings", warnings);
+    std::cout << out.str() << '\n';
+    return;
+  }
+  std::printf("method   %s\n", args.method.c_str());
+  std::printf("Fx       %14.6g N   (Fx/muN = %+.6f)\n", forces.Fx, forces.Fx / mu_n);
+  std::printf("Fy       %14.6g N   (Fy/muN = %+.6f)\n", forces.Fy, forces.Fy / mu_n);
+  if (forces.has_Mz) std::printf("Mz       %14.6g N m (about O)\n", forces.Mz);
+  if (!linear) std::printf("slip     %d of %d cells\n", slip_cells, cells);
+  if (!warnings.empty()) std::printf("warning  %s\n", warnings.c_str());
+}
+
+}  // namespace
+
+void add_creep_command(CLI::App& app) {
+  auto args = std::make_shared<CreepArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "creep",
+      "Creep forces of one SDEC contact patch (Liu, Fu & Bruni 2022).\n"
+      "The patch is two half-ellipses joined at the initial contact point O: semi-length a\n"
+      "along the rolling direction x, semi-width b, shape number psi (psi > 0: the patch\n"
+      "reaches further on the +y side of O; psi = 0 is the ellipse). Creepages are at O.\n"
+      "Forces act on the wheel and oppose the creepages (positive vx gives negative Fx).\n"
+      "Example (the paper's reference case):\n"
+      "  wheelwear creep --method fastsim-sdec --a 4.25e-3 --b 4.25e-3 --psi 0.6 \\\n"
+      "    --vx 0 --vy 0 --phi 1 --N 37830 --G 80e9 --nu 0.25 --mu 0.35 --json");
+  cmd->add_option("--method", args->method,
+                  "fastsim-sdec (default), fastsim-eql, fastsim-eqe, fastsim-eqe-shifted,\n"
+                  "fastsim-elliptic, linear-sdec or she-sdec (Shen-Hedrick-Elkins)")
+      ->check(CLI::IsMember({"fastsim-sdec", "fastsim-eql", "fastsim-eqe", "fastsim-eqe-shifted",
+                             "fastsim-elliptic", "linear-sdec", "she-sdec"}));
+  cmd->add_option("--a", args->sdec.a, "semi-length along x [m]")->required();
+  cmd->add_option("--b", args->sdec.b, "semi-width along y [m]")->required();
+  cmd->add_option("--psi", args->sdec.psi, "shape number, |psi| < 1 [-]")->capture_default_str();
+  cmd->add_option("--vx", args->creepages.vx, "longitudinal creepage at O [-]")
+      ->capture_default_str();
+  cmd->add_option("--vy", args->creepages.vy, "lateral creepage at O [-]")->capture_default_str();
+  cmd->add_option("--phi", args->creepages.phi, "spin creepage [1/m]")->capture_default_str();
+  cmd->add_option("--N", args->load.N, "normal force [N]")->required();
+  cmd->add_option("--mu", args->load.mu, "friction coefficient [-]")->capture_default_str();
+  cmd->add_option("--G", args->material.G, "combined shear modulus [Pa]")->capture_default_str();
+  cmd->add_option("--nu", args->material.nu, "Poisson's ratio [-]")->capture_default_str();
+  cmd->add_option("--nx", args->options.nx, "FASTSIM cells along x per strip")
+      ->capture_default_str();
+  cmd->add_option("--ny", args->options.ny, "FASTSIM strips across the width")
+      ->capture_default_str();
+  cmd->add_option("--bound", args->bound, "traction bound: parabolic (Eq. 18) or semi-elliptic")
+      ->check(CLI::IsMember({"parabolic", "semi-elliptic"}))
+      ->capture_default_str();
+  cmd->add_flag("--json", args->json, "print one JSON object (forces in N, normalised by muN)");
+  cmd->callback([args] { run_creep(*args); });
+}
+
+}  // namespace wheelwear::cli

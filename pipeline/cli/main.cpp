@@ -1,0 +1,31 @@
+// The wheelwear command-line tool: one subcommand per stage of the wear chain.
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+
+#include "commands.hpp"
+#include "wheelwear/input_error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "wheelwear: railway wheel profile wear prediction with non-elliptic (SDEC) contact.\n"
+      "All inputs and outputs are SI (m, N, Pa, 1/m) unless a flag says otherwise.\n"
+      "Run `wheelwear COMMAND --help` for the options of a command."};
+  app.require_subcommand(1);
+  app.fallthrough(false);
+  wheelwear::cli::add_creep_command(app);
+  wheelwear::cli::add_profile_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error);
+  } catch (const wheelwear::InputError& error) {
+    std::cerr << "wheelwear: error: " << error.what() << '\n';
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "wheelwear: failed: " << error.what() << '\n';
+    return 3;
+  }
+  return 0;
+}

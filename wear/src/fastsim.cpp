@@ -1,0 +1,148 @@
+#include "wheelwear/wear/fastsim.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include "fastsim_kernel.hpp"
+#include "wheelwear/input_error.hpp"
+#include "wheelwear/wear/kalker_coefficients.hpp"
+#include "wheelwear/wear/sdec_coefficients.hpp"
+
+namespace wheelwear::wear {
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+constexpr std::array<std::pair<FastsimMethod, std::string_view>, 5> kNames = {{
+    {FastsimMethod::sdec, "fastsim-sdec"},
+    {FastsimMethod::eql, "fastsim-eql"},
+    {FastsimMethod::eqe, "fastsim-eqe"},
+    {FastsimMethod::eqe_shifted, "fastsim-eqe-shifted"},
+    {FastsimMethod::elliptic, "fastsim-elliptic"},
+}};
+
+// Kalker's (1982) creepage-weighted single flexibility, used to turn excess traction into slip.
+double weighted_flexibility(const Creepages& v, double c, double l11, double l22, double l23) {
+  const double norm = std::sqrt(v.vx * v.vx + v.vy * v.vy + c * c * v.phi * v.phi);
+  if (norm == 0.0) return l11;
+  return (std::abs(v.vx) * l11 + std::abs(v.vy) * l22 + c * std::abs(v.phi) * l23) / norm;
+}
+
+// Flexibilities of Eq. 17 from the coefficients C11, C22, C23 (possibly the SDEC ones) and K13.
+// For classic FASTSIM, K13 is not used: the spin term of px shares L3 = L23 with py.
+detail::Flexibilities flexibilities(double a, double c, double G, double c11, double c22,
+                                    double c23, const double* k13, const Creepages& v) {
+  const double l11 = 8.0 * a / (3.0 * G * c11);
+  const double l22 = 8.0 * a / (3.0 * G * c22);
+  // L23 = pi a^2/(4 G c C23): the paper's Eq. 17 prints C22s here, a typo (equating Eq. 16
+  // with Eq. 11 gives C23s).
+  const double l23 = pi * a * a / (4.0 * G * c * c23);
+  const double l13 = k13 ? 2.0 * c / (G * *k13) : l23;
+  return {1.0 / l11, 1.0 / l13, 1.0 / l22, 1.0 / l23, weighted_flexibility(v, c, l11, l22, l23)};
+}
+
+// ny strips of equal width over y in [y_lo, y_lo + width] (relative to O); the spin terms use
+// y - spin_origin.
+void fill_strips(detail::StripGrid& grid, const contactgeom::Sdec& region, double centre_shift,
+                 double spin_origin, int nx, int ny) {
+  grid.nx = nx;
+  grid.resize(ny);
+  const double width = 2.0 * region.b;
+  grid.dy = width / ny;
+  const double y_lo = region.y_min() + centre_shift;
+  for (int j = 0; j < ny; ++j) {
+    const double y = y_lo + (j + 0.5) * grid.dy;
+    grid.y_at_o[j] = y;
+    grid.y_spin[j] = y - spin_origin;
+    grid.x_lead[j] = region.leading_edge(y - centre_shift);
+  }
+}
+
+}  // namespace
+
+void FastsimOptions::validate() const {
+  require(nx >= 1 && nx <= 100000, "nx", nx, "cells per strip must lie in 1 ... 100000");
+  require(ny >= 1 && ny <= 100000, "ny", ny, "strips must lie in 1 ... 100000");
+}
+
+std::string_view method_name(FastsimMethod method) {
+  for (const auto& [m, name] : kNames)
+    if (m == method) return name;
+  return "unknown";
+}
+
+std::optional<FastsimMethod> parse_fastsim_method(std::string_view name) {
+  for (const auto& [m, text] : kNames)
+    if (text == name) return m;
+  return std::nullopt;
+}
+
+TangentialSolution fastsim(FastsimMethod method, const contactgeom::Sdec& sdec,
+                           const Creepages& creepages, const ContactLoad& load,
+                           const Material& material, const FastsimOptions& options) {
+  sdec.validate();
+  creepages.validate();
+  load.validate();
+  material.validate();
+  options.validate();
+
+  const double a = sdec.a;
+  const double c = sdec.c();
+  Creepages at_origin = creepages;
+  // The region the tractions live on, and where it sits relative to O.
+  contactgeom::Sdec region = sdec;
+  double centre_shift = 0.0;
+  double spin_origin = 0.0;
+  TangentialSolution solution;
+  detail::Flexibilities flex;
+
+  if (method == FastsimMethod::sdec) {
+    const SdecCoefficients k = sdec_coefficients(sdec, material.nu);
+    flex = flexibilities(a, c, material.G, k.c11s, k.c22s, k.c23s, &k.row.k13, creepages);
+    solution.forces.flags = k.flags;
+  } else {
+    const KalkerCoefficients k = kalker_coefficients(sdec.ellipticity(), material.nu);
+    flex = flexibilities(a, c, material.G, k.c11, k.c22, k.c23, nullptr, creepages);
+    solution.forces.flags.kalker_extrapolated = k.extrapolated;
+    if (method != FastsimMethod::eql) region.psi = 0.0;
+    if (method == FastsimMethod::eqe_shifted) {
+      // Classic FASTSIM about the ellipse centre O' = O + y0: Eq. 10 moves vx there.
+      centre_shift = sdec.y0();
+      spin_origin = centre_shift;
+      at_origin.vx = creepages.vx - creepages.phi * centre_shift;
+      flex.effective = weighted_flexibility(at_origin, c, 1.0 / flex.inv_l11, 1.0 / flex.inv_l22,
+                                            1.0 / flex.inv_l23);
+    }
+  }
+
+  thread_local detail::StripGrid grid;
+  fill_strips(grid, region, centre_shift, spin_origin, options.nx, options.ny);
+
+  detail::BoundLaw bound{options.bound, 0.0};
+  if (options.bound == TractionBound::parabolic) {
+    bound.coefficient = load.mu * 2.0 * load.N / (pi * a * a * a * sdec.b);  // Eq. 18
+  } else {
+    bound.coefficient = load.mu * sdec.peak_pressure(load.N) / a;  // mu p_n, Eq. 4
+  }
+
+  detail::MarchTotals totals;
+  if (options.cell_fields) {
+    solution.fields.emplace();
+    totals = detail::march_with_fields(grid, at_origin, flex, bound, *solution.fields);
+  } else {
+    totals = detail::march(grid, at_origin, flex, bound);
+  }
+  solution.forces.Fx = totals.Fx;
+  solution.forces.Fy = totals.Fy;
+  solution.forces.Mz = totals.Mz;
+  solution.forces.has_Mz = true;
+  solution.cells = options.nx * options.ny;
+  solution.slip_cells = totals.slip_cells;
+  solution.frictional_work = totals.work;
+  return solution;
+}
+
+}  // namespace wheelwear::wear

@@ -1,0 +1,190 @@
+#include "fastsim_kernel.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace wheelwear::wear::detail {
+
+namespace {
+
+// Scratch arrays of the forces-only march, kept per thread so that a call allocates nothing
+// once the grid size has been seen.
+struct Scratch {
+  std::vector<double> dx, step_x, step_y, step_y_change, t, px, py, sum_px, sum_py, sum_xpy, slips;
+  void resize(int n) {
+    for (auto* v :
+         {&dx, &step_x, &step_y, &step_y_change, &t, &px, &py, &sum_px, &sum_py, &sum_xpy, &slips})
+      v->assign(static_cast<std::size_t>(n), 0.0);
+  }
+};
+
+// Bound over traction magnitude, g/|p|: the cell slips when it is below 1, and
+// min(1, g/|p|) is the factor that puts the traction on the bound (branch-free, so the strip
+// loop vectorises). The floor on |p|^2 keeps 0/0 out.
+inline double bound_ratio(double px, double py, double g) {
+  return g / std::sqrt(std::max(px * px + py * py, 1e-300));
+}
+
+// Advances all strips cell by cell; the arrays are distinct (restrict), which lets the
+// compiler vectorise the loop over strips.
+template <class BoundAt>
+void advance_all_strips(BoundAt bound_at, int nx, int ny, const double* __restrict xl,
+                        const double* __restrict dx, const double* __restrict step_x,
+                        double* __restrict step_y, const double* __restrict step_y_change,
+                        double* __restrict t, double* __restrict px, double* __restrict py,
+                        double* __restrict sum_px, double* __restrict sum_py,
+                        double* __restrict sum_xpy, double* __restrict slips) {
+  for (int i = 0; i < nx; ++i) {
+    for (int j = 0; j < ny; ++j) {
+      px[j] += step_x[j];
+      py[j] += step_y[j];
+      step_y[j] += step_y_change[j];
+      t[j] += dx[j];  // distance of the node from the leading edge
+      // x_l^2 - x^2 at the node; rounding can make it slightly negative at the trailing edge.
+      const double g = bound_at(std::max(t[j] * (2.0 * xl[j] - t[j]), 0.0));
+      const double ratio = bound_ratio(px[j], py[j], g);
+      const double scale = std::min(1.0, ratio);
+      px[j] *= scale;
+      py[j] *= scale;
+      slips[j] += ratio < 1.0 ? 1.0 : 0.0;
+      sum_px[j] += px[j];
+      sum_py[j] += py[j];
+      sum_xpy[j] += (xl[j] - t[j]) * py[j];
+    }
+  }
+}
+
+}  // namespace
+
+// Layout: the inner loop runs across strips, so each iteration advances all strips by one
+// cell with the same instruction sequence; the compiler vectorises it (every strip has nx
+// cells, only their length dx differs). Per strip the px increment is constant and the py
+// increment changes linearly along x, so both are updated by additions only.
+MarchTotals march(const StripGrid& grid, const Creepages& creepages, const Flexibilities& flex,
+                  const BoundLaw& bound) {
+  thread_local Scratch scratch;
+  const int ny = grid.ny;
+  scratch.resize(ny);
+  double* __restrict dx = scratch.dx.data();
+  double* __restrict step_x = scratch.step_x.data();
+  double* __restrict step_y = scratch.step_y.data();
+  double* __restrict step_y_change = scratch.step_y_change.data();
+  double* __restrict t = scratch.t.data();
+  double* __restrict px = scratch.px.data();
+  double* __restrict py = scratch.py.data();
+  double* __restrict sum_px = scratch.sum_px.data();
+  double* __restrict sum_py = scratch.sum_py.data();
+  double* __restrict sum_xpy = scratch.sum_xpy.data();
+  double* __restrict slips = scratch.slips.data();
+  const double* __restrict xl = grid.x_lead.data();
+
+  const double inv_nx = 1.0 / grid.nx;
+  for (int j = 0; j < ny; ++j) {
+    dx[j] = 2.0 * xl[j] * inv_nx;
+    // Exact increments of Eq. 15 over one cell: the py slope is evaluated at the cell's
+    // mid-point, where it equals the cell average.
+    step_x[j] =
+        -dx[j] * (creepages.vx * flex.inv_l11 - creepages.phi * grid.y_spin[j] * flex.inv_l13);
+    step_y[j] = -dx[j] * (creepages.vy * flex.inv_l22 +
+                          creepages.phi * (xl[j] - 0.5 * dx[j]) * flex.inv_l23);
+    step_y_change[j] = dx[j] * dx[j] * creepages.phi * flex.inv_l23;
+  }
+
+  const double k = bound.coefficient;
+  if (bound.kind == TractionBound::parabolic) {
+    advance_all_strips([k](double q) { return k * q; }, grid.nx, ny, xl, dx, step_x, step_y,
+                       step_y_change, t, px, py, sum_px, sum_py, sum_xpy, slips);
+  } else {
+    advance_all_strips([k](double q) { return k * std::sqrt(q); }, grid.nx, ny, xl, dx, step_x,
+                       step_y, step_y_change, t, px, py, sum_px, sum_py, sum_xpy, slips);
+  }
+
+  MarchTotals totals;
+  double slip_count = 0.0;
+  for (int j = 0; j < ny; ++j) {
+    totals.Fx += dx[j] * sum_px[j];
+    totals.Fy += dx[j] * sum_py[j];
+    totals.Mz += dx[j] * (sum_xpy[j] - grid.y_at_o[j] * sum_px[j]);
+    slip_count += slips[j];
+  }
+  totals.Fx *= grid.dy;
+  totals.Fy *= grid.dy;
+  totals.Mz *= grid.dy;
+  totals.slip_cells = static_cast<int>(slip_count);
+  return totals;
+}
+
+MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
+                              const Flexibilities& flex, const BoundLaw& bound,
+                              CellFields& fields) {
+  const int nx = grid.nx;
+  const int ny = grid.ny;
+  const auto cells = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
+  fields.nx = nx;
+  fields.ny = ny;
+  fields.dy = grid.dy;
+  fields.dx.assign(static_cast<std::size_t>(ny), 0.0);
+  for (auto* v :
+       {&fields.x, &fields.y, &fields.px, &fields.py, &fields.sx, &fields.sy, &fields.work})
+    v->assign(cells, 0.0);
+  fields.slip.assign(cells, 0);
+
+  const bool parabolic = bound.kind == TractionBound::parabolic;
+  MarchTotals totals;
+  for (int j = 0; j < ny; ++j) {
+    const double xl = grid.x_lead[j];
+    const double dx = 2.0 * xl / nx;
+    fields.dx[j] = dx;
+    const double step_x =
+        -dx * (creepages.vx * flex.inv_l11 - creepages.phi * grid.y_spin[j] * flex.inv_l13);
+    double px = 0.0, py = 0.0, sum_px = 0.0, sum_py = 0.0, sum_xpy = 0.0, work = 0.0;
+    for (int i = 0; i < nx; ++i) {
+      const double t = (i + 1) * dx;
+      const double x_node = xl - t;
+      const double x_mid = x_node + 0.5 * dx;
+      const double trial_x = px + step_x;
+      const double trial_y =
+          py - dx * (creepages.vy * flex.inv_l22 + creepages.phi * x_mid * flex.inv_l23);
+      const double q = std::max(t * (2.0 * xl - t), 0.0);
+      const double g = bound.coefficient * (parabolic ? q : std::sqrt(q));
+      const double ratio = bound_ratio(trial_x, trial_y, g);
+      const bool slipping = ratio < 1.0;
+      const double scale = std::min(1.0, ratio);
+      px = trial_x * scale;
+      py = trial_y * scale;
+      const std::size_t c = static_cast<std::size_t>(j) * nx + i;
+      fields.x[c] = x_mid;
+      fields.y[c] = grid.y_at_o[j];
+      fields.px[c] = px;
+      fields.py[c] = py;
+      if (slipping) {
+        // Simplified theory u = L p: the part of the trial traction the bound removes is the
+        // elastic displacement released by slip over this cell, s = L (p - p_trial)/dx, and
+        // p - p_trial = (scale - 1) p_trial keeps s exactly opposite to p.
+        const double release = flex.effective * (scale - 1.0) / dx;
+        const double sx = release * trial_x;
+        const double sy = release * trial_y;
+        fields.sx[c] = sx;
+        fields.sy[c] = sy;
+        fields.work[c] = std::hypot(px, py) * std::hypot(sx, sy);
+        fields.slip[c] = 1;
+        ++totals.slip_cells;
+        work += fields.work[c];
+      }
+      sum_px += px;
+      sum_py += py;
+      sum_xpy += x_node * py;
+    }
+    totals.Fx += dx * sum_px;
+    totals.Fy += dx * sum_py;
+    totals.Mz += dx * (sum_xpy - grid.y_at_o[j] * sum_px);
+    totals.work += dx * work;
+  }
+  totals.Fx *= grid.dy;
+  totals.Fy *= grid.dy;
+  totals.Mz *= grid.dy;
+  totals.work *= grid.dy;
+  return totals;
+}
+
+}  // namespace wheelwear::wear::detail
