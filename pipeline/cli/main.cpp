@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include "commands.hpp"
 #include "wheelwear/input_error.hpp"
@@ -16,6 +17,18 @@ int main(int argc, char** argv) {
   app.fallthrough(false);
   wheelwear::cli::add_creep_command(app);
   wheelwear::cli::add_profile_command(app);
+  // CLI11 answers `wheelwear nosuch --help` with the main help and success; a misspelt
+  // command must fail instead, so scripts notice.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string command = argv[1];
+    const auto known =
+        app.get_subcommands([&command](const CLI::App* sub) { return sub->get_name() == command; });
+    if (known.empty()) {
+      std::cerr << "wheelwear: unknown command '" << command
+                << "'; run `wheelwear --help` for the list of commands\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -1,0 +1,76 @@
+// The `wheelwear creep` command: its JSON contract and its handling of bad input.
+
+#include <gtest/gtest.h>
+
+#include "support/run_command.hpp"
+#include "wheelwear/wear/fastsim.hpp"
+#include "wheelwear/wear/linear_theory.hpp"
+
+namespace wheelwear {
+namespace {
+
+using testing::json_number;
+using testing::run_wheelwear;
+
+const std::string kCase =
+    "creep --a 4.25e-3 --b 4.25e-3 --psi 0.6 --vx 0 --vy 0 --phi 1.0 --N 37830 --G 80e9 "
+    "--nu 0.25 --mu 0.35 --json";
+
+// The command prints the library's forces (17 significant digits: round-trip exact).
+TEST(CreepCommand, PrintsTheLibrarysForcesAsJson) {
+  const auto result = run_wheelwear(kCase + " --method fastsim-sdec --nx 30 --ny 20");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  wear::FastsimOptions options;
+  options.nx = 30;
+  options.ny = 20;
+  const wear::CreepForces f = wear::fastsim(wear::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.6},
+                                            {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options)
+                                  .forces;
+  EXPECT_EQ(json_number(result.out, "Fx"), f.Fx);
+  EXPECT_EQ(json_number(result.out, "Fy"), f.Fy);
+  EXPECT_NEAR(*json_number(result.out, "Fx_muN"), f.Fx / (0.35 * 37830), 1e-15);
+  EXPECT_NEAR(*json_number(result.out, "Fy_muN"), f.Fy / (0.35 * 37830), 1e-15);
+}
+
+TEST(CreepCommand, EveryMethodAnswersWithTheContractKeys) {
+  for (const char* method : {"fastsim-sdec", "fastsim-eql", "fastsim-eqe", "fastsim-eqe-shifted",
+                             "fastsim-elliptic", "linear-sdec", "she-sdec"}) {
+    const auto result = run_wheelwear(kCase + " --method " + method);
+    ASSERT_EQ(result.exit_code, 0) << method << ": " << result.err;
+    for (const char* key : {"Fx", "Fy", "Fx_muN", "Fy_muN"})
+      EXPECT_TRUE(json_number(result.out, key).has_value()) << method << " lacks " << key;
+  }
+  const auto linear = run_wheelwear(kCase + " --method linear-sdec");
+  const wear::CreepForces f =
+      wear::linear_sdec_forces({4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0}, {80e9, 0.25});
+  EXPECT_EQ(json_number(linear.out, "Fx"), f.Fx);
+}
+
+// Bad input: a message on stderr that names the problem, a non-zero exit, nothing on stdout.
+TEST(CreepCommand, RejectsBadInputWithAMessage) {
+  struct Case {
+    std::string arguments, expected_in_message;
+  };
+  const Case cases[] = {
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --psi 1.0", "psi"},
+      {"creep --a 4e-3 --b 4e-3 --N nan", "N = nan"},
+      {"creep --a -4e-3 --b 4e-3 --N 1e4", "a = -0.004"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --mu 0", "mu = 0"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --nu 0.7", "nu = 0.7"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --nx 0", "nx = 0"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --method fastsim", "method"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --bogus 1", "--bogus"},
+      {"creep --a 4e-3 --b 4e-3", "--N"},
+      {"nosuchcommand --help", "unknown command"},
+  };
+  for (const Case& c : cases) {
+    const auto result = run_wheelwear(c.arguments);
+    EXPECT_NE(result.exit_code, 0) << c.arguments;
+    EXPECT_NE(result.err.find(c.expected_in_message), std::string::npos)
+        << c.arguments << " printed: " << result.err;
+    EXPECT_TRUE(result.out.empty()) << c.arguments;
+  }
+}
+
+}  // namespace
+}  // namespace wheelwear
