@@ -1,0 +1,77 @@
+#pragma once
+/// The HDF5 results file of a run, written step by step and published atomically.
+///
+/// HDF5 1.10 does not survive a crash in the middle of a write, so every change goes to a
+/// copy (`FILE.partial`), is flushed to disk, and replaces FILE by rename(2), which is atomic:
+/// a killed run leaves FILE as it was after the last completed step.
+///
+/// Layout (every dataset carries string attributes `units` and `description`):
+///   /scene            the scene text (TOML), attribute `format_version`
+///   /steps            attribute `completed_steps`
+///   /steps/NNNNNN/... the arrays of step NNNNNN (six digits)
+///   /run_info/...     timings and host information, the only place they appear
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace wheelwear::pipeline {
+
+/// One dataset: values in row-major order with their shape ({} for a scalar, {n}, {rows, cols}).
+struct ArrayRecord {
+  std::string name;                ///< path below the group it is written to, e.g. "wheel/y"
+  std::vector<double> values;      ///< row-major
+  std::vector<std::size_t> shape;  ///< empty for a scalar
+  std::string units;               ///< SI units, "1" for dimensionless
+  std::string description;         ///< one line for a reader of the file
+};
+
+/// One text dataset (for names and labels).
+struct TextRecord {
+  std::string name;
+  std::string text;
+  std::string description;
+};
+
+/// What one group of the file holds.
+struct GroupRecord {
+  std::vector<ArrayRecord> arrays;
+  std::vector<TextRecord> texts;
+};
+
+/// Durable, step-by-step writer and reader of a results file.
+class ResultsFile {
+ public:
+  /// Creates FILE with the scene text and no steps. Throws InputError if FILE exists and
+  /// `overwrite` is false; the existing file is then left untouched.
+  static ResultsFile create(const std::filesystem::path& path, std::string_view scene_text,
+                            bool overwrite);
+  /// Opens an existing results file to continue it (resume). Throws InputError when the
+  /// file is missing or is not a wheelwear results file.
+  static ResultsFile open(const std::filesystem::path& path);
+
+  /// Publishes step `completed_steps()` atomically.
+  void append_step(const GroupRecord& step);
+  /// Publishes the /run_info group atomically (replacing an earlier one).
+  void write_run_info(const GroupRecord& info);
+
+  int completed_steps() const { return completed_steps_; }
+  const std::string& scene_text() const { return scene_text_; }
+  const std::filesystem::path& path() const { return path_; }
+
+  /// Reads a dataset (as row-major doubles) of step `step`; throws InputError when missing.
+  std::vector<double> read_step_array(int step, const std::string& name) const;
+
+  /// The group name of a step: "/steps/000012".
+  static std::string step_group(int step);
+
+ private:
+  ResultsFile(std::filesystem::path path, std::string scene_text, int completed_steps);
+  std::filesystem::path path_;
+  std::string scene_text_;
+  int completed_steps_ = 0;
+};
+
+}  // namespace wheelwear::pipeline

@@ -1,0 +1,217 @@
+#include "wheelwear/pipeline/results_file.hpp"
+
+#include <H5Cpp.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <system_error>
+
+#include "wheelwear/input_error.hpp"
+
+namespace wheelwear::pipeline {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kFormatVersion = 1;
+
+fs::path partial_path(const fs::path& path) {
+  fs::path partial = path;
+  partial += ".partial";
+  return partial;
+}
+
+// Flushes a file's data, or a directory's entries, to the disk.
+void sync_to_disk(const fs::path& path, bool directory) {
+  const int fd = ::open(path.c_str(), directory ? O_RDONLY | O_DIRECTORY : O_RDONLY);
+  if (fd < 0) throw std::system_error(errno, std::generic_category(), "open " + path.string());
+  const int status = ::fsync(fd);
+  ::close(fd);
+  if (status != 0)
+    throw std::system_error(errno, std::generic_category(), "fsync " + path.string());
+}
+
+// Replaces `path` by `partial` atomically and makes the rename itself durable.
+void publish(const fs::path& partial, const fs::path& path) {
+  sync_to_disk(partial, false);
+  fs::rename(partial, path);
+  const fs::path directory = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  sync_to_disk(directory, true);
+}
+
+void write_string_attribute(H5::H5Object& object, const std::string& name,
+                            const std::string& value) {
+  const H5::StrType type(H5::PredType::C_S1, value.empty() ? 1 : value.size());
+  H5::Attribute attribute = object.createAttribute(name, type, H5::DataSpace(H5S_SCALAR));
+  attribute.write(type, value.empty() ? std::string(1, '\0') : value);
+}
+
+void write_int_attribute(H5::H5Object& object, const std::string& name, int value) {
+  if (object.attrExists(name)) object.removeAttr(name);
+  H5::Attribute attribute =
+      object.createAttribute(name, H5::PredType::NATIVE_INT, H5::DataSpace(H5S_SCALAR));
+  attribute.write(H5::PredType::NATIVE_INT, &value);
+}
+
+int read_int_attribute(const H5::H5Object& object, const std::string& name) {
+  int value = 0;
+  object.openAttribute(name).read(H5::PredType::NATIVE_INT, &value);
+  return value;
+}
+
+// Creates the intermediate groups of "a/b/c" below `root` and returns the last one's path.
+std::string ensure_parents(H5::H5File& file, const std::string& root, const std::string& name) {
+  std::string path = root;
+  std::size_t start = 0;
+  for (std::size_t slash = name.find('/'); slash != std::string::npos;
+       slash = name.find('/', start)) {
+    path += '/';
+    path.append(name, start, slash - start);
+    if (!file.nameExists(path)) file.createGroup(path);
+    start = slash + 1;
+  }
+  path += '/';
+  path.append(name, start);
+  return path;
+}
+
+void write_text(H5::H5File& file, const std::string& path, const std::string& text,
+                const std::string& description) {
+  const H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
+  H5::DataSet data = file.createDataSet(path, type, H5::DataSpace(H5S_SCALAR));
+  data.write(text, type);
+  write_string_attribute(data, "description", description);
+}
+
+void write_group(H5::H5File& file, const std::string& root, const GroupRecord& group) {
+  if (!file.nameExists(root)) file.createGroup(root);
+  for (const ArrayRecord& array : group.arrays) {
+    std::size_t count = 1;
+    std::vector<hsize_t> dims;
+    for (std::size_t extent : array.shape) {
+      dims.push_back(extent);
+      count *= extent;
+    }
+    require(count == array.values.size(), array.name, static_cast<double>(array.values.size()),
+            "values do not match the dataset's shape");
+    const H5::DataSpace space = dims.empty()
+                                    ? H5::DataSpace(H5S_SCALAR)
+                                    : H5::DataSpace(static_cast<int>(dims.size()), dims.data());
+    H5::DataSet data = file.createDataSet(ensure_parents(file, root, array.name),
+                                          H5::PredType::NATIVE_DOUBLE, space);
+    if (count > 0) data.write(array.values.data(), H5::PredType::NATIVE_DOUBLE);
+    write_string_attribute(data, "units", array.units);
+    write_string_attribute(data, "description", array.description);
+  }
+  for (const TextRecord& text : group.texts)
+    write_text(file, ensure_parents(file, root, text.name), text.text, text.description);
+}
+
+// Runs `change` on a copy of `path` and publishes the copy.
+template <class Change>
+void change_atomically(const fs::path& path, Change change) {
+  const fs::path partial = partial_path(path);
+  fs::copy_file(path, partial, fs::copy_options::overwrite_existing);
+  try {
+    H5::H5File file(partial.string(), H5F_ACC_RDWR);
+    change(file);
+    file.close();
+  } catch (...) {
+    fs::remove(partial);
+    throw;
+  }
+  publish(partial, path);
+}
+
+}  // namespace
+
+ResultsFile::ResultsFile(fs::path path, std::string scene_text, int completed_steps)
+    : path_(std::move(path)),
+      scene_text_(std::move(scene_text)),
+      completed_steps_(completed_steps) {}
+
+std::string ResultsFile::step_group(int step) {
+  char name[32];
+  std::snprintf(name, sizeof name, "/steps/%06d", step);
+  return name;
+}
+
+ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_text, bool overwrite) {
+  if (fs::exists(path) && !overwrite) {
+    throw InputError("output " + path.string() +
+                     ": the file exists; choose another name or pass --overwrite to replace it");
+  }
+  const fs::path partial = partial_path(path);
+  try {
+    H5::H5File file(partial.string(), H5F_ACC_TRUNC);
+    write_text(file, "/scene", std::string(scene_text), "the scene this run was made from (TOML)");
+    H5::DataSet scene = file.openDataSet("/scene");
+    write_int_attribute(scene, "format_version", kFormatVersion);
+    H5::Group steps = file.createGroup("/steps");
+    write_int_attribute(steps, "completed_steps", 0);
+    file.close();
+  } catch (const H5::Exception& error) {
+    fs::remove(partial);
+    throw std::runtime_error("cannot create " + path.string() + ": " + error.getDetailMsg());
+  }
+  publish(partial, path);
+  return ResultsFile(path, std::string(scene_text), 0);
+}
+
+ResultsFile ResultsFile::open(const fs::path& path) {
+  if (!fs::exists(path)) throw InputError("results file " + path.string() + ": does not exist");
+  // A stray copy from a run killed mid-step holds an unfinished step: it is discarded.
+  fs::remove(partial_path(path));
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File file(path.string(), H5F_ACC_RDONLY);
+    if (!file.nameExists("/scene") || !file.nameExists("/steps"))
+      throw InputError("results file " + path.string() + ": not a wheelwear results file");
+    H5::DataSet scene = file.openDataSet("/scene");
+    std::string text;
+    scene.read(text, H5::StrType(H5::PredType::C_S1, H5T_VARIABLE));
+    const int steps = read_int_attribute(file.openGroup("/steps"), "completed_steps");
+    return ResultsFile(path, text, steps);
+  } catch (const H5::Exception& error) {
+    throw InputError("results file " + path.string() + ": unreadable HDF5 (" +
+                     error.getDetailMsg() + ")");
+  }
+}
+
+void ResultsFile::append_step(const GroupRecord& step) {
+  const int index = completed_steps_;
+  change_atomically(path_, [&](H5::H5File& file) {
+    write_group(file, step_group(index), step);
+    H5::Group steps = file.openGroup("/steps");
+    write_int_attribute(steps, "completed_steps", index + 1);
+  });
+  completed_steps_ = index + 1;
+}
+
+void ResultsFile::write_run_info(const GroupRecord& info) {
+  change_atomically(path_, [&](H5::H5File& file) {
+    if (file.nameExists("/run_info")) file.unlink("/run_info");
+    write_group(file, "/run_info", info);
+  });
+}
+
+std::vector<double> ResultsFile::read_step_array(int step, const std::string& name) const {
+  const std::string full = step_group(step) + "/" + name;
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
+    if (!file.nameExists(full)) throw InputError("results file: no dataset " + full);
+    H5::DataSet data = file.openDataSet(full);
+    const H5::DataSpace space = data.getSpace();
+    std::vector<double> values(static_cast<std::size_t>(space.getSimpleExtentNpoints()));
+    if (!values.empty()) data.read(values.data(), H5::PredType::NATIVE_DOUBLE);
+    return values;
+  } catch (const H5::Exception& error) {
+    throw InputError("results file " + path_.string() + ": cannot read " + full + " (" +
+                     error.getDetailMsg() + ")");
+  }
+}
+
+}  // namespace wheelwear::pipeline
