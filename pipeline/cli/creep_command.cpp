@@ -25,6 +25,7 @@ struct CreepArgs {
   wear::Material material;
   wear::FastsimOptions options;
   std::string bound = "parabolic";
+  std::string scheme = "kalker";
   bool json = false;
 };
 
@@ -44,6 +45,8 @@ void run_creep(const CreepArgs& args) {
     wear::FastsimOptions options = args.options;
     options.bound = args.bound == "semi-elliptic" ? wear::TractionBound::semi_elliptic
                                                   : wear::TractionBound::parabolic;
+    options.scheme = args.scheme == "second-order" ? wear::FastsimScheme::second_order
+                                                   : wear::FastsimScheme::kalker;
     const wear::TangentialSolution solution =
         wear::fastsim(*method, args.sdec, args.creepages, args.load, args.material, options);
     forces = solution.forces;
@@ -109,6 +112,10 @@ void add_creep_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--bound", args->bound, "traction bound: parabolic (Eq. 18) or semi-elliptic")
       ->check(CLI::IsMember({"parabolic", "semi-elliptic"}))
+      ->capture_default_str();
+  cmd->add_option("--scheme", args->scheme,
+                  "FASTSIM marching: kalker (first order, Kalker 1982) or second-order")
+      ->check(CLI::IsMember({"kalker", "second-order"}))
       ->capture_default_str();
   cmd->add_flag("--json", args->json, "print one JSON object (forces in N, normalised by muN)");
   cmd->callback([args] { run_creep(*args); });

@@ -129,7 +129,11 @@ TangentialSolution fastsim(FastsimMethod method, const contactgeom::Sdec& sdec,
   }
 
   detail::MarchTotals totals;
-  if (options.cell_fields) {
+  if (options.scheme == FastsimScheme::second_order) {
+    if (options.cell_fields) solution.fields.emplace();
+    totals = detail::march_second_order(grid, at_origin, flex, bound,
+                                        solution.fields ? &*solution.fields : nullptr);
+  } else if (options.cell_fields) {
     solution.fields.emplace();
     totals = detail::march_with_fields(grid, at_origin, flex, bound, *solution.fields);
   } else {

@@ -54,4 +54,10 @@ MarchTotals march(const StripGrid& grid, const Creepages& creepages, const Flexi
 MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
                               const Flexibilities& flex, const BoundLaw& bound, CellFields& fields);
 
+/// Second-order marching of every strip (FastsimScheme::second_order); fills `fields` when it
+/// is not null.
+MarchTotals march_second_order(const StripGrid& grid, const Creepages& creepages,
+                               const Flexibilities& flex, const BoundLaw& bound,
+                               CellFields* fields);
+
 }  // namespace wheelwear::wear::detail

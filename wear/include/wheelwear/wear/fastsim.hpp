@@ -27,19 +27,32 @@ enum class TractionBound {
   semi_elliptic,  ///< mu p_n, with p_n of Eq. 4
 };
 
+/// How each strip is marched from its leading to its trailing edge.
+enum class FastsimScheme {
+  /// Kalker's (1982) FASTSIM: explicit steps, traction projected onto the bound at the nodes,
+  /// each cell carrying its trailing node's traction. First-order accurate in the cell size.
+  kalker,
+  /// Second-order marching (after the idea of Vollebregt & Wilders' FASTSIM2, 2011): cell
+  /// tractions by the trapezoidal rule, the point where adhesion turns into slip located
+  /// inside the cell, and the traction direction in slip advanced by a midpoint rule.
+  second_order,
+};
+
 /// Discretisation and output options.
 struct FastsimOptions {
   int nx = 50;  ///< cells along x in every strip, >= 1
   int ny = 50;  ///< strips across the width, >= 1
   TractionBound bound = TractionBound::parabolic;
+  FastsimScheme scheme = FastsimScheme::kalker;
   bool cell_fields = false;  ///< also return per-cell tractions, slip and frictional work
 
   void validate() const;
 };
 
 /// Per-cell fields on the strip grid, stored strip by strip: index = j*nx + i, with strip j
-/// (lateral) and cell i counted from the leading edge. Tractions are Kalker's values at the
-/// cell's trailing node; positions are cell centres relative to O.
+/// (lateral) and cell i counted from the leading edge. Tractions are the cell's value in the
+/// scheme's force sum (Kalker: its trailing node; second order: its average); positions are
+/// cell centres relative to O.
 struct CellFields {
   int nx = 0, ny = 0;
   double dy = 0.0;                 ///< strip width [m]
