@@ -106,7 +106,9 @@ TEST(FastsimSecondOrder, FieldsAddUpToTheTotals) {
       const std::size_t k = static_cast<std::size_t>(j) * c.nx + i;
       fx += c.px[k] * c.dx[j] * c.dy;
       fy += c.py[k] * c.dx[j] * c.dy;
-      if (!c.slip[k]) EXPECT_EQ(c.work[k], 0.0);
+      if (!c.slip[k]) {
+        EXPECT_EQ(c.work[k], 0.0);
+      }
     }
   }
   EXPECT_NEAR(fx, s.forces.Fx, 1e-9 * load.N);
