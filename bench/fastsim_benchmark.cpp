@@ -31,6 +31,18 @@ void BM_FastsimSdec(benchmark::State& state) {
 }
 BENCHMARK(BM_FastsimSdec)->Arg(20)->Arg(50)->Arg(100);
 
+void BM_FastsimSdecSecondOrder(benchmark::State& state) {
+  wear::FastsimOptions options;
+  options.nx = options.ny = static_cast<int>(state.range(0));
+  options.scheme = wear::FastsimScheme::second_order;
+  for (auto _ : state) {
+    auto solution = wear::fastsim(wear::FastsimMethod::sdec, kPatch, kSpin, kLoad, kSteel, options);
+    benchmark::DoNotOptimize(solution.forces);
+  }
+  state.SetItemsProcessed(state.iterations() * options.nx * options.ny);
+}
+BENCHMARK(BM_FastsimSdecSecondOrder)->Arg(20)->Arg(50);
+
 // The yardstick: the same algorithm as a plain scalar loop, strip by strip, cell by cell,
 // with the square root and division of the saturation test in every cell.
 double scalar_fastsim_sdec_fx(int n) {
