@@ -14,6 +14,9 @@ int main(int argc, char** argv) {
       "All inputs and outputs are SI (m, N, Pa, 1/m) unless a flag says otherwise.\n"
       "Run `wheelwear COMMAND --help` for the options of a command."};
   app.require_subcommand(1);
+  // A repeated option takes its last value, as in most command-line tools (scripts append
+  // overrides).
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.fallthrough(false);
   wheelwear::cli::add_creep_command(app);
   wheelwear::cli::add_profile_command(app);

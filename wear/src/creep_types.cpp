@@ -4,12 +4,6 @@
 
 namespace wheelwear::wear {
 
-void Creepages::validate() const {
-  require_finite("vx", vx);
-  require_finite("vy", vy);
-  require_finite("phi", phi);
-}
-
 void Material::validate() const {
   require_finite("G", G);
   require_finite("nu", nu);

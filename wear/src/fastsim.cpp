@@ -139,6 +139,13 @@ TangentialSolution fastsim(FastsimMethod method, const contactgeom::Sdec& sdec,
   } else {
     totals = detail::march(grid, at_origin, flex, bound);
   }
+  if (solution.fields) {
+    // Semi-elliptic pressure (Eq. 4) of the region the tractions live on, at the cell centres.
+    CellFields& f = *solution.fields;
+    f.pressure.resize(f.x.size());
+    for (std::size_t k = 0; k < f.x.size(); ++k)
+      f.pressure[k] = region.pressure(f.x[k], f.y[k] - centre_shift, load.N);
+  }
   solution.forces.Fx = totals.Fx;
   solution.forces.Fy = totals.Fy;
   solution.forces.Mz = totals.Mz;

@@ -3,17 +3,12 @@
 
 #include <string>
 
+#include "wheelwear/contactgeom/creepages.hpp"
+
 namespace wheelwear::wear {
 
-/// Creepages at the initial contact point O (Liu, Fu & Bruni 2022, Eq. 5): rigid slip
-/// w = (vx - phi*y, vy + phi*x).
-struct Creepages {
-  double vx = 0.0;   ///< longitudinal creepage [-]
-  double vy = 0.0;   ///< lateral creepage [-]
-  double phi = 0.0;  ///< spin creepage [1/m]
-
-  void validate() const;  ///< throws InputError on NaN/inf
-};
+/// Creepages at O; defined with the contact geometry, which computes them from kinematics.
+using contactgeom::Creepages;
 
 /// Elastic constants of the (elastically similar) wheel and rail.
 struct Material {

@@ -61,6 +61,7 @@ struct CellFields {
   std::vector<double> px, py;      ///< tangential traction on the wheel [Pa]
   std::vector<double> sx, sy;      ///< slip (relative velocity / V) [-]; 0 where adhering
   std::vector<double> work;        ///< frictional work density |p||s| [J/m^2 per m rolled]
+  std::vector<double> pressure;    ///< normal pressure of the region at the cell centre [Pa]
   std::vector<std::uint8_t> slip;  ///< 1 where the cell slips, 0 where it adheres
 };
 

@@ -1,0 +1,480 @@
+#include "wheelwear/wear/wear_law.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "wheelwear/input_error.hpp"
+
+namespace wheelwear::wear {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A depth is a product and quotient of a few doubles: a handful of roundings of 1.1e-16 each.
+constexpr double kRoundingTolerance = 1e-14;
+
+// The shipped tables live in data/wear, two levels above tests/data.
+std::string shipped(const std::string& file) {
+  return std::string(WHEELWEAR_TEST_DATA) + "/../../data/wear/" + file;
+}
+
+// A cell whose frictional work density |tau||s| is x N/mm^2 (x 1e6 N/m^2), at slip 0.1.
+CellState cell_with_work(double x_N_per_mm2) {
+  return CellState{1e9, x_N_per_mm2 * 1e6 / 0.1, 0.1, 20.0};
+}
+
+double rel_diff(double a, double b) {
+  return std::abs(a - b) / std::abs(b);
+}
+
+// ---------------------------------------------------------------------------------------------
+// USFD T gamma law
+
+TEST(UsfdLaw, RegimesSwitchAtThePublishedThresholds) {
+  const TgammaLaw law = TgammaLaw::usfd();
+  ASSERT_EQ(law.regimes().size(), 3u);
+  EXPECT_EQ(law.regime_name(0), "mild");
+  EXPECT_EQ(law.regime_name(1), "severe");
+  EXPECT_EQ(law.regime_name(2), "catastrophic");
+  // Bounds are inclusive below, exclusive above: 10.4 is severe, as published.
+  EXPECT_EQ(law.regime_of(0.0), 0);
+  EXPECT_EQ(law.regime_of(std::nextafter(10.4, 0.0)), 0);
+  EXPECT_EQ(law.regime_of(10.4), 1);
+  EXPECT_EQ(law.regime_of(std::nextafter(77.2, 0.0)), 1);
+  EXPECT_EQ(law.regime_of(77.2), 2);
+  EXPECT_EQ(law.regime_of(1e6), 2);
+  // The same thresholds reached through a cell's traction and slip.
+  EXPECT_EQ(law.regime(cell_with_work(10.3)), 0);
+  EXPECT_EQ(law.regime(cell_with_work(10.5)), 1);
+  EXPECT_EQ(law.regime(cell_with_work(77.1)), 1);
+  EXPECT_EQ(law.regime(cell_with_work(77.3)), 2);
+}
+
+TEST(UsfdLaw, WearRateFollowsThePublishedBranches) {
+  const TgammaLaw law = TgammaLaw::usfd();
+  // 1e-12: K is one multiply-add of numbers of order 1e3; this allows a few ulps of slack.
+  constexpr double tol = 1e-12;
+  EXPECT_NEAR(law.wear_rate(5.0), 5.3 * 5.0, tol);
+  EXPECT_NEAR(law.wear_rate(std::nextafter(10.4, 0.0)), 5.3 * 10.4, tol);  // 55.12
+  EXPECT_EQ(law.wear_rate(10.4), 55.0);
+  EXPECT_EQ(law.wear_rate(40.0), 55.0);
+  EXPECT_EQ(law.wear_rate(std::nextafter(77.2, 0.0)), 55.0);
+  // Above the crossing x* = (4778.7 + 55) / 61.9 = 78.09 the published line itself applies.
+  EXPECT_NEAR(law.wear_rate(100.0), 61.9 * 100.0 - 4778.7, 1e-9);  // 1411.3; 1e-9: K ~ 1e3
+  EXPECT_NEAR(law.wear_rate(200.0), 61.9 * 200.0 - 4778.7, 1e-9);  // 7601.3
+}
+
+// The published catastrophic branch is 61.9 x - 4778.7 = -0.02 at x = 77.2: without a fix K
+// would fall from 55 to ~0 there. The floor 55 holds K at 55 up to x* = 78.09, where the line
+// crosses 55, so K is continuous at 77.2 and continuous and non-decreasing beyond.
+TEST(UsfdLaw, FloorRemovesTheDropAt77p2) {
+  const TgammaLaw law = TgammaLaw::usfd();
+  const double just_above = std::nextafter(77.2, kInf);
+  EXPECT_NEAR(61.9 * just_above - 4778.7, 0.0, 0.05);  // the published branch starts at ~0 ...
+  EXPECT_EQ(law.wear_rate(just_above), 55.0);          // ... the fixed law at 55
+  EXPECT_EQ(law.wear_rate(77.2), 55.0);
+  EXPECT_EQ(law.wear_rate(78.0), 55.0);  // published line: 49.5
+  const double crossing = (4778.7 + 55.0) / 61.9;
+  EXPECT_NEAR(crossing, 78.0888, 1e-4);
+  EXPECT_NEAR(law.wear_rate(crossing), 55.0, 1e-9);  // 1e-9: rounding of a 61.9 * 78 product
+  EXPECT_NEAR(law.wear_rate(crossing + 1.0), 55.0 + 61.9, 1e-9);
+  // Continuous and non-decreasing from the severe regime on (10.4 ... 200 N/mm^2).
+  double previous = law.wear_rate(10.4);
+  for (double x = 10.4; x <= 200.0; x += 0.001) {
+    const double k = law.wear_rate(x);
+    EXPECT_GE(k, previous) << "x = " << x;
+    // 61.9 * 0.001 plus rounding: the largest step the steepest branch can take.
+    EXPECT_LE(k - previous, 61.9 * 0.001 + 1e-9) << "x = " << x;
+    previous = k;
+  }
+}
+
+// Hand computation for T gamma / A = 20 N/mm^2 (severe regime, K = 55 ug/(m mm^2)), dx = 1 mm:
+//   K = 55 ug/(m mm^2) = 55e-9 kg / (1 m * 1e-6 m^2) = 0.055 kg/m^3 (per metre rolled, per m^2)
+//   mass per area per passage = K dx = 0.055 * 1e-3 = 5.5e-5 kg/m^2
+//   depth = 5.5e-5 kg/m^2 / 7850 kg/m^3 = 7.00637e-9 m (7.0 nm)
+// Cross-check in mm: 55 ug/m over 1 mm rolled is 0.055 ug = 5.5e-11 kg per mm^2, i.e.
+// 5.5e-11 / 7.85e-6 kg/mm^3 = 7.00637e-6 mm^3 per mm^2 = 7.00637e-6 mm.
+TEST(UsfdLaw, DepthPerPassageHandComputedUnits) {
+  const TgammaLaw law = TgammaLaw::usfd();
+  const CellState cell{1.2e9, 2e8, 0.1, 30.0};  // |tau||s| = 2e7 N/m^2 = 20 N/mm^2
+  EXPECT_EQ(law.regime(cell), 1);
+  const double expected = 55.0 * 1e-9 / 1e-6 * 1e-3 / 7850.0;
+  EXPECT_NEAR(expected, 7.00637e-9, 5e-15);  // the hand value, to its 6 printed digits
+  EXPECT_LT(rel_diff(law.depth_per_passage(cell, 1e-3), expected), kRoundingTolerance);
+  // Mild regime, 5 N/mm^2: K = 26.5 ug/(m mm^2), so 26.5/55 of the value above.
+  const CellState mild{1.2e9, 5e7, 0.1, 30.0};
+  EXPECT_LT(rel_diff(law.depth_per_passage(mild, 1e-3), expected * 26.5 / 55.0),
+            kRoundingTolerance);
+}
+
+TEST(UsfdLaw, LinearInDistanceAndZeroWithoutWork) {
+  const TgammaLaw law = TgammaLaw::usfd();
+  for (double x : {3.0, 20.0, 77.5, 150.0}) {  // one point per regime, and the fixed range
+    const CellState cell = cell_with_work(x);
+    const double once = law.depth_per_passage(cell, 0.2e-3);
+    EXPECT_GT(once, 0.0);
+    EXPECT_LT(rel_diff(law.depth_per_passage(cell, 0.4e-3), 2.0 * once), kRoundingTolerance);
+  }
+  // The mild regime is linear in T gamma / A: doubling the slip doubles the depth.
+  const CellState slow{1e9, 4e7, 0.05, 20.0};  // 2 N/mm^2
+  const CellState fast{1e9, 4e7, 0.10, 20.0};  // 4 N/mm^2
+  EXPECT_LT(rel_diff(law.depth_per_passage(fast, 1e-3), 2.0 * law.depth_per_passage(slow, 1e-3)),
+            kRoundingTolerance);
+  // No slip (adhesion) or no traction: no frictional work, no wear.
+  EXPECT_EQ(law.depth_per_passage(CellState{1e9, 3e8, 0.0, 20.0}, 1e-3), 0.0);
+  EXPECT_EQ(law.depth_per_passage(CellState{1e9, 0.0, 0.3, 20.0}, 1e-3), 0.0);
+  // The density divides the depth.
+  const TgammaLaw light = TgammaLaw::usfd(7850.0 / 2);
+  const CellState cell = cell_with_work(20.0);
+  EXPECT_LT(rel_diff(light.depth_per_passage(cell, 1e-3), 2.0 * law.depth_per_passage(cell, 1e-3)),
+            kRoundingTolerance);
+}
+
+TEST(UsfdLaw, InvalidStatesGiveNaNAndInvalidParametersThrow) {
+  const TgammaLaw law = TgammaLaw::usfd();
+  EXPECT_EQ(law.regime(CellState{1e9, 1e8, -0.1, 20.0}), -1);
+  EXPECT_TRUE(std::isnan(law.depth_per_passage(CellState{1e9, 1e8, -0.1, 20.0}, 1e-3)));
+  EXPECT_TRUE(std::isnan(law.depth_per_passage(CellState{1e9, std::nan(""), 0.1, 20.0}, 1e-3)));
+  EXPECT_THROW(TgammaLaw::usfd(0.0), InputError);
+  EXPECT_THROW(TgammaLaw::usfd(std::nan("")), InputError);
+  EXPECT_THROW(CellState({1e9, 1e8, -0.1, 20.0}).validate(), InputError);
+  EXPECT_THROW(CellState({1e9, kInf, 0.1, 20.0}).validate(), InputError);
+  EXPECT_NO_THROW(CellState({1e9, 1e8, 0.1, 20.0}).validate());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Archard law with the KTH map
+
+TEST(ArchardLaw, RegionsByPressureAndSlidingSpeed) {
+  const ArchardLaw law = ArchardLaw::kth();  // H = 2.5 GPa: seizure above p = 2.0 GPa
+  ASSERT_EQ(law.regimes().size(), 4u);
+  const auto name = [&](const CellState& c) { return std::string(law.regime_name(law.regime(c))); };
+  // p = 1 GPa = 0.4 H; V = 20 m/s, so slip 0.005 / 0.02 / 0.05 slide at 0.1 / 0.4 / 1.0 m/s.
+  EXPECT_EQ(name({1e9, 3e8, 0.005, 20.0}), "mild_low_speed");
+  EXPECT_EQ(name({1e9, 3e8, 0.02, 20.0}), "severe");
+  EXPECT_EQ(name({1e9, 3e8, 0.05, 20.0}), "mild_high_speed");
+  EXPECT_EQ(law.coefficient({1e9, 3e8, 0.005, 20.0}), 5.5e-4);
+  EXPECT_EQ(law.coefficient({1e9, 3e8, 0.02, 20.0}), 35e-4);
+  EXPECT_EQ(law.coefficient({1e9, 3e8, 0.05, 20.0}), 5.5e-4);
+  // p = 2.1 GPa = 0.84 H seizes at every sliding speed, adhesion included.
+  for (double slip : {0.0, 0.005, 0.02, 0.05}) {
+    EXPECT_EQ(name({2.1e9, 7e8, slip, 20.0}), "seizure") << "slip " << slip;
+    EXPECT_EQ(law.coefficient({2.1e9, 7e8, slip, 20.0}), 350e-4);
+  }
+  // It is the sliding speed |s| V that counts, not the slip: the same slip at 5 m/s is slow.
+  EXPECT_EQ(name({1e9, 3e8, 0.02, 5.0}), "mild_low_speed");  // 0.1 m/s
+  // The bounds, exactly (inclusive below, exclusive above).
+  EXPECT_EQ(law.regime_name(law.regime_of(0.8, 0.1)), "seizure");
+  EXPECT_EQ(law.regime_name(law.regime_of(std::nextafter(0.8, 0.0), 0.1)), "mild_low_speed");
+  EXPECT_EQ(law.regime_name(law.regime_of(0.5, std::nextafter(0.2, 0.0))), "mild_low_speed");
+  EXPECT_EQ(law.regime_name(law.regime_of(0.5, 0.2)), "severe");
+  EXPECT_EQ(law.regime_name(law.regime_of(0.5, std::nextafter(0.7, 0.0))), "severe");
+  EXPECT_EQ(law.regime_name(law.regime_of(0.5, 0.7)), "mild_high_speed");
+  EXPECT_EQ(law.regime_of(-0.1, 0.1), -1);
+  EXPECT_EQ(law.regime_of(0.5, std::nan("")), -1);
+}
+
+// Hand computation: p = 1 GPa, slip 0.02 at V = 20 m/s (0.4 m/s, severe: k = 35e-4), dx = 1 mm:
+//   ds = |s| dx = 0.02 * 1e-3 = 2e-5 m of sliding during the passage
+//   dz = k p ds / H = 35e-4 * 1e9 * 2e-5 / 2.5e9 = 2.8e-8 m (28 nm)
+TEST(ArchardLaw, DepthPerPassageHandComputed) {
+  const ArchardLaw law = ArchardLaw::kth();
+  const CellState cell{1e9, 3e8, 0.02, 20.0};
+  EXPECT_LT(rel_diff(law.depth_per_passage(cell, 1e-3), 2.8e-8), kRoundingTolerance);
+  // A harder steel wears less in proportion, as long as the cell stays in its region.
+  const ArchardLaw hard = ArchardLaw::kth(5e9);
+  EXPECT_LT(rel_diff(hard.depth_per_passage(cell, 1e-3), 1.4e-8), kRoundingTolerance);
+}
+
+TEST(ArchardLaw, LinearInDistanceAndPressureAndZeroWithoutSliding) {
+  const ArchardLaw law = ArchardLaw::kth();
+  for (const CellState& cell :
+       {CellState{1e9, 3e8, 0.005, 20.0}, CellState{1e9, 3e8, 0.02, 20.0},
+        CellState{1e9, 3e8, 0.05, 20.0}, CellState{2.1e9, 7e8, 0.02, 20.0}}) {
+    const double once = law.depth_per_passage(cell, 0.25e-3);
+    EXPECT_GT(once, 0.0);
+    EXPECT_LT(rel_diff(law.depth_per_passage(cell, 0.5e-3), 2.0 * once), kRoundingTolerance);
+  }
+  // Within a region the depth is proportional to the pressure (0.2 H and 0.4 H, both mild).
+  const double low = law.depth_per_passage({0.5e9, 1e8, 0.005, 20.0}, 1e-3);
+  const double high = law.depth_per_passage({1.0e9, 1e8, 0.005, 20.0}, 1e-3);
+  EXPECT_LT(rel_diff(high, 2.0 * low), kRoundingTolerance);
+  // No sliding, not even in the seizure region, or no pressure: no wear.
+  EXPECT_EQ(law.depth_per_passage({2.1e9, 7e8, 0.0, 20.0}, 1e-3), 0.0);
+  EXPECT_EQ(law.depth_per_passage({0.0, 0.0, 0.02, 20.0}, 1e-3), 0.0);
+  EXPECT_TRUE(std::isnan(law.depth_per_passage({-1e9, 3e8, 0.02, 20.0}, 1e-3)));
+  EXPECT_THROW(ArchardLaw::kth(0.0), InputError);
+  EXPECT_THROW(ArchardLaw::kth(-2e9), InputError);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The laws as one model
+
+TEST(WearLaw, BuiltInLawsByName) {
+  for (std::string_view name : kWearLawNames) {
+    const std::optional<WearLaw> law = default_wear_law(name);
+    ASSERT_TRUE(law.has_value()) << name;
+    EXPECT_EQ(law_name(*law), name);
+  }
+  EXPECT_TRUE(std::holds_alternative<TgammaLaw>(*default_wear_law("usfd")));
+  EXPECT_TRUE(std::holds_alternative<ArchardLaw>(*default_wear_law("archard")));
+  EXPECT_FALSE(default_wear_law("USFD").has_value());
+  EXPECT_FALSE(default_wear_law("tgamma").has_value());
+}
+
+// The strip path computes in blocks of 64 cells with the regimes in the outer loop; it must
+// give each cell what the per-cell path gives, over more than two blocks, through every regime,
+// at the bounds of the tables, and for invalid states (NaN).
+TEST(WearLaw, StripDispatchMatchesPerCellCalls) {
+  std::vector<CellState> cells;
+  for (int i = 0; i < 150; ++i) {  // p up to 2.2 GPa (0.88 H), T gamma / A up to 98 N/mm^2
+    cells.push_back({2.2e9 * i / 149.0, 2e8 + 5e6 * i, 0.0007 * i, 20.0});
+  }
+  cells.push_back({2e9, 2e8, 0.2, 1.0});            // p/H = 0.8 and 0.2 m/s, up to rounding
+  cells.push_back({1e9, 2e8, 0.7, 1.0});            // 0.7 m/s
+  cells.push_back({1e9, 10.4e7, 0.1, 20.0});        // 10.4 N/mm^2
+  cells.push_back({1e9, 77.2e7, 0.1, 20.0});        // 77.2 N/mm^2
+  cells.push_back({1e9, 2e8, -0.1, 20.0});          // invalid: negative slip
+  cells.push_back({std::nan(""), 2e8, 0.1, 20.0});  // invalid: NaN pressure (Archard only)
+  for (std::string_view name : kWearLawNames) {
+    const WearLaw law = *default_wear_law(name);
+    std::vector<double> depth(cells.size());
+    depths_per_passage(law, cells, 0.3e-3, depth);
+    std::vector<int> cells_per_regime(
+        std::visit([](const auto& l) { return l.regimes().size(); }, law));
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const double expected = depth_per_passage(law, cells[i], 0.3e-3);
+      if (std::isnan(expected)) {
+        EXPECT_TRUE(std::isnan(depth[i])) << name << " cell " << i;
+        EXPECT_EQ(regime(law, cells[i]), -1) << name << " cell " << i;
+        continue;
+      }
+      // The same expressions in the same order; DOUBLE_EQ's 4 ulps leave room for a compiler
+      // that fuses a multiply-add in the vectorised loop and not in the scalar one.
+      EXPECT_DOUBLE_EQ(depth[i], expected) << name << " cell " << i;
+      ++cells_per_regime.at(regime(law, cells[i]));
+    }
+    for (std::size_t r = 0; r < cells_per_regime.size(); ++r) {
+      EXPECT_GT(cells_per_regime[r], 0)
+          << name << ": no cell in " << regime_name(law, static_cast<int>(r));
+    }
+    EXPECT_TRUE(std::isnan(depth[cells.size() - 2])) << name;  // negative slip
+    std::vector<double> short_output(cells.size() - 1);
+    EXPECT_THROW(depths_per_passage(law, cells, 0.3e-3, short_output), InputError);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// CSV tables
+
+TEST(WearLawCsv, DefaultsRoundTrip) {
+  std::stringstream usfd;
+  TgammaLaw::usfd().write_csv(usfd);
+  const TgammaLaw usfd_read = TgammaLaw::read_csv(usfd, "usfd round trip", 7850.0, "usfd");
+  EXPECT_EQ(std::vector<TgammaRegime>(usfd_read.regimes().begin(), usfd_read.regimes().end()),
+            usfd_regimes());
+
+  std::stringstream kth;
+  ArchardLaw::kth().write_csv(kth);
+  const ArchardLaw kth_read = ArchardLaw::read_csv(kth, "kth round trip");
+  EXPECT_EQ(std::vector<ArchardRegime>(kth_read.regimes().begin(), kth_read.regimes().end()),
+            kth_wear_map());
+}
+
+// Numbers without a short decimal form come back bit for bit (shortest round-trip output).
+TEST(WearLawCsv, AwkwardNumbersRoundTripExactly) {
+  const std::vector<TgammaRegime> regimes{{"a", 0.0, 1.0 / 3.0, 1e-300, 0.0, 0.0},
+                                          {"b", 1.0 / 3.0, kInf, 2.0 / 7.0, 1.0 / 9.0, 0.1}};
+  std::stringstream text;
+  TgammaLaw(regimes).write_csv(text);
+  const TgammaLaw read = TgammaLaw::read_csv(text, "awkward");
+  EXPECT_EQ(std::vector<TgammaRegime>(read.regimes().begin(), read.regimes().end()), regimes);
+
+  const std::vector<ArchardRegime> map{{"low", 0.0, 0.1 + 0.2, 0.0, kInf, 1.0 / 3.0},
+                                       {"high", 0.1 + 0.2, kInf, 0.0, kInf, 5e-324}};
+  std::stringstream map_text;
+  ArchardLaw(map).write_csv(map_text);
+  const ArchardLaw map_read = ArchardLaw::read_csv(map_text, "awkward map");
+  EXPECT_EQ(std::vector<ArchardRegime>(map_read.regimes().begin(), map_read.regimes().end()), map);
+}
+
+// Both come from the same decimal literals, which parse to the same correctly rounded doubles:
+// the comparison is exact.
+TEST(WearLawCsv, ShippedTablesEqualTheBuiltInDefaults) {
+  const TgammaLaw usfd = TgammaLaw::load_csv(shipped("usfd.csv"), 7850.0, "usfd");
+  EXPECT_EQ(std::vector<TgammaRegime>(usfd.regimes().begin(), usfd.regimes().end()),
+            usfd_regimes());
+  const ArchardLaw kth = ArchardLaw::load_csv(shipped("archard.csv"), 2.5e9, "archard");
+  EXPECT_EQ(std::vector<ArchardRegime>(kth.regimes().begin(), kth.regimes().end()), kth_wear_map());
+}
+
+TEST(WearLawCsv, CommentsBlankLinesSpacesAndWindowsLineEndingsAreAccepted) {
+  std::istringstream in("# a comment\r\n\r\n" + std::string(kTgammaCsvHeader) +
+                        "\r\n  # indented comment\r\nmild , 0 , 10.4 , 5.3 , 0 , 0\r\n\r\n"
+                        "severe,10.4,77.2,0,55.0,0\r\ncatastrophic,77.2,inf,61.9,-4778.7,55.0\r\n");
+  const TgammaLaw law = TgammaLaw::read_csv(in, "windows.csv");
+  EXPECT_EQ(std::vector<TgammaRegime>(law.regimes().begin(), law.regimes().end()), usfd_regimes());
+}
+
+TEST(WearLawCsv, MissingFileIsNamed) {
+  try {
+    TgammaLaw::load_csv("/nonexistent/usfd.csv");
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()), "/nonexistent/usfd.csv: cannot open the file");
+  }
+  EXPECT_THROW(ArchardLaw::load_csv("/nonexistent/archard.csv"), InputError);
+}
+
+// Regimes given in code are checked as files are, with the regime's index in the message.
+TEST(WearLawCsv, RegimesInCodeAreValidatedToo) {
+  try {
+    TgammaLaw({{"a", 0.0, 10.0, 1.0, 0.0, 0.0}, {"b", 9.0, kInf, 0.0, 10.0, 0.0}}, 7850.0, "mine");
+    FAIL() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "T gamma law 'mine': regime 2: overlap between regimes: this one starts at 9 "
+              "N/mm^2, the one before (regime 1) ends at 10");
+  }
+  EXPECT_THROW(TgammaLaw(std::vector<TgammaRegime>{}), InputError);
+  EXPECT_THROW(ArchardLaw(std::vector<ArchardRegime>{}), InputError);
+}
+
+enum class Table { tgamma, archard };
+
+struct BadCsv {
+  const char* label;  // test name suffix
+  Table table;        // which reader
+  std::string text;   // file content
+  std::string error;  // the exact message, "bad.csv" being the source
+};
+
+std::string tgamma_file(const std::string& rows) {
+  return "# comment\n" + std::string(kTgammaCsvHeader) + "\n" + rows;
+}
+std::string archard_file(const std::string& rows) {
+  return std::string(kArchardCsvHeader) + "\n" + rows;
+}
+
+const std::string kMild = "mild,0,10.4,5.3,0,0\n";
+const std::string kSevere = "severe,10.4,77.2,0,55,0\n";
+const std::string kCatastrophic = "catastrophic,77.2,inf,61.9,-4778.7,55\n";
+const std::string kSeizure = "seizure,0.8,inf,0,inf,0.035\n";
+const std::string kLow = "low,0,0.8,0,0.2,5.5e-4\n";
+const std::string kMid = "mid,0,0.8,0.2,0.7,35e-4\n";
+const std::string kHigh = "high,0,0.8,0.7,inf,5.5e-4\n";
+
+const std::vector<BadCsv> kBadCsvFiles = {
+    {"Empty", Table::tgamma, "",
+     "bad.csv: empty file: expected the header '" + std::string(kTgammaCsvHeader) + "'"},
+    {"OnlyComments", Table::archard, "# nothing here\n\n",
+     "bad.csv: empty file: expected the header '" + std::string(kArchardCsvHeader) + "'"},
+    {"BadHeader", Table::tgamma, "regime,lower,upper,slope,intercept,floor\n" + kMild,
+     "bad.csv:1: bad header: expected '" + std::string(kTgammaCsvHeader) +
+         "', got 'regime,lower,upper,slope,intercept,floor'"},
+    {"OtherLawsHeader", Table::archard, tgamma_file(kMild),
+     "bad.csv:2: bad header: expected '" + std::string(kArchardCsvHeader) + "', got '" +
+         std::string(kTgammaCsvHeader) + "'"},
+    {"HeaderOnly", Table::tgamma, tgamma_file(""), "bad.csv: no rows after the header"},
+    {"MissingField", Table::tgamma, tgamma_file(kMild + "severe,10.4,77.2,0,55\n"),
+     "bad.csv:4: expected 6 comma-separated fields, got 5"},
+    {"NotANumber", Table::tgamma, tgamma_file("mild,0,10.4,5.3x,0,0\n"),
+     "bad.csv:3: column 'slope_ug_per_m_mm2_per_N_per_mm2': '5.3x' is not a number"},
+    {"EmptyNumber", Table::tgamma, tgamma_file("mild,0,,5.3,0,0\n"),
+     "bad.csv:3: column 'upper_N_per_mm2': '' is not a number"},
+    {"OutOfRange", Table::tgamma, tgamma_file("mild,0,1e999,5.3,0,0\n"),
+     "bad.csv:3: column 'upper_N_per_mm2': '1e999' is not a number"},
+    {"NaN", Table::tgamma, tgamma_file(kMild + "severe,10.4,77.2,0,nan,0\n"),
+     "bad.csv:4: column 'intercept_ug_per_m_mm2': NaN is not a valid value"},
+    {"InfiniteLower", Table::tgamma, tgamma_file("mild,inf,10.4,5.3,0,0\n"),
+     "bad.csv:3: column 'lower_N_per_mm2': 'inf' must be finite"},
+    {"Gap", Table::tgamma, tgamma_file(kMild + "severe,12,77.2,0,55,0\n" + kCatastrophic),
+     "bad.csv:4: gap between regimes: this one starts at 12 N/mm^2, the one before (line 3) "
+     "ends at 10.4"},
+    {"Overlap", Table::tgamma, tgamma_file(kMild + kSevere + "catastrophic,70,inf,61.9,0,55\n"),
+     "bad.csv:5: overlap between regimes: this one starts at 70 N/mm^2, the one before (line 4) "
+     "ends at 77.2"},
+    {"OutOfOrder", Table::tgamma, tgamma_file(kSevere + kMild),
+     "bad.csv:3: the first regime must start at 0 N/mm^2, not at 10.4"},
+    {"NoLastToInfinity", Table::tgamma, tgamma_file(kMild + kSevere),
+     "bad.csv:4: the last regime must end at inf (T gamma / A has no upper limit), not at 77.2 "
+     "N/mm^2"},
+    {"EmptyRange", Table::tgamma, tgamma_file(kMild + "severe,10.4,10.4,0,55,0\n"),
+     "bad.csv:4: empty regime: upper = 10.4 N/mm^2 is not above lower = 10.4"},
+    {"NegativeRate", Table::tgamma, tgamma_file("mild,0,10,5,0,0\nfalling,10,inf,-1,60,0\n"),
+     "bad.csv:4: negative wear rate: slope*x + intercept = -inf ug/(m mm^2) at x = inf N/mm^2 "
+     "(set a positive floor to ask for max(floor, slope*x + intercept))"},
+    {"NegativeRateInsideRange", Table::tgamma, tgamma_file("mild,0,10,5,0,0\nb,10,inf,1,-20,0\n"),
+     "bad.csv:4: negative wear rate: slope*x + intercept = -10 ug/(m mm^2) at x = 10 N/mm^2 "
+     "(set a positive floor to ask for max(floor, slope*x + intercept))"},
+    {"NegativeFloor", Table::tgamma, tgamma_file("mild,0,inf,5,0,-1\n"),
+     "bad.csv:3: negative wear rate: floor = -1 ug/(m mm^2) must be finite and >= 0"},
+    {"WearWithoutWork", Table::tgamma, tgamma_file("flat,0,inf,0,2,0\n"),
+     "bad.csv:3: wear rate at T gamma / A = 0 is 2 ug/(m mm^2): it must be 0 (no frictional "
+     "work, no wear)"},
+    {"DuplicateName", Table::tgamma, tgamma_file(kMild + "mild,10.4,inf,0,55,0\n"),
+     "bad.csv:4: regime name 'mild' repeats that of line 3"},
+    {"EmptyName", Table::tgamma, tgamma_file(",0,inf,5.3,0,0\n"),
+     "bad.csv:3: regime name '' must be non-empty, without commas, line breaks or surrounding "
+     "spaces, and not start with '#'"},
+    {"ArchardGap", Table::archard, archard_file(kSeizure + kLow + kMid),
+     "bad.csv: gap in the wear map: no region covers p/H in [0, 0.8) and sliding speed in "
+     "[0.7, inf) m/s"},
+    {"ArchardGapAtZero", Table::archard,
+     archard_file(kSeizure + "low,0.1,0.8,0,0.2,5.5e-4\n" + kMid + kHigh),
+     "bad.csv: gap in the wear map: no region covers p/H in [0, 0.1) and sliding speed in "
+     "[0, 0.2) m/s"},
+    {"ArchardOverlap", Table::archard,
+     archard_file("seizure,0.7,inf,0,inf,0.035\n" + kLow + kMid + kHigh),
+     "bad.csv:3: overlap: region 'low' and region 'seizure' (line 2) both cover p/H in "
+     "[0.7, 0.8) and sliding speed in [0, 0.2) m/s"},
+    {"ArchardNegativeK", Table::archard,
+     archard_file(kSeizure + "low,0,0.8,0,0.2,-1e-4\n" + kMid + kHigh),
+     "bad.csv:3: negative wear coefficient: k = -1e-04 must be finite and >= 0"},
+    {"ArchardNaN", Table::archard,
+     archard_file(kSeizure + kLow + "mid,0,0.8,nan,0.7,35e-4\n" + kHigh),
+     "bad.csv:4: column 'sliding_speed_lower_m_per_s': NaN is not a valid value"},
+    {"ArchardEmptySpeedRange", Table::archard,
+     archard_file(kSeizure + kLow + "mid,0,0.8,0.7,0.2,35e-4\n" + kHigh),
+     "bad.csv:4: empty sliding speed range: upper bound 0.2 is not above lower bound 0.7"},
+    {"ArchardTooManyFields", Table::archard, archard_file(kSeizure + "low,0,0.8,0,0.2,5.5e-4,1\n"),
+     "bad.csv:3: expected 6 comma-separated fields, got 7"},
+};
+
+// Names the case in gtest's output instead of dumping the struct's bytes.
+void PrintTo(const BadCsv& bad, std::ostream* out) {
+  *out << bad.label;
+}
+
+class WearLawBadCsv : public ::testing::TestWithParam<BadCsv> {};
+
+TEST_P(WearLawBadCsv, IsRejectedWithItsSpecificMessage) {
+  const BadCsv& bad = GetParam();
+  std::istringstream in(bad.text);
+  try {
+    if (bad.table == Table::tgamma) {
+      TgammaLaw::read_csv(in, "bad.csv");
+    } else {
+      ArchardLaw::read_csv(in, "bad.csv");
+    }
+    FAIL() << "accepted:\n" << bad.text;
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()), bad.error);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(WearLaw, WearLawBadCsv, ::testing::ValuesIn(kBadCsvFiles),
+                         [](const ::testing::TestParamInfo<BadCsv>& param_info) {
+                           return std::string(param_info.param.label);
+                         });
+
+}  // namespace
+}  // namespace wheelwear::wear
