@@ -95,5 +95,3 @@ void BM_FastsimSdecWithFields(benchmark::State& state) {
 BENCHMARK(BM_FastsimSdecWithFields)->Arg(20)->Arg(50);
 
 }  // namespace
-
-BENCHMARK_MAIN();

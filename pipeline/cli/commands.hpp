@@ -10,6 +10,12 @@ namespace wheelwear::cli {
 /// `wheelwear creep`: creep forces of one SDEC patch with any tangential method.
 void add_creep_command(CLI::App& app);
 
+/// `wheelwear contact`: contact patches of one wheel on its rail.
+void add_contact_command(CLI::App& app);
+
+/// `wheelwear wear`: wear of one wheel position per patch, mapped onto the wheel profile.
+void add_wear_command(CLI::App& app);
+
 /// `wheelwear profile`: generate, read, clean, resample and summarise wheel/rail profiles.
 void add_profile_command(CLI::App& app);
 

@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
   app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
   app.fallthrough(false);
   wheelwear::cli::add_creep_command(app);
+  wheelwear::cli::add_contact_command(app);
+  wheelwear::cli::add_wear_command(app);
   wheelwear::cli::add_profile_command(app);
   // CLI11 answers `wheelwear nosuch --help` with the main help and success; a misspelt
   // command must fail instead, so scripts notice.

@@ -49,7 +49,10 @@ class CsvTable {
     std::vector<std::string> cells;
     std::stringstream stream(line);
     std::string cell;
-    while (std::getline(stream, cell, ',')) cells.push_back(cell);
+    while (std::getline(stream, cell, ',')) {
+      if (!cell.empty() && cell.back() == '\r') cell.pop_back();  // CRLF files
+      cells.push_back(cell);
+    }
     return cells;
   }
   std::map<std::string, std::size_t> columns_;

@@ -1,5 +1,6 @@
 #include "wheelwear/wear/fastsim.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -83,6 +84,14 @@ std::optional<FastsimMethod> parse_fastsim_method(std::string_view name) {
 TangentialSolution fastsim(FastsimMethod method, const contactgeom::Sdec& sdec,
                            const Creepages& creepages, const ContactLoad& load,
                            const Material& material, const FastsimOptions& options) {
+  TangentialSolution solution;
+  fastsim(method, sdec, creepages, load, material, options, solution);
+  return solution;
+}
+
+void fastsim(FastsimMethod method, const contactgeom::Sdec& sdec, const Creepages& creepages,
+             const ContactLoad& load, const Material& material, const FastsimOptions& options,
+             TangentialSolution& solution) {
   sdec.validate();
   creepages.validate();
   load.validate();
@@ -96,7 +105,10 @@ TangentialSolution fastsim(FastsimMethod method, const contactgeom::Sdec& sdec,
   contactgeom::Sdec region = sdec;
   double centre_shift = 0.0;
   double spin_origin = 0.0;
-  TangentialSolution solution;
+  solution.forces = CreepForces{};
+  // Keep the field storage (its capacity) when fields are asked for again.
+  if (options.cell_fields && !solution.fields) solution.fields.emplace();
+  if (!options.cell_fields) solution.fields.reset();
   detail::Flexibilities flex;
 
   if (method == FastsimMethod::sdec) {
@@ -130,21 +142,27 @@ TangentialSolution fastsim(FastsimMethod method, const contactgeom::Sdec& sdec,
 
   detail::MarchTotals totals;
   if (options.scheme == FastsimScheme::second_order) {
-    if (options.cell_fields) solution.fields.emplace();
     totals = detail::march_second_order(grid, at_origin, flex, bound,
                                         solution.fields ? &*solution.fields : nullptr);
   } else if (options.cell_fields) {
-    solution.fields.emplace();
     totals = detail::march_with_fields(grid, at_origin, flex, bound, *solution.fields);
   } else {
     totals = detail::march(grid, at_origin, flex, bound);
   }
   if (solution.fields) {
     // Semi-elliptic pressure (Eq. 4) of the region the tractions live on, at the cell centres.
+    // Per strip p = (p0/a) sqrt(x_l^2 - x^2), with the strip's own leading edge.
     CellFields& f = *solution.fields;
     f.pressure.resize(f.x.size());
-    for (std::size_t k = 0; k < f.x.size(); ++k)
-      f.pressure[k] = region.pressure(f.x[k], f.y[k] - centre_shift, load.N);
+    const double p0_over_a = region.peak_pressure(load.N) / region.a;
+    for (int j = 0; j < f.ny; ++j) {
+      const double xl2 = grid.x_lead[j] * grid.x_lead[j];
+      const std::size_t row = static_cast<std::size_t>(j) * f.nx;
+      for (int i = 0; i < f.nx; ++i) {
+        const double x = f.x[row + i];
+        f.pressure[row + i] = p0_over_a * std::sqrt(std::max(xl2 - x * x, 0.0));
+      }
+    }
   }
   solution.forces.Fx = totals.Fx;
   solution.forces.Fy = totals.Fy;
@@ -153,7 +171,6 @@ TangentialSolution fastsim(FastsimMethod method, const contactgeom::Sdec& sdec,
   solution.cells = options.nx * options.ny;
   solution.slip_cells = totals.slip_cells;
   solution.frictional_work = totals.work;
-  return solution;
 }
 
 }  // namespace wheelwear::wear

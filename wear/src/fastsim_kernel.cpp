@@ -166,7 +166,7 @@ MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
         const double sy = release * trial_y;
         fields.sx[c] = sx;
         fields.sy[c] = sy;
-        fields.work[c] = std::hypot(px, py) * std::hypot(sx, sy);
+        fields.work[c] = std::sqrt((px * px + py * py) * (sx * sx + sy * sy));
         fields.slip[c] = 1;
         ++totals.slip_cells;
         work += fields.work[c];

@@ -81,6 +81,12 @@ TangentialSolution fastsim(FastsimMethod method, const contactgeom::Sdec& sdec,
                            const Creepages& creepages, const ContactLoad& load,
                            const Material& material, const FastsimOptions& options = {});
 
+/// As above, writing into `solution` and reusing its per-cell storage: no allocation once a
+/// grid size has been seen (for loops over many contacts).
+void fastsim(FastsimMethod method, const contactgeom::Sdec& sdec, const Creepages& creepages,
+             const ContactLoad& load, const Material& material, const FastsimOptions& options,
+             TangentialSolution& solution);
+
 /// The method's name as used on the command line and in files ("fastsim-sdec", ...).
 std::string_view method_name(FastsimMethod method);
 /// Parses a name of method_name(); std::nullopt when unknown.

@@ -1,0 +1,58 @@
+// Wheel/rail contact: geometry + Kik-Piotrowski normal problem + SDEC regularisation for one
+// position of an S1002 wheel on a 60E1 rail (1:40), 0.1 mm strips, Fz = 55 kN.
+
+#include <benchmark/benchmark.h>
+
+#include "wheelwear/contactgeom/kik_piotrowski.hpp"
+#include "wheelwear/contactgeom/wheel_rail.hpp"
+#include "wheelwear/profiles/rail_60e1.hpp"
+#include "wheelwear/profiles/s1002.hpp"
+
+namespace {
+
+using namespace wheelwear;
+
+const contactgeom::WheelRailPair& pair() {
+  static const contactgeom::WheelRailPair p(profiles::s1002(), profiles::rail_60e1());
+  return p;
+}
+
+// One position per lateral shift (mm): tread (0, 4) and flange root (-? : +5.5 towards flange).
+void BM_ContactGeometry(benchmark::State& state) {
+  contactgeom::WheelsetPose pose;
+  pose.dy = static_cast<double>(state.range(0)) * 1e-4;
+  std::size_t patches = 0;
+  for (auto _ : state) {
+    const auto contact = contactgeom::solve_wheel_rail(pair(), pose, 55e3);
+    patches = contact.patches.size();
+    benchmark::DoNotOptimize(contact.vertical_force);
+  }
+  state.counters["patches"] = static_cast<double>(patches);
+}
+BENCHMARK(BM_ContactGeometry)->Arg(0)->Arg(40)->Arg(-40)->Arg(55)->Unit(benchmark::kMicrosecond);
+
+// The normal problem alone on a Hertzian gap of 121 strips of 0.1 mm (a 12 mm patch).
+void BM_NormalKP(benchmark::State& state) {
+  const int n = 121;
+  std::vector<double> h(n), ax(n, 1.0 / (2 * 0.46));
+  for (int j = 0; j < n; ++j) {
+    const double s = (j - n / 2) * 1e-4;
+    h[j] = s * s / (2 * 0.3);
+  }
+  contactgeom::GapStrips gap;
+  gap.s_first = -(n / 2) * 1e-4;
+  gap.ds = 1e-4;
+  gap.h = h;
+  gap.ax = ax;
+  const double e_star = contactgeom::combined_modulus(200e9, 0.25);
+  contactgeom::KpResult result;
+  for (auto _ : state) {
+    contactgeom::solve_kp_load(gap, e_star, 55e3, {}, result);
+    benchmark::DoNotOptimize(result.approach);
+  }
+  state.counters["evaluations"] = result.evaluations;
+}
+BENCHMARK(BM_NormalKP)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+BENCHMARK_MAIN();

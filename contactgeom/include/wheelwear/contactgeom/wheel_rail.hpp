@@ -1,0 +1,91 @@
+#pragma once
+/// One wheel on its rail: from the wheelset's position to the non-elliptic contact patches,
+/// their SDEC regions and Hertz comparators (the chain of CONTACT's wheel/rail module, with
+/// the Kik-Piotrowski normal problem).
+
+#include <string>
+#include <vector>
+
+#include "wheelwear/contactgeom/hertz.hpp"
+#include "wheelwear/contactgeom/kik_piotrowski.hpp"
+#include "wheelwear/contactgeom/patch_measures.hpp"
+#include "wheelwear/contactgeom/sdec.hpp"
+#include "wheelwear/profiles/profile.hpp"
+
+namespace wheelwear::contactgeom {
+
+/// A wheel profile on a wheel and a rail profile on a rail, placed in a track. Both profiles
+/// are in their own frames (profiles::Profile: y towards the field side, z down); the rail
+/// profile already carries its inclination.
+struct WheelRailPair {
+  profiles::Profile wheel;
+  profiles::Profile rail;
+  double gauge = 1.435;           ///< track gauge [m], measured `gauge_depth` below the top
+  double gauge_depth = 0.014;     ///< [m]
+  double back_to_back = 1.360;    ///< distance between the wheels' flange backs [m]
+  double wheel_radius = 0.46;     ///< rolling radius at the wheel profile's y = 0 [m]
+  double flange_back_y = 0.0;     ///< flange back in the wheel profile's frame [m]
+  double youngs_modulus = 200e9;  ///< E of wheel and rail [Pa]
+  double poisson = 0.25;          ///< nu of wheel and rail [-]
+
+  /// A pair with the flange back at the wheel profile's smallest y (its -y end).
+  WheelRailPair(profiles::Profile wheel_profile, profiles::Profile rail_profile);
+  void validate() const;  ///< throws InputError naming a bad field
+};
+
+/// Where the wheelset is, for this wheel.
+struct WheelsetPose {
+  double dy = 0.0;  ///< lateral shift from the centred position, + towards this wheel's flange [m]
+  double roll = 0.0;  ///< roll of the wheel profile about its taping point [rad], small
+  double yaw = 0.0;   ///< yaw angle [rad]; enters the creepages, not the patch shape
+};
+
+/// Numerical options of the wheel/rail contact.
+struct WheelRailOptions {
+  double strip_width = 0.1e-3;      ///< lateral sampling of the gap [m] (patch strips are this wide
+                                    ///< divided by cos(contact angle))
+  double scan_spacing = 1e-3;       ///< coarse scan that finds where contact is possible [m]
+  double scan_margin = 2e-3;        ///< gaps more than this above the minimum cannot touch [m]
+  double load_tolerance = 1e-9;     ///< stop when |Fz/Fz_target - 1| is below this
+  double max_contact_angle = 1.35;  ///< steeper contact is reported as flange climb [rad]
+  KpOptions kp;                     ///< Kik-Piotrowski options (virtual penetration 0.55)
+  void validate() const;
+};
+
+/// One contact patch: its strips, measures, SDEC and the quantities at O.
+struct WheelRailPatch {
+  KpPatch kp;                ///< the Kik-Piotrowski strips (s: lateral, + towards the gauge side)
+  PatchMeasures measures;    ///< area, length, width, W1, W2 in the contact plane
+  Sdec sdec;                 ///< Eq. 13-14 regularisation
+  HertzSolution hertz;       ///< Hertz ellipse from the curvatures at O, same normal force
+  bool hertz_valid = false;  ///< false where the lateral relative curvature is not positive
+  double y_wheel = 0.0;      ///< O on the wheel profile, from its origin, + towards the flange [m]
+  double y_rail = 0.0;   ///< O on the rail profile, from its origin, + towards the gauge side [m]
+  double s_wheel = 0.0;  ///< arc length of O on the wheel profile [m]
+  double contact_angle = 0.0;   ///< angle of the contact plane to the track plane [rad]
+  double rolling_radius = 0.0;  ///< wheel radius at O [m]
+  double normal_force = 0.0;    ///< [N]
+  double pmax = 0.0;            ///< [Pa]
+};
+
+/// Outcome of a wheel/rail contact evaluation.
+enum class WheelRailStatus { ok, no_contact, flange_climb, not_converged };
+
+/// All patches of one wheel on its rail.
+struct WheelRailContact {
+  WheelRailStatus status = WheelRailStatus::no_contact;
+  std::string message;                  ///< why, when status != ok
+  std::vector<WheelRailPatch> patches;  ///< ordered from the field side to the gauge side
+  double vertical_force = 0.0;          ///< sum of N cos(angle) [N]
+  double lateral_force = 0.0;  ///< sum of N sin(angle), + pushes the wheel to the field side [N]
+  double approach = 0.0;       ///< vertical approach beyond first touch [m]
+};
+
+/// Solves the normal contact of the wheel under a prescribed vertical force Fz [N] > 0.
+WheelRailContact solve_wheel_rail(const WheelRailPair& pair, const WheelsetPose& pose,
+                                  double vertical_force, const WheelRailOptions& options = {});
+
+/// The name of a status ("ok", "no contact", ...).
+const char* status_name(WheelRailStatus status);
+
+}  // namespace wheelwear::contactgeom

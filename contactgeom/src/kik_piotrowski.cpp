@@ -1,0 +1,443 @@
+#include "wheelwear/contactgeom/kik_piotrowski.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include "bracketed_root.hpp"
+#include "strip_kernel.hpp"
+#include "wheelwear/contactgeom/elliptic_integrals.hpp"
+#include "wheelwear/input_error.hpp"
+
+// Why the formulas reduce to Hertz for a circle (cross-check (a) in the header):
+// for h = (x^2 + s^2)/(2R), A = 1/(2R), the virtual patch is the circle of radius a with
+// a^2 = 2 R eps delta, x_l(s)^2 = a^2 - s^2. Then I2 = int pi/2 (a^2 - s^2) ds = 2 pi a^3 / 3 and
+// I1 = int_0^(2 pi) int_0^a sqrt(a^2 - r^2) dr dphi = pi^2 a^2 / 2, so N = pi E* delta I2/I1 =
+// 4/3 E* a delta and p_O = N a / I2 = 3N/(2 pi a^2). With eps = 1/2, a^2 = R delta: Hertz's
+// circular contact exactly. With eps = 0.55 the KP circle is 1.1^(1/3) = 3.2 % wider than
+// Hertz's at the same load, with 1.1^(-2/3) = 6.2 % lower p_O and 1.1^(-1/3) = 3.1 % less
+// approach.
+
+namespace wheelwear::contactgeom {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// One run of consecutive strips with h < delta, and its initial contact point O.
+struct Run {
+  std::size_t first = 0;  // first strip of the run
+  std::size_t last = 0;   // last strip of the run (inclusive)
+  double s_O = 0.0;       // lateral position of the gap minimum [m]
+  double h_O = 0.0;       // gap at O [m]
+  double a_O = 0.0;       // A(s_O) [1/m]
+};
+
+// Locates O in [first, last]: the strip with the smallest h, refined by the parabola through it
+// and its two neighbours (the way CONTACT's reference data locate s_icp), which keeps s_O and
+// h_O continuous as the true minimum moves between strips. Where several neighbouring strips
+// share the smallest h exactly (a flat gap), O is the middle of that flat part.
+Run locate_minimum(const GapStrips& g, std::size_t first, std::size_t last) {
+  std::size_t jmin = first;
+  for (std::size_t j = first + 1; j <= last; ++j) {
+    if (g.h[j] < g.h[jmin]) jmin = j;
+  }
+  std::size_t jtie = jmin;
+  while (jtie + 1 <= last && g.h[jtie + 1] == g.h[jmin]) ++jtie;
+  if (jtie > jmin) {
+    const double a_mid =
+        0.5 * (g.ax[jmin + (jtie - jmin) / 2] + g.ax[jmin + (jtie - jmin + 1) / 2]);
+    return {first, last, 0.5 * (g.s(jmin) + g.s(jtie)), g.h[jmin], a_mid};
+  }
+  const std::size_t jm = jmin;
+  Run run{first, last, g.s(jm), g.h[jm], g.ax[jm]};
+  if (jm == 0 || jm + 1 >= g.size()) return run;
+  const double hl = g.h[jm - 1];
+  const double hr = g.h[jm + 1];
+  if (!std::isfinite(hl) || !std::isfinite(hr)) return run;
+  const double curv = hl - 2.0 * g.h[jm] + hr;  // second difference, >= 0 at a minimum
+  if (!(curv > 0.0)) return run;
+  // Parabola h(t) = h_jm + (hr - hl)/2 t + curv/2 t^2 in strip units t; its vertex lies in
+  // [-1/2, 1/2] because h_jm is not above its neighbours.
+  const double t = std::clamp((hl - hr) / (2.0 * curv), -0.5, 0.5);
+  run.s_O += t * g.ds;
+  run.h_O = g.h[jm] + 0.5 * (hr - hl) * t + 0.5 * curv * t * t;
+  const double a_side = t >= 0.0 ? g.ax[jm + 1] : g.ax[jm - 1];
+  run.a_O = g.ax[jm] + std::abs(t) * (a_side - g.ax[jm]);
+  return run;
+}
+
+// Visits every run of consecutive strips with h < delta, in increasing s.
+template <class Visit>
+void for_each_run(const GapStrips& g, double delta, Visit&& visit) {
+  const std::size_t n = g.size();
+  std::size_t j = 0;
+  while (j < n) {
+    if (!(g.h[j] < delta)) {
+      ++j;
+      continue;
+    }
+    const std::size_t first = j;
+    while (j + 1 < n && g.h[j + 1] < delta) ++j;
+    visit(locate_minimum(g, first, j));
+    ++j;
+  }
+}
+
+// The expensive part of one run's KP solution at one approach: the integrals I1, I2.
+struct RunIntegrals {
+  double i1 = 0.0;      // int int sqrt(x_l^2 - x^2)/r dx ds [m^2]
+  double i2 = 0.0;      // int pi/2 x_l^2 ds [m^3]
+  double max_xl = 0.0;  // largest leading edge at a strip centre [m]
+  std::size_t first_contact = 0;
+  std::size_t last_contact = 0;
+};
+
+// Integrals of one run at the virtual penetration level eps (delta - h_O) above h_O.
+RunIntegrals integrate_run(const GapStrips& g, const Run& run, double level) {
+  const double half = 0.5 * g.ds;
+  RunIntegrals r;
+  r.first_contact = run.last + 1;
+  double sum_xl2 = 0.0;
+  for (std::size_t j = run.first; j <= run.last; ++j) {
+    const double gj = level - (g.h[j] - run.h_O);
+    if (!(gj > 0.0)) continue;
+    const double xl2 = gj / g.ax[j];
+    const double xl = std::sqrt(xl2);
+    sum_xl2 += xl2;
+    r.max_xl = std::max(r.max_xl, xl);
+    const double y = g.s(j) - run.s_O;
+    r.i1 += detail::strip_kernel(xl, y - half, y + half);
+    r.first_contact = std::min(r.first_contact, j);
+    r.last_contact = j;
+  }
+  r.i2 = 0.5 * kPi * g.ds * sum_xl2;
+  return r;
+}
+
+// KP load N_k = pi E* delta_k I2 / I1 [N]; 0 when no strip is in contact.
+double run_load(const RunIntegrals& r, double approach, double E_star) {
+  if (!(r.i2 > 0.0) || !(r.i1 > 0.0)) return 0.0;
+  return kPi * E_star * approach * r.i2 / r.i1;
+}
+
+// Writes the patch of one run from its integrals.
+void write_patch(const GapStrips& g, const Run& run, double approach, double level,
+                 const RunIntegrals& r, double load, KpPatch& patch) {
+  // p(x, s) = p_O sqrt(x_l^2 - x^2)/x_l(s_O) with p_O = N x_l(s_O)/I2, so the pressure at the
+  // centre of strip j is N x_l,j / I2.
+  const double p_per_xl = load / r.i2;
+  patch.strips.clear();
+  for (std::size_t j = r.first_contact; j <= r.last_contact; ++j) {
+    const double gj = level - (g.h[j] - run.h_O);
+    const double xl = gj > 0.0 ? std::sqrt(gj / g.ax[j]) : 0.0;
+    patch.strips.push_back({g.s(j), xl, p_per_xl * xl});
+  }
+  patch.ds = g.ds;
+  patch.s_O = run.s_O;
+  patch.h_O = run.h_O;
+  patch.approach = approach;
+  patch.virtual_penetration = level;
+  patch.x_lead_O = std::sqrt(level / run.a_O);
+  patch.normal_force = load;
+  patch.p_O = p_per_xl * patch.x_lead_O;
+  // O usually lies between strip centres, and the pressure peaks there.
+  patch.pmax = p_per_xl * std::max(r.max_xl, patch.x_lead_O);
+}
+
+// The integrals of every run at the last approach evaluated, so that writing the result after
+// the load iteration does not repeat its most expensive pass. Fixed size: no allocation.
+struct EvaluationCache {
+  double delta = std::numeric_limits<double>::quiet_NaN();
+  std::size_t count = 0;
+  bool complete = false;  // false when there were more runs than slots
+  std::array<RunIntegrals, 8> runs;
+};
+
+// Total KP load [N] at the rigid approach delta; records the run integrals in `cache`.
+double total_load(const GapStrips& g, double delta, double eps, double E_star,
+                  EvaluationCache& cache) {
+  double load = 0.0;
+  cache.delta = delta;
+  cache.count = 0;
+  cache.complete = true;
+  for_each_run(g, delta, [&](const Run& run) {
+    const double approach = delta - run.h_O;
+    const RunIntegrals r = approach > 0.0 ? integrate_run(g, run, eps * approach) : RunIntegrals{};
+    if (cache.count < cache.runs.size()) {
+      cache.runs[cache.count++] = r;
+    } else {
+      cache.complete = false;
+    }
+    load += run_load(r, approach, E_star);
+  });
+  return load;
+}
+
+// Writes every patch with load at delta into `result`, reusing its storage, and the run
+// integrals from `cache` when it holds this delta.
+void fill_result(const GapStrips& g, double delta, double eps, double E_star,
+                 const EvaluationCache& cache, KpResult& result) {
+  const bool cached = cache.complete && cache.delta == delta;
+  std::size_t used = 0;
+  std::size_t k = 0;
+  result.normal_force = 0.0;
+  result.pmax = 0.0;
+  result.approach = delta;
+  for_each_run(g, delta, [&](const Run& run) {
+    const double approach = delta - run.h_O;
+    const double level = eps * approach;
+    RunIntegrals r;
+    if (cached && k < cache.count) {
+      r = cache.runs[k];
+    } else if (approach > 0.0) {
+      r = integrate_run(g, run, level);
+    }
+    ++k;
+    const double load = run_load(r, approach, E_star);
+    if (!(load > 0.0)) return;
+    if (used == result.patches.size()) result.patches.emplace_back();
+    write_patch(g, run, approach, level, r, load, result.patches[used]);
+    result.pmax = std::max(result.pmax, result.patches[used].pmax);
+    result.normal_force += load;
+    ++used;
+  });
+  result.patches.resize(used);
+}
+
+// Smallest finite gap and its strip; index = size() when no gap is finite.
+struct GapMinimum {
+  std::size_t index;
+  double h;
+};
+GapMinimum gap_minimum(const GapStrips& g) {
+  GapMinimum m{g.size(), std::numeric_limits<double>::infinity()};
+  for (std::size_t j = 0; j < g.size(); ++j) {
+    if (g.h[j] < m.h) m = {j, g.h[j]};
+  }
+  return m;
+}
+
+void check_modulus(double E_star) {
+  require_finite("E_star", E_star);
+  require(E_star > 0.0, "E_star", E_star, "the combined modulus must be positive (Pa)");
+}
+
+void set_no_contact(KpResult& result, double delta, std::string message) {
+  result.status = KpStatus::no_contact;
+  result.message = std::move(message);
+  result.approach = delta;
+  result.normal_force = 0.0;
+  result.pmax = 0.0;
+  result.patches.clear();
+}
+
+// First guess of the approach above the gap minimum: KP's own closed form for the quadratic gap
+// h = A x^2 + B s^2 at the minimum strip. There the virtual patch is the ellipse
+// a' = sqrt(eps delta/A), b' = sqrt(eps delta/B) with the Hertzian pressure shape, so
+// I2 = 2 pi/3 a'^2 b' and I1 = a' pi beta K(e) (beta the minor semi-axis, k'^2 = min/max of
+// A, B; Johnson 1985, Section 3.6), and N = pi E* delta I2/I1 gives
+// delta^(3/2) = 3 N sqrt(min(A, B)) K(e) / (2 pi E* sqrt(eps)). B comes from the second
+// difference of h, at least 1 % of A so that a flat gap still gives a finite guess. Only the
+// number of iterations depends on the guess.
+double initial_approach(const GapStrips& g, const GapMinimum& m, double E_star, double N,
+                        double eps) {
+  const double a = g.ax[m.index];
+  double b = 0.0;
+  if (m.index > 0 && m.index + 1 < g.size() && std::isfinite(g.h[m.index - 1]) &&
+      std::isfinite(g.h[m.index + 1])) {
+    b = (g.h[m.index - 1] - 2.0 * g.h[m.index] + g.h[m.index + 1]) / (2.0 * g.ds * g.ds);
+  }
+  b = std::max(b, 0.01 * a);
+  const double lo = std::min(a, b);
+  const double hi = std::max(a, b);
+  const double K = complete_elliptic_integrals_kc(std::sqrt(lo / hi)).K;
+  return std::pow(3.0 * N * std::sqrt(lo) * K / (2.0 * kPi * E_star * std::sqrt(eps)), 2.0 / 3.0);
+}
+
+}  // namespace
+
+void GapStrips::validate() const {
+  require_finite("ds", ds);
+  require_finite("s_first", s_first);
+  require(ds > 0.0, "ds", ds, "the strip width must be positive (m)");
+  require(!h.empty(), "h.size", 0.0, "at least one strip is needed");
+  if (ax.size() != h.size()) {
+    // The message is built only on failure: validate() runs on every solve.
+    require(false, "ax.size", static_cast<double>(ax.size()),
+            "needs one longitudinal coefficient per strip (h.size() = " + std::to_string(h.size()) +
+                ")");
+  }
+  for (std::size_t j = 0; j < h.size(); ++j) {
+    if (std::isnan(h[j]) || h[j] == -std::numeric_limits<double>::infinity()) {
+      require(false, "h[" + std::to_string(j) + "]", h[j],
+              "the gap must be a number or +inf (no potential contact)");
+    }
+    if (!(std::isfinite(ax[j]) && ax[j] > 0.0)) {
+      require(false, "ax[" + std::to_string(j) + "]", ax[j],
+              "the longitudinal gap coefficient must be finite and positive (1/m)");
+    }
+  }
+}
+
+void KpOptions::validate() const {
+  require_finite("epsilon", epsilon);
+  require(epsilon > 0.0 && epsilon <= 1.0, "epsilon", epsilon,
+          "the virtual penetration factor must lie in (0, 1]");
+  require_finite("load_tolerance", load_tolerance);
+  require(load_tolerance > 0.0 && load_tolerance < 1.0, "load_tolerance", load_tolerance,
+          "must lie in (0, 1)");
+  require(max_evaluations >= 3, "max_evaluations", max_evaluations, "must be at least 3");
+}
+
+double KpStrip::pressure(double x) const {
+  if (!(x_lead > 0.0)) return 0.0;
+  const double r = x / x_lead;
+  const double t = 1.0 - r * r;
+  return t > 0.0 ? p_peak * std::sqrt(t) : 0.0;
+}
+
+double KpStrip::line_load() const {
+  return 0.5 * kPi * p_peak * x_lead;
+}
+
+void solve_kp_load(const GapStrips& gap, double E_star, double N, const KpOptions& options,
+                   KpResult& result) {
+  gap.validate();
+  options.validate();
+  check_modulus(E_star);
+  require_finite("N", N);
+  require(N >= 0.0, "N", N, "the normal force must not be negative (N)");
+  result.evaluations = 0;
+  const GapMinimum m = gap_minimum(gap);
+  if (m.index == gap.size()) {
+    set_no_contact(result, 0.0, "no strip has a finite gap: no potential contact");
+    return;
+  }
+  if (N == 0.0) {
+    set_no_contact(result, m.h, "zero normal force");
+    return;
+  }
+  const double eps = options.epsilon;
+  const double tol = options.load_tolerance;
+  int evaluations = 0;
+  // f(d) = (N(h_min + d)/N)^(2/3) - 1 is close to linear in the approach d (N ~ d^(3/2)) and
+  // rises with d except where two contact regions merge.
+  EvaluationCache cache;
+  auto f = [&](double d) {
+    ++evaluations;
+    return std::pow(total_load(gap, m.h + d, eps, E_star, cache) / N, 2.0 / 3.0) - 1.0;
+  };
+
+  // Phase 1: secant steps from the closed-form guess until the root is met or bracketed. A
+  // step that leaves [d/4, 4d] (or a flat secant) falls back to the linear model d/(f + 1);
+  // while N is still zero (f = -1) d quadruples. Phase 1 gives up after a few steps that do not
+  // halve |f| (N(delta) need not be monotone where contact regions merge).
+  double d0 = initial_approach(gap, m, E_star, N, eps);
+  double f0 = f(d0);
+  double d1 = d0;
+  double f1 = f0;
+  if (std::abs(f0) > tol) {
+    d1 = f0 > -1.0 ? d0 / (1.0 + f0) : 4.0 * d0;
+    f1 = f(d1);
+  }
+  int stalls = 0;
+  while (std::abs(f1) > tol && (f1 > 0.0) == (f0 > 0.0) && stalls < 3 &&
+         evaluations < options.max_evaluations) {
+    double next = f1 > -1.0 ? d1 / (1.0 + f1) : 4.0 * d1;
+    if (f1 != f0) {
+      const double secant = d1 - f1 * (d1 - d0) / (f1 - f0);
+      if (secant > 0.25 * d1 && secant < 4.0 * d1) next = secant;
+    }
+    const double previous = std::abs(f1);
+    d0 = d1;
+    f0 = f1;
+    d1 = next;
+    f1 = f(d1);
+    if (std::abs(f1) > 0.5 * previous) ++stalls;
+  }
+  if (std::abs(f1) > tol && (f1 > 0.0) == (f0 > 0.0)) {
+    // Phase 1 stalled: fall back to a guaranteed bracket. N = 0 at d = 0 (f = -1 exactly, no
+    // evaluation needed) if some f > 0 is known; otherwise double d until N exceeds the load.
+    if (f1 > 0.0) {
+      d0 = 0.0;
+      f0 = -1.0;
+    } else {
+      while (f1 <= 0.0 && evaluations < options.max_evaluations) {
+        d0 = d1;
+        f0 = f1;
+        d1 *= 2.0;
+        f1 = f(d1);
+      }
+    }
+  }
+
+  double d = std::abs(f0) <= std::abs(f1) ? d0 : d1;
+  double fd = std::abs(f0) <= std::abs(f1) ? f0 : f1;
+  if (std::abs(fd) > tol && (f1 > 0.0) != (f0 > 0.0)) {
+    // Phase 2 terminates on |f| <= load_tolerance, or on a bracket below 1e-13 of d (N jumps
+    // there, where two contact regions merge), or at max_evaluations.
+    const detail::RootResult root = detail::find_root_bracketed(
+        f, d0, f0, d1, f1, tol, 1e-13 * std::max(d0, d1), options.max_evaluations - evaluations);
+    d = root.x;
+    fd = root.fx;
+  }
+
+  fill_result(gap, m.h + d, eps, E_star, cache, result);
+  result.evaluations = evaluations;
+  if (std::abs(fd) <= options.load_tolerance) {
+    result.status = KpStatus::converged;
+    result.message.clear();
+  } else {
+    result.status = KpStatus::not_converged;
+    result.message =
+        "normal force " + std::to_string(result.normal_force) + " N instead of " +
+        std::to_string(N) + " N after " + std::to_string(evaluations) +
+        " evaluations (N(delta) jumps where contact regions merge, or the evaluation budget ran"
+        " out)";
+  }
+}
+
+KpResult solve_kp_load(const GapStrips& gap, double E_star, double N, const KpOptions& options) {
+  KpResult result;
+  solve_kp_load(gap, E_star, N, options, result);
+  return result;
+}
+
+void solve_kp_approach(const GapStrips& gap, double E_star, double delta, const KpOptions& options,
+                       KpResult& result) {
+  gap.validate();
+  options.validate();
+  check_modulus(E_star);
+  require_finite("delta", delta);
+  result.evaluations = 0;
+  const GapMinimum m = gap_minimum(gap);
+  if (m.index == gap.size()) {
+    set_no_contact(result, delta, "no strip has a finite gap: no potential contact");
+    return;
+  }
+  if (!(delta > m.h)) {
+    set_no_contact(result, delta, "the approach does not reach the gap minimum");
+    return;
+  }
+  fill_result(gap, delta, options.epsilon, E_star, EvaluationCache{}, result);
+  result.evaluations = 1;
+  if (result.patches.empty()) {
+    set_no_contact(result, delta, "the virtual penetration is too small to reach any strip centre");
+    return;
+  }
+  result.status = KpStatus::converged;
+  result.message.clear();
+}
+
+KpResult solve_kp_approach(const GapStrips& gap, double E_star, double delta,
+                           const KpOptions& options) {
+  KpResult result;
+  solve_kp_approach(gap, E_star, delta, options, result);
+  return result;
+}
+
+}  // namespace wheelwear::contactgeom

@@ -1,0 +1,141 @@
+#include "wheelwear/contactgeom/patch_measures.hpp"
+
+#include <algorithm>
+#include <cmath>
+// Boost 1.74's robustness policy (used by is_valid) trips GCC's -Wmaybe-uninitialized on
+// members it always sets before use; silence it for these headers only.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <boost/geometry.hpp>
+#include <boost/geometry/geometries/multi_polygon.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
+#include <boost/geometry/geometries/polygon.hpp>
+#pragma GCC diagnostic pop
+#include <string>
+
+#include "wheelwear/input_error.hpp"
+
+namespace wheelwear::contactgeom {
+namespace {
+
+namespace bg = boost::geometry;
+using Point = bg::model::d2::point_xy<double>;
+// Counter-clockwise, open rings, as PatchRing documents; bg::correct fixes other orientations.
+using Polygon = bg::model::polygon<Point, /*ClockWise=*/false, /*Closed=*/false>;
+using MultiPolygon = bg::model::multi_polygon<Polygon>;
+
+MultiPolygon to_boost(const std::vector<PatchRing>& rings) {
+  MultiPolygon multi;
+  multi.reserve(rings.size());
+  for (std::size_t r = 0; r < rings.size(); ++r) {
+    const PatchRing& ring = rings[r];
+    require(ring.size() >= 3, "rings[" + std::to_string(r) + "].size",
+            static_cast<double>(ring.size()), "a patch outline needs at least 3 vertices");
+    Polygon polygon;
+    polygon.outer().reserve(ring.size());
+    for (const Eigen::Vector2d& v : ring) {
+      require_finite("ring vertex x", v.x());
+      require_finite("ring vertex y", v.y());
+      polygon.outer().emplace_back(v.x(), v.y());
+    }
+    multi.push_back(std::move(polygon));
+  }
+  bg::correct(multi);
+  return multi;
+}
+
+}  // namespace
+
+PatchMeasures measure_polygons(const std::vector<PatchRing>& rings, double y_O) {
+  require(!rings.empty(), "rings.size", 0.0, "a patch needs at least one outline ring");
+  require_finite("y_O", y_O);
+  const MultiPolygon multi = to_boost(rings);
+  std::string reason;
+  if (!bg::is_valid(multi, reason)) {
+    throw InputError("patch outline: not a set of disjoint simple polygons (" + reason + ")");
+  }
+  PatchMeasures m;
+  m.area = bg::area(multi);
+  require(m.area > 0.0, "area", m.area, "the patch outline encloses no area");
+  Point centroid(0.0, 0.0);
+  bg::centroid(multi, centroid);
+  m.centroid_x = centroid.x();
+  m.centroid_y = centroid.y();
+  bg::model::box<Point> box;
+  bg::envelope(multi, box);
+  m.length = box.max_corner().x() - box.min_corner().x();
+  m.width = box.max_corner().y() - box.min_corner().y();
+  m.y_O = y_O;
+  m.W1 = box.max_corner().y() - y_O;
+  m.W2 = y_O - box.min_corner().y();
+  return m;
+}
+
+PatchMeasures measure_patch(const KpPatch& patch) {
+  // Direct sums over the strips: the same numbers as Boost.Geometry on the staircase outline,
+  // without building it (this runs once per patch and position in the wear loop).
+  double area_over_2ds = 0.0;
+  double moment_y = 0.0;
+  double max_xl = 0.0;
+  double y_min = 0.0;
+  double y_max = 0.0;
+  bool any = false;
+  for (const KpStrip& strip : patch.strips) {
+    if (!(strip.x_lead > 0.0)) continue;
+    area_over_2ds += strip.x_lead;
+    moment_y += strip.x_lead * strip.s;
+    max_xl = std::max(max_xl, strip.x_lead);
+    if (!any) y_min = strip.s - 0.5 * patch.ds;
+    y_max = strip.s + 0.5 * patch.ds;
+    any = true;
+  }
+  require(any, "patch.strips", static_cast<double>(patch.strips.size()),
+          "no strip of the patch is in contact");
+  PatchMeasures m;
+  m.area = 2.0 * patch.ds * area_over_2ds;
+  m.centroid_x = 0.0;
+  m.centroid_y = moment_y / area_over_2ds;
+  m.length = 2.0 * max_xl;
+  m.width = y_max - y_min;
+  m.y_O = patch.s_O;
+  m.W1 = y_max - patch.s_O;
+  m.W2 = patch.s_O - y_min;
+  return m;
+}
+
+std::vector<PatchRing> patch_outline(const KpPatch& patch) {
+  std::vector<PatchRing> rings;
+  const std::size_t n = patch.strips.size();
+  const double half = 0.5 * patch.ds;
+  std::size_t j = 0;
+  while (j < n) {
+    if (!(patch.strips[j].x_lead > 0.0)) {
+      ++j;
+      continue;
+    }
+    std::size_t last = j;
+    while (last + 1 < n && patch.strips[last + 1].x_lead > 0.0) ++last;
+    PatchRing ring;
+    ring.reserve(4 * (last - j + 1));
+    // Neighbouring strips of equal x_lead would repeat a vertex; skip the repeat.
+    auto add = [&ring](double x, double y) {
+      if (ring.empty() || ring.back().x() != x || ring.back().y() != y) ring.emplace_back(x, y);
+    };
+    // Up the leading side (x > 0), then down the trailing side: counter-clockwise.
+    for (std::size_t k = j; k <= last; ++k) {
+      const KpStrip& s = patch.strips[k];
+      add(s.x_lead, s.s - half);
+      add(s.x_lead, s.s + half);
+    }
+    for (std::size_t k = last + 1; k-- > j;) {
+      const KpStrip& s = patch.strips[k];
+      add(-s.x_lead, s.s + half);
+      add(-s.x_lead, s.s - half);
+    }
+    rings.push_back(std::move(ring));
+    j = last + 1;
+  }
+  return rings;
+}
+
+}  // namespace wheelwear::contactgeom

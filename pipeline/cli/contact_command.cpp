@@ -1,0 +1,114 @@
+// `wheelwear contact`: the contact patches of one wheel on its rail for a wheelset position.
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "contact_inputs.hpp"
+#include "wheelwear/contactgeom/wheel_rail.hpp"
+#include "wheelwear/pipeline/json_writer.hpp"
+#include "wheelwear/wear/fastsim.hpp"
+
+namespace wheelwear::cli {
+
+namespace {
+
+struct ContactArgs {
+  ContactInputs in;
+  bool creep = false;
+  bool json = false;
+};
+
+std::string patch_json(const contactgeom::WheelRailPatch& p, const ContactArgs& args) {
+  pipeline::JsonObject o;
+  o.add("area", p.measures.area)
+      .add("length", p.measures.length)
+      .add("width", p.measures.width)
+      .add("W1", p.measures.W1)
+      .add("W2", p.measures.W2)
+      .add("a", p.sdec.a)
+      .add("b", p.sdec.b)
+      .add("psi", p.sdec.psi)
+      .add("y_wheel", p.y_wheel)
+      .add("y_rail", p.y_rail)
+      .add("contact_angle", p.contact_angle)
+      .add("N", p.normal_force)
+      .add("pmax", p.pmax)
+      .add("rolling_radius", p.rolling_radius);
+  if (p.hertz_valid) {
+    o.add("hertz_a", p.hertz.a).add("hertz_b", p.hertz.b).add("hertz_p0", p.hertz.p0);
+  }
+  if (args.creep) {
+    const wear::TangentialSolution s =
+        wear::fastsim(wear::FastsimMethod::sdec, p.sdec, args.in.creepages,
+                      {p.normal_force, args.in.mu}, args.in.material());
+    o.add("Fx", s.forces.Fx).add("Fy", s.forces.Fy).add("Mz", s.forces.Mz);
+  }
+  return o.str();
+}
+
+void run_contact(const ContactArgs& args) {
+  const contactgeom::WheelRailContact contact = solve_contact(args.in).contact;
+
+  if (args.json) {
+    std::vector<std::string> patches;
+    for (const auto& p : contact.patches) patches.push_back(patch_json(p, args));
+    pipeline::JsonObject out;
+    out.add("status", contactgeom::status_name(contact.status))
+        .add("message", contact.message)
+        .add("vertical_force", contact.vertical_force)
+        .add("lateral_force", contact.lateral_force)
+        .add("approach", contact.approach)
+        .add_raw("patches", pipeline::json_array(patches));
+    std::cout << out.str() << '\n';
+  } else {
+    std::printf("status %s%s%s\n", contactgeom::status_name(contact.status),
+                contact.message.empty() ? "" : ": ", contact.message.c_str());
+    std::printf("vertical force %.6g N, lateral force %.6g N, approach %.4g mm\n",
+                contact.vertical_force, contact.lateral_force, contact.approach * 1e3);
+    int k = 0;
+    for (const auto& p : contact.patches) {
+      std::printf(
+          "patch %d: N %.6g N, angle %.4f rad, O at %.3f mm on the rail, %.3f mm on the wheel\n"
+          "  area %.4g mm2, length %.3f mm, width %.3f mm, W1 %.3f mm, W2 %.3f mm, pmax %.1f MPa\n"
+          "  SDEC a %.3f mm, b %.3f mm, psi %+.3f\n",
+          ++k, p.normal_force, p.contact_angle, p.y_rail * 1e3, p.y_wheel * 1e3,
+          p.measures.area * 1e6, p.measures.length * 1e3, p.measures.width * 1e3,
+          p.measures.W1 * 1e3, p.measures.W2 * 1e3, p.pmax * 1e-6, p.sdec.a * 1e3, p.sdec.b * 1e3,
+          p.sdec.psi);
+    }
+  }
+  if (contact.status == contactgeom::WheelRailStatus::no_contact ||
+      contact.status == contactgeom::WheelRailStatus::not_converged) {
+    throw std::runtime_error(std::string("contact ") + contactgeom::status_name(contact.status) +
+                             (contact.message.empty() ? "" : ": " + contact.message));
+  }
+}
+
+}  // namespace
+
+void add_contact_command(CLI::App& app) {
+  auto args = std::make_shared<ContactArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "contact",
+      "Contact patches of one wheel (the left one) of a wheelset on its rail.\n"
+      "Geometry as in CONTACT's wheel/rail module: the wheel's flange back sits back-to-back/2\n"
+      "from the track centre, the rail's gauge point gauge/2 (14 mm below the top of rail).\n"
+      "The normal problem is Kik-Piotrowski's with virtual penetration; each patch is\n"
+      "regularised into an SDEC (Liu, Fu & Bruni 2022, Eq. 13-14). Lateral positions are\n"
+      "positive towards the gauge side. SI units.\n"
+      "Example: wheelwear contact --wheel S1002 --rail 60E1 --dy 0.004 --load 55000 --json");
+  add_contact_options(cmd, args->in);
+  cmd->add_flag("--creep", args->creep,
+                "also solve the tangential problem with FASTSIM-SDEC (creepages --vx --vy --phi)");
+  cmd->add_flag("--json", args->json, "print one JSON object with a list of patches");
+  cmd->callback([args] { run_contact(*args); });
+}
+
+}  // namespace wheelwear::cli

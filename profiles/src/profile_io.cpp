@@ -1,0 +1,75 @@
+#include "wheelwear/profiles/profile_io.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+#include "wheelwear/profiles/columns_format.hpp"
+#include "wheelwear/profiles/miniprof_format.hpp"
+#include "wheelwear/profiles/simpack_format.hpp"
+#include "wheelwear/profiles/text_file.hpp"
+
+namespace wheelwear::profiles {
+
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+}  // namespace
+
+FileFormat detect_format(const std::filesystem::path& path, std::string_view text) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".prr" || ext == ".prw") return FileFormat::simpack;
+  if (ext == ".whl" || ext == ".ban") return FileFormat::miniprof;
+  const std::string_view head = text.substr(0, std::min<std::size_t>(text.size(), 8192));
+  if (head.find("header.begin") != std::string_view::npos ||
+      head.find("spline.begin") != std::string_view::npos)
+    return FileFormat::simpack;
+  if (head.find("MINIPROF") != std::string_view::npos ||
+      head.find("XYPoints=") != std::string_view::npos ||
+      head.find("ColumnDef=") != std::string_view::npos)
+    return FileFormat::miniprof;
+  return FileFormat::columns;
+}
+
+RawProfile parse_profile_text(std::string_view text, std::string_view source, FileFormat format,
+                              const ReadOptions& options) {
+  RawProfile raw;
+  switch (format) {
+    case FileFormat::simpack:
+      raw = parse_simpack(text, source, options);
+      break;
+    case FileFormat::miniprof:
+      raw = parse_miniprof(text, source, lower_extension(std::filesystem::path(source)), options);
+      break;
+    case FileFormat::columns:
+      raw = parse_columns(text, source, options);
+      break;
+  }
+  if (options.body) raw.body = options.body;
+  return raw;
+}
+
+RawProfile read_profile_file(const std::filesystem::path& path, const ReadOptions& options) {
+  const std::string text = read_text_file(path);
+  return parse_profile_text(text, path.string(), detect_format(path, text), options);
+}
+
+void write_profile_file(const std::filesystem::path& path, const PointList& points, Body body) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".prr" || ext == ".prw") {
+    write_simpack(path, points, body);
+  } else if (ext == ".whl" || ext == ".ban") {
+    write_miniprof(path, points, body);
+  } else {
+    CsvWriteOptions options;
+    options.body = body;
+    write_csv(path, points, options);
+  }
+}
+
+}  // namespace wheelwear::profiles

@@ -1,0 +1,123 @@
+// Patch measures on shapes with closed forms, and the fast strip path against Boost.Geometry.
+
+#include "wheelwear/contactgeom/patch_measures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "wheelwear/contactgeom/hertz.hpp"
+#include "wheelwear/input_error.hpp"
+
+namespace wheelwear::contactgeom {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+PatchRing rectangle(double x0, double x1, double y0, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+// Ellipse centred at (xc, yc) as a regular n-gon inscribed in it.
+PatchRing ellipse(double a, double b, double xc, double yc, int n) {
+  PatchRing ring;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2.0 * kPi * i / n;
+    ring.emplace_back(xc + a * std::cos(t), yc + b * std::sin(t));
+  }
+  return ring;
+}
+
+TEST(PatchMeasures, RectangleIsExact) {
+  // 12 mm x 4 mm, O at y = 1 mm: W1 = 3 - 1 = 2 mm, W2 = 1 - (-1) = 2 mm... offset to 0.5 mm.
+  const PatchMeasures m = measure_polygons({rectangle(-6e-3, 6e-3, -1e-3, 3e-3)}, 0.5e-3);
+  EXPECT_NEAR(m.area, 48e-6, 1e-18);
+  EXPECT_NEAR(m.length, 12e-3, 1e-15);
+  EXPECT_NEAR(m.width, 4e-3, 1e-15);
+  EXPECT_NEAR(m.centroid_x, 0.0, 1e-15);
+  EXPECT_NEAR(m.centroid_y, 1e-3, 1e-15);
+  EXPECT_NEAR(m.W1, 2.5e-3, 1e-15);
+  EXPECT_NEAR(m.W2, 1.5e-3, 1e-15);
+}
+
+TEST(PatchMeasures, OrientationDoesNotMatter) {
+  PatchRing cw = rectangle(0.0, 2.0, 0.0, 1.0);
+  std::reverse(cw.begin(), cw.end());
+  EXPECT_NEAR(measure_polygons({cw}, 0.5).area, 2.0, 1e-15);
+}
+
+TEST(PatchMeasures, EllipseMatchesClosedForm) {
+  // Inscribed n-gon: area (n/2) a b sin(2 pi/n) exactly, -> pi a b with relative error
+  // (2 pi/n)^2/6; n = 2000 gives 1.6e-6. Extents are exact at the vertices t = 0, pi/2, ...
+  const double a = 6e-3, b = 4e-3;
+  const int n = 2000;
+  const PatchMeasures m = measure_polygons({ellipse(a, b, 1e-3, -2e-3, n)}, -3e-3);
+  EXPECT_NEAR(m.area, 0.5 * n * a * b * std::sin(2.0 * kPi / n), 1e-18);
+  EXPECT_LT(std::abs(m.area / (kPi * a * b) - 1.0), 2e-6);
+  EXPECT_NEAR(m.length, 2.0 * a, 1e-15);
+  EXPECT_NEAR(m.width, 2.0 * b, 1e-15);
+  EXPECT_NEAR(m.centroid_x, 1e-3, 1e-15);
+  EXPECT_NEAR(m.centroid_y, -2e-3, 1e-15);
+  EXPECT_NEAR(m.W1, 5e-3, 1e-15);  // from O at -3 mm to the top at +2 mm
+  EXPECT_NEAR(m.W2, 3e-3, 1e-15);
+}
+
+TEST(PatchMeasures, TwoDisjointPiecesCombine) {
+  // Area-weighted centroid, union of extents.
+  const PatchMeasures m =
+      measure_polygons({rectangle(-1.0, 1.0, 0.0, 1.0), rectangle(-2.0, 2.0, 3.0, 4.0)}, 0.5);
+  EXPECT_NEAR(m.area, 6.0, 1e-14);
+  EXPECT_NEAR(m.centroid_y, (2.0 * 0.5 + 4.0 * 3.5) / 6.0, 1e-14);
+  EXPECT_NEAR(m.length, 4.0, 1e-14);
+  EXPECT_NEAR(m.width, 4.0, 1e-14);
+  EXPECT_NEAR(m.W1, 3.5, 1e-14);
+  EXPECT_NEAR(m.W2, 0.5, 1e-14);
+}
+
+KpPatch staircase_patch() {
+  // A lopsided patch with a gap strip inside: two pieces.
+  KpPatch p;
+  p.ds = 1e-4;
+  p.s_O = 2.2e-4;
+  const double xl[] = {1e-3, 2e-3, 3e-3, 3e-3, 2.5e-3, 0.0, 1e-3, 0.5e-3};
+  for (int j = 0; j < 8; ++j) p.strips.push_back({j * 1e-4, xl[j], 1e9 * xl[j]});
+  return p;
+}
+
+TEST(PatchMeasures, StripPathEqualsBoostGeometryOnTheOutline) {
+  const KpPatch p = staircase_patch();
+  const std::vector<PatchRing> outline = patch_outline(p);
+  ASSERT_EQ(outline.size(), 2u);
+  const PatchMeasures fast = measure_patch(p);
+  const PatchMeasures ref = measure_polygons(outline, p.s_O);
+  // Same sums in a different order: rounding only.
+  EXPECT_NEAR(fast.area, ref.area, 1e-20);
+  EXPECT_NEAR(fast.area, 2e-4 * (1 + 2 + 3 + 3 + 2.5 + 1 + 0.5) * 1e-3, 1e-20);
+  EXPECT_NEAR(fast.length, ref.length, 1e-16);
+  EXPECT_NEAR(fast.width, ref.width, 1e-16);
+  EXPECT_NEAR(fast.width, 8e-4, 1e-16);
+  EXPECT_NEAR(fast.centroid_x, ref.centroid_x, 1e-16);
+  EXPECT_NEAR(fast.centroid_y, ref.centroid_y, 1e-16);
+  EXPECT_NEAR(fast.W1, ref.W1, 1e-16);
+  EXPECT_NEAR(fast.W2, ref.W2, 1e-16);
+  EXPECT_NEAR(fast.W1, 7.5e-4 - 2.2e-4, 1e-16);
+  EXPECT_NEAR(fast.W2, 2.2e-4 + 0.5e-4, 1e-16);
+}
+
+TEST(PatchMeasures, RejectsDegenerateInput) {
+  EXPECT_THROW(measure_polygons({}, 0.0), InputError);
+  EXPECT_THROW(measure_polygons({{{0.0, 0.0}, {1.0, 0.0}}}, 0.0), InputError);
+  EXPECT_THROW(measure_polygons({{{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.0}}}, 0.0), InputError);
+  // Self-intersecting bow tie.
+  EXPECT_THROW(measure_polygons({{{0.0, 0.0}, {1.0, 1.0}, {1.0, 0.0}, {0.0, 1.0}}}, 0.5),
+               InputError);
+  KpPatch empty;
+  empty.ds = 1e-4;
+  empty.strips.push_back({0.0, 0.0, 0.0});
+  EXPECT_THROW(measure_patch(empty), InputError);
+}
+
+}  // namespace
+}  // namespace wheelwear::contactgeom

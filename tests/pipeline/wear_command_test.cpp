@@ -1,0 +1,112 @@
+// The `wheelwear wear` command: its JSON, the five-model comparison, the map file, bad input.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/run_command.hpp"
+#include "wheelwear/profiles/s1002.hpp"
+
+namespace wheelwear {
+namespace {
+
+using testing::json_number;
+using testing::run_wheelwear;
+
+const std::string kCase =
+    "wear --wheel S1002 --rail 60E1 --dy 0.002 --load 55000 --vx 1e-3 --vy 5e-4 --phi -0.1 "
+    "--V 20 --mu 0.35 --cells 30";
+
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(WearCommand, ComparesTheFiveContactModels) {
+  const auto r = run_wheelwear(kCase + " --compare --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* model : {"\"sdec\"", "\"eql\"", "\"eqe\"", "\"eqe-shifted\"", "\"hertz\""})
+    EXPECT_EQ(count(r.out, model), 1) << model;
+  const auto volume = json_number(r.out, "worn_volume_per_metre");
+  ASSERT_TRUE(volume.has_value());
+  EXPECT_GT(*volume, 0.0);
+  EXPECT_TRUE(json_number(r.out, "centroid_y_wheel").has_value());
+}
+
+// The map's depth rows integrate (times the 0.1 mm bin width) to the worn volume the command
+// reports for the same model.
+TEST(WearCommand, MapHoldsTheDepthDistributionItSummarises) {
+  const auto map = std::filesystem::temp_directory_path() /
+                   ("wheelwear_wear_map_" + std::to_string(::getpid()) + ".csv");
+  const auto r = run_wheelwear(kCase + " --json --map " + map.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream in(map);
+  std::string line;
+  double depth_sum = 0.0;
+  int tgamma_rows = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("1,sdec,depth", 0) == 0)
+      depth_sum += std::stod(line.substr(line.rfind(',') + 1));
+    if (line.rfind("1,sdec,tgamma", 0) == 0) ++tgamma_rows;
+  }
+  std::filesystem::remove(map);
+  EXPECT_EQ(tgamma_rows, 30 * 30);
+  const double volume = *json_number(r.out, "worn_volume_per_metre");
+  EXPECT_NEAR(depth_sum * 0.1e-3, volume, 1e-9 * volume);
+}
+
+// The same wheel written in millimetres and in metres wears the same: units are converted at
+// the file boundary only. (Equal to 1e-9: the two files hold the same points, rounded apart in
+// their last digit at most.)
+TEST(WearCommand, GivesTheSameWearForMillimetreAndMetreFiles) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto mm = dir / ("wheelwear_units_mm_" + std::to_string(::getpid()) + ".csv");
+  const auto m = dir / ("wheelwear_units_m_" + std::to_string(::getpid()) + ".csv");
+  {
+    std::ofstream out_mm(mm), out_m(m);
+    out_mm.precision(17);
+    out_m.precision(17);
+    out_mm << "# body: wheel\ny_mm,z_mm\n";
+    out_m << "# body: wheel\ny_m,z_m\n";
+    for (const auto& p : profiles::s1002().resample(0.2e-3)) {
+      out_mm << p.x() * 1e3 << ',' << p.y() * 1e3 << '\n';
+      out_m << p.x() << ',' << p.y() << '\n';
+    }
+  }
+  const std::string rest =
+      " --rail 60E1 --dy 0.003 --load 55000 --vx 1e-3 --phi -0.1 --V 20 --cells 30 --json";
+  const auto a = run_wheelwear("wear --wheel " + mm.string() + rest);
+  const auto b = run_wheelwear("wear --wheel " + m.string() + rest);
+  std::filesystem::remove(mm);
+  std::filesystem::remove(m);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  for (const char* key :
+       {"worn_volume_per_metre", "peak_depth_per_metre", "centroid_y_wheel", "N"}) {
+    const double va = *json_number(a.out, key), vb = *json_number(b.out, key);
+    EXPECT_NEAR(va, vb, 1e-9 * std::abs(va)) << key;
+  }
+}
+
+TEST(WearCommand, RejectsBadInput) {
+  const std::string base = "wear --dy 0 --load 55000 --vx 1e-3";
+  for (const auto& [arguments, message] : std::vector<std::pair<std::string, std::string>>{
+           {base + " --law nope", "--law nope"},
+           {base + " --model ellipse", "--model ellipse"},
+           {base + " --V -1", "--V = -1"},
+           {base + " --load -5", "load = -5"},
+           {base + " --wheel /nonexistent/wheel.prw", "nonexistent"},
+       }) {
+    const auto r = run_wheelwear(arguments);
+    EXPECT_NE(r.exit_code, 0) << arguments;
+    EXPECT_NE(r.err.find(message), std::string::npos) << arguments << " printed: " << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace wheelwear
