@@ -9,8 +9,8 @@
 #include <cmath>
 
 #include "support/csv_table.hpp"
+#include "support/reference_profiles.hpp"
 #include "wheelwear/input_error.hpp"
-#include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 
@@ -18,21 +18,8 @@ namespace wheelwear::contactgeom {
 namespace {
 
 using testing::CsvTable;
+using testing::benchmark_pair;
 using testing::test_data;
-
-profiles::Profile load(const char* file, profiles::Body body) {
-  profiles::LoadOptions options;
-  options.read.body = body;
-  return profiles::load_profile(test_data(std::string("contact/profiles/") + file), options)
-      .profile;
-}
-
-// The Manchester-benchmark profiles CONTACT used; the rail file is already canted 1:40.
-const WheelRailPair& benchmark_pair() {
-  static const WheelRailPair pair(load("MBench_S1002_v3.prw", profiles::Body::wheel),
-                                  load("MBench_UIC60_v3.prr", profiles::Body::rail));
-  return pair;
-}
 
 struct Bounds {
   double area_rel, angle, position_mm, psi;

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "support/run_command.hpp"
 #include "test_support.hpp"
 #include "wheelwear/profiles/columns_format.hpp"
 #include "wheelwear/profiles/s1002.hpp"
@@ -28,25 +29,14 @@ struct CliRun {
   std::string out, err;
 };
 
+// Through the shared runner, whose capture files are per process: ctest runs these tests in
+// parallel.
 CliRun run(const std::string& arguments) {
-  const auto dir = std::filesystem::temp_directory_path() / "wheelwear_profile_cli";
-  std::filesystem::create_directories(dir);
-  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
-  std::string command = quoted(WHEELWEAR_EXE);
-  command += " profile " + arguments + " >" + quoted(out) + " 2>" + quoted(err);
-  const int raw = std::system(command.c_str());
-  CliRun result;
-  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  result.out = testing::read_text(out);
-  result.err = testing::read_text(err);
-  return result;
+  const auto r = wheelwear::testing::run_wheelwear("profile " + arguments);
+  return {r.exit_code, r.out, r.err};
 }
 
-std::optional<double> json_number(const std::string& json, const std::string& key) {
-  const auto at = json.find("\"" + key + "\": ");
-  if (at == std::string::npos) return std::nullopt;
-  return std::strtod(json.c_str() + at + key.size() + 4, nullptr);
-}
+using wheelwear::testing::json_number;
 
 TEST(ProfileCommand, HelpNamesTheOptions) {
   const CliRun r = run("--help");

@@ -9,8 +9,8 @@
 #include <map>
 
 #include "support/csv_table.hpp"
+#include "support/reference_profiles.hpp"
 #include "wheelwear/contactgeom/wheel_rail.hpp"
-#include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/wear/contact_model.hpp"
 #include "wheelwear/wear/fastsim.hpp"
 
@@ -18,14 +18,8 @@ namespace wheelwear::wear {
 namespace {
 
 using testing::CsvTable;
+using testing::benchmark_pair;
 using testing::test_data;
-
-profiles::Profile load(const char* file, profiles::Body body) {
-  profiles::LoadOptions options;
-  options.read.body = body;
-  return profiles::load_profile(test_data(std::string("contact/profiles/") + file), options)
-      .profile;
-}
 
 // Lateral centroid and peak of a distribution of frictional power over lateral positions.
 struct Location {
@@ -70,8 +64,7 @@ std::map<double, double> model_power(ContactModel model, const contactgeom::Whee
 }
 
 TEST(WearVersusContact, FrictionalWorkLandsWhereExactTheoryPutsIt) {
-  const contactgeom::WheelRailPair pair(load("MBench_S1002_v3.prw", profiles::Body::wheel),
-                                        load("MBench_UIC60_v3.prr", profiles::Body::rail));
+  const contactgeom::WheelRailPair& pair = benchmark_pair();
   const CsvTable patches(test_data("contact/d_wheelrail_patches_dx0.2.csv"));
   const CsvTable rows(test_data("contact/d_wheelrail_rows_dx0.2.csv"));
   std::map<ContactModel, double> total_error;

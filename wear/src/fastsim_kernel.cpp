@@ -107,9 +107,7 @@ MarchTotals march(const StripGrid& grid, const Creepages& creepages, const Flexi
     totals.Mz += dx[j] * (sum_xpy[j] - grid.y_at_o[j] * sum_px[j]);
     slip_count += slips[j];
   }
-  totals.Fx *= grid.dy;
-  totals.Fy *= grid.dy;
-  totals.Mz *= grid.dy;
+  totals.scale_by_strip_width(grid.dy);
   totals.slip_cells = static_cast<int>(slip_count);
   return totals;
 }
@@ -119,15 +117,7 @@ MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
                               CellFields& fields) {
   const int nx = grid.nx;
   const int ny = grid.ny;
-  const auto cells = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
-  fields.nx = nx;
-  fields.ny = ny;
-  fields.dy = grid.dy;
-  fields.dx.assign(static_cast<std::size_t>(ny), 0.0);
-  for (auto* v :
-       {&fields.x, &fields.y, &fields.px, &fields.py, &fields.sx, &fields.sy, &fields.work})
-    v->assign(cells, 0.0);
-  fields.slip.assign(cells, 0);
+  prepare_fields(fields, nx, ny, grid.dy);
 
   const bool parabolic = bound.kind == TractionBound::parabolic;
   MarchTotals totals;
@@ -180,11 +170,20 @@ MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
     totals.Mz += dx * (sum_xpy - grid.y_at_o[j] * sum_px);
     totals.work += dx * work;
   }
-  totals.Fx *= grid.dy;
-  totals.Fy *= grid.dy;
-  totals.Mz *= grid.dy;
-  totals.work *= grid.dy;
+  totals.scale_by_strip_width(grid.dy);
   return totals;
+}
+
+void prepare_fields(CellFields& fields, int nx, int ny, double dy) {
+  const auto cells = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
+  fields.nx = nx;
+  fields.ny = ny;
+  fields.dy = dy;
+  fields.dx.assign(static_cast<std::size_t>(ny), 0.0);
+  for (auto* v : {&fields.x, &fields.y, &fields.px, &fields.py, &fields.sx, &fields.sy,
+                  &fields.work})
+    v->assign(cells, 0.0);
+  fields.slip.assign(cells, 0);
 }
 
 }  // namespace wheelwear::wear::detail

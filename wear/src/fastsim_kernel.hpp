@@ -44,7 +44,19 @@ struct MarchTotals {
   double Fx = 0.0, Fy = 0.0, Mz = 0.0;  // Mz about O
   int slip_cells = 0;
   double work = 0.0;  // sum of |p||s| dA [N], only when fields are filled
+
+  // Strip sums carry dx; the strip width dy multiplies them all at the end.
+  void scale_by_strip_width(double dy) {
+    Fx *= dy;
+    Fy *= dy;
+    Mz *= dy;
+    work *= dy;
+  }
 };
+
+/// Sizes and zeroes the per-cell fields for an nx x ny grid of strip width dy (keeping their
+/// storage).
+void prepare_fields(CellFields& fields, int nx, int ny, double dy);
 
 /// Marches every strip from its leading to its trailing edge (Kalker 1982): forces only.
 MarchTotals march(const StripGrid& grid, const Creepages& creepages, const Flexibilities& flex,

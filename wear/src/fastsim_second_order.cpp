@@ -217,17 +217,7 @@ MarchTotals march_second_order(const StripGrid& grid, const Creepages& creepages
                                CellFields* fields) {
   const int nx = grid.nx;
   const int ny = grid.ny;
-  if (fields) {
-    const auto cells = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
-    fields->nx = nx;
-    fields->ny = ny;
-    fields->dy = grid.dy;
-    fields->dx.assign(static_cast<std::size_t>(ny), 0.0);
-    for (auto* v : {&fields->x, &fields->y, &fields->px, &fields->py, &fields->sx, &fields->sy,
-                    &fields->work})
-      v->assign(cells, 0.0);
-    fields->slip.assign(cells, 0);
-  }
+  if (fields) prepare_fields(*fields, nx, ny, grid.dy);
 
   thread_local std::vector<StripMarch> strips;
   strips.assign(static_cast<std::size_t>(ny), StripMarch{});
@@ -271,10 +261,7 @@ MarchTotals march_second_order(const StripGrid& grid, const Creepages& creepages
     totals.work += s.dx * s.work;
     totals.slip_cells += s.slip_cells;
   }
-  totals.Fx *= grid.dy;
-  totals.Fy *= grid.dy;
-  totals.Mz *= grid.dy;
-  totals.work *= grid.dy;
+  totals.scale_by_strip_width(grid.dy);
   return totals;
 }
 

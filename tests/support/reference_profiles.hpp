@@ -1,0 +1,27 @@
+#pragma once
+// The Manchester-benchmark S1002 wheel and UIC60 rail (canted 1:40 in the file) that CONTACT's
+// wheel/rail reference results were computed with (tests/data/contact/profiles).
+
+#include <string>
+
+#include "support/csv_table.hpp"
+#include "wheelwear/contactgeom/wheel_rail.hpp"
+#include "wheelwear/profiles/profile_loader.hpp"
+
+namespace wheelwear::testing {
+
+inline profiles::Profile load_reference_profile(const std::string& file, profiles::Body body) {
+  profiles::LoadOptions options;
+  options.read.body = body;
+  return profiles::load_profile(test_data("contact/profiles/" + file), options).profile;
+}
+
+/// The pair of CONTACT's set d, built once.
+inline const contactgeom::WheelRailPair& benchmark_pair() {
+  static const contactgeom::WheelRailPair pair(
+      load_reference_profile("MBench_S1002_v3.prw", profiles::Body::wheel),
+      load_reference_profile("MBench_UIC60_v3.prr", profiles::Body::rail));
+  return pair;
+}
+
+}  // namespace wheelwear::testing
