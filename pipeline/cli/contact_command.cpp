@@ -46,8 +46,10 @@ std::string patch_json(const contactgeom::WheelRailPatch& p, const ContactArgs& 
   }
   if (args.creep) {
     const wear::TangentialSolution s =
-        wear::fastsim(wear::FastsimMethod::sdec, p.sdec, args.in.creepages,
+        wear::fastsim(wear::FastsimMethod::sdec, p.sdec, args.in.creepages_at(p),
                       {p.normal_force, args.in.mu}, args.in.material());
+    const wear::Creepages c = args.in.creepages_at(p);
+    o.add("vx", c.vx).add("vy", c.vy).add("phi", c.phi);
     o.add("Fx", s.forces.Fx).add("Fy", s.forces.Fy).add("Mz", s.forces.Mz);
   }
   return o.str();

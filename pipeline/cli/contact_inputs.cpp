@@ -37,6 +37,24 @@ void add_contact_options(CLI::App* cmd, ContactInputs& in) {
   cmd->add_option("--phi", in.creepages.phi, "spin creepage at each patch's O [1/m]")
       ->capture_default_str();
   cmd->add_option("--mu", in.mu, "friction coefficient [-]")->capture_default_str();
+  cmd->add_option("--V", in.motion.speed, "forward speed of the wheelset [m/s]")
+      ->capture_default_str();
+  cmd->add_flag("--kinematic", in.kinematic,
+                "creepages at each O from the wheelset's motion (--V, --lateral-velocity,\n"
+                "--yaw-rate, --omega and --yaw) instead of --vx --vy --phi");
+  cmd->add_option("--lateral-velocity", in.motion.lateral_velocity,
+                  "lateral velocity [m/s], + towards this wheel's flange")
+      ->capture_default_str();
+  cmd->add_option("--yaw-rate", in.motion.yaw_rate, "yaw rate [rad/s], + when this wheel leads")
+      ->capture_default_str();
+  cmd->add_option("--omega", in.motion.angular_velocity,
+                  "wheel spin about the axle [rad/s]; 0: free rolling on the nominal radius")
+      ->capture_default_str();
+}
+
+wear::Creepages ContactInputs::creepages_at(const contactgeom::WheelRailPatch& patch) const {
+  if (!kinematic) return creepages;
+  return contactgeom::kinematic_creepages(patch, pose, motion, wheel_radius);
 }
 
 SolvedContact solve_contact(const ContactInputs& in) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "wheelwear/contactgeom/kinematics.hpp"
 #include "wheelwear/contactgeom/wheel_rail.hpp"
 #include "wheelwear/wear/creep_types.hpp"
 
@@ -28,7 +29,12 @@ struct ContactInputs {
   double strip_width = 0.1e-3;
   double epsilon = 0.55;
   wear::Creepages creepages;
+  bool kinematic = false;  // creepages from the motion below instead
+  contactgeom::WheelsetMotion motion{20.0, 0.0, 0.0, 0.0, 0.75};
   double mu = 0.3;
+
+  /// The creepages at O of `patch`: given directly, or from the wheelset's motion.
+  wear::Creepages creepages_at(const contactgeom::WheelRailPatch& patch) const;
 
   /// Combined shear modulus G = E / (2 (1 + nu)) [Pa] and nu.
   wear::Material material() const { return {E / (2.0 * (1.0 + nu)), nu}; }

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,8 @@ namespace {
 
 struct WearArgs {
   ContactInputs in;
-  double speed = 20.0;
   std::string law = "usfd";
+  std::string law_table;
   std::string model = "sdec";
   bool compare = false;
   int cells = 50;
@@ -54,8 +55,8 @@ ModelWear wear_of(const WearArgs& args, const contactgeom::WheelRailPatch& p,
   options.nx = options.ny = args.cells;
   options.cell_fields = true;
   ModelWear out{model,
-                wear::fastsim(mp.method, mp.region, args.in.creepages, {p.normal_force, args.in.mu},
-                              args.in.material(), options),
+                wear::fastsim(mp.method, mp.region, args.in.creepages_at(p),
+                              {p.normal_force, args.in.mu}, args.in.material(), options),
                 {},
                 {}};
   // A grid on the wheel wide enough for every model's region around O, 0.1 mm bins.
@@ -63,8 +64,8 @@ ModelWear wear_of(const WearArgs& args, const contactgeom::WheelRailPatch& p,
   const double ds = 0.1e-3;
   const auto bins = static_cast<std::size_t>(2.0 * reach / ds) + 1;
   out.distribution = wear::WearDistribution::zeros(p.s_wheel - reach, ds, bins);
-  wear::accumulate_wear(*out.solution.fields, args.speed, law, {p.s_wheel, p.rolling_radius}, 1.0,
-                        out.distribution);
+  wear::accumulate_wear(*out.solution.fields, args.in.motion.speed, law,
+                        {p.s_wheel, p.rolling_radius}, 1.0, out.distribution);
   out.summary = wear::summarise(out.distribution);
   return out;
 }
@@ -118,11 +119,18 @@ void write_map(const std::string& path, const std::vector<std::vector<ModelWear>
 }
 
 void run_wear(const WearArgs& args) {
-  require(args.speed > 0.0 && std::isfinite(args.speed), "--V", args.speed,
-          "the rolling speed must be positive (m/s)");
+  require(args.in.motion.speed > 0.0 && std::isfinite(args.in.motion.speed), "--V",
+          args.in.motion.speed, "the rolling speed must be positive (m/s)");
   require(args.cells >= 2 && args.cells <= 1000, "--cells", args.cells,
           "FASTSIM cells per direction must lie in 2 ... 1000");
-  const auto law = wear::default_wear_law(args.law);
+  std::optional<wear::WearLaw> law;
+  if (!args.law_table.empty()) {
+    // A user's own table of the law's kind: T gamma regimes, or an Archard wear map.
+    if (args.law == "usfd") law = wear::TgammaLaw::load_csv(args.law_table);
+    if (args.law == "archard") law = wear::ArchardLaw::load_csv(args.law_table);
+  } else {
+    law = wear::default_wear_law(args.law);
+  }
   if (!law) throw InputError("--law " + args.law + ": unknown wear law; use usfd or archard");
   const auto chosen = wear::parse_contact_model(args.model);
   if (!chosen) {
@@ -174,14 +182,12 @@ void run_wear(const WearArgs& args) {
     pipeline::JsonObject out;
     out.add("status", contactgeom::status_name(contact.status))
         .add("law", args.law)
-        .add("V", args.speed)
+        .add("V", args.in.motion.speed)
         .add_raw("patches", pipeline::json_array(patches));
     std::cout << out.str() << '\n';
     return;
   }
-  std::printf("wear law %s, V = %g m/s, creepages vx %g, vy %g, phi %g 1/m at each O\n",
-              args.law.c_str(), args.speed, args.in.creepages.vx, args.in.creepages.vy,
-              args.in.creepages.phi);
+  std::printf("wear law %s, V = %g m/s\n", args.law.c_str(), args.in.motion.speed);
   for (std::size_t k = 0; k < per_patch.size(); ++k) {
     const auto& p = contact.patches[k];
     std::printf("patch %zu: N %.5g N, O at %.2f mm on the wheel (+ towards the flange)\n", k + 1,
@@ -211,9 +217,11 @@ void add_wear_command(CLI::App& app) {
       "O), eqe-shifted (ellipse at O'), hertz (Hertz ellipse from the curvatures at O).\n"
       "Example: wheelwear wear --dy 0.004 --load 55000 --vx 1e-3 --phi 0.1 --V 20 --compare");
   add_contact_options(cmd, args->in);
-  cmd->add_option("--V", args->speed, "rolling speed [m/s]")->capture_default_str();
   cmd->add_option("--law", args->law, "wear law: usfd (T gamma) or archard (KTH map)")
       ->capture_default_str();
+  cmd->add_option("--law-table", args->law_table,
+                  "your own table for the law (CSV, the format of data/wear/usfd.csv for usfd,\n"
+                  "data/wear/archard.csv for archard)");
   cmd->add_option("--model", args->model, "contact model: sdec, eql, eqe, eqe-shifted, hertz")
       ->capture_default_str();
   cmd->add_flag("--compare", args->compare, "all five contact models side by side");

@@ -93,6 +93,20 @@ TEST(WearCommand, GivesTheSameWearForMillimetreAndMetreFiles) {
   }
 }
 
+// A user's own table: the shipped USFD table read from its file wears exactly as the built-in
+// law; a table of the other kind is refused with the file and line named.
+TEST(WearCommand, TakesTheUsersOwnWearTable) {
+  const std::string table = std::string(WHEELWEAR_TEST_DATA) + "/../../data/wear/usfd.csv";
+  const auto builtin = run_wheelwear(kCase + " --json");
+  const auto from_file = run_wheelwear(kCase + " --json --law-table " + table);
+  ASSERT_EQ(from_file.exit_code, 0) << from_file.err;
+  EXPECT_EQ(json_number(builtin.out, "worn_volume_per_metre"),
+            json_number(from_file.out, "worn_volume_per_metre"));
+  const auto wrong = run_wheelwear(kCase + " --law archard --law-table " + table);
+  EXPECT_NE(wrong.exit_code, 0);
+  EXPECT_NE(wrong.err.find("usfd.csv:"), std::string::npos) << wrong.err;
+}
+
 TEST(WearCommand, RejectsBadInput) {
   const std::string base = "wear --dy 0 --load 55000 --vx 1e-3";
   for (const auto& [arguments, message] : std::vector<std::pair<std::string, std::string>>{

@@ -7,13 +7,14 @@ namespace wheelwear::wear::detail {
 
 namespace {
 
-// Scratch arrays of the forces-only march, kept per thread so that a call allocates nothing
-// once the grid size has been seen.
+// Per-strip arrays of the marches, kept per thread so that a call allocates nothing once the
+// grid size has been seen.
 struct Scratch {
-  std::vector<double> dx, step_x, step_y, step_y_change, t, px, py, sum_px, sum_py, sum_xpy, slips;
+  std::vector<double> dx, step_x, step_y, step_y_change, t, px, py, sum_px, sum_py, sum_xpy, slips,
+      work;
   void resize(int n) {
-    for (auto* v :
-         {&dx, &step_x, &step_y, &step_y_change, &t, &px, &py, &sum_px, &sum_py, &sum_xpy, &slips})
+    for (auto* v : {&dx, &step_x, &step_y, &step_y_change, &t, &px, &py, &sum_px, &sum_py, &sum_xpy,
+                    &slips, &work})
       v->assign(static_cast<std::size_t>(n), 0.0);
   }
 };
@@ -118,58 +119,76 @@ MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
   const int nx = grid.nx;
   const int ny = grid.ny;
   prepare_fields(fields, nx, ny, grid.dy);
-
-  const bool parabolic = bound.kind == TractionBound::parabolic;
-  MarchTotals totals;
+  thread_local Scratch scratch;
+  scratch.resize(ny);
+  double* __restrict px = scratch.px.data();
+  double* __restrict py = scratch.py.data();
+  double* __restrict sum_px = scratch.sum_px.data();
+  double* __restrict sum_py = scratch.sum_py.data();
+  double* __restrict sum_xpy = scratch.sum_xpy.data();
+  double* __restrict work = scratch.work.data();
+  double* __restrict step_x = scratch.step_x.data();
+  double* __restrict dx = scratch.dx.data();
   for (int j = 0; j < ny; ++j) {
-    const double xl = grid.x_lead[j];
-    const double dx = 2.0 * xl / nx;
-    fields.dx[j] = dx;
-    const double step_x =
-        -dx * (creepages.vx * flex.inv_l11 - creepages.phi * grid.y_spin[j] * flex.inv_l13);
-    double px = 0.0, py = 0.0, sum_px = 0.0, sum_py = 0.0, sum_xpy = 0.0, work = 0.0;
+    dx[j] = 2.0 * grid.x_lead[j] / nx;
+    fields.dx[j] = dx[j];
+    step_x[j] =
+        -dx[j] * (creepages.vx * flex.inv_l11 - creepages.phi * grid.y_spin[j] * flex.inv_l13);
+  }
+
+  // Cell by cell across a block of strips: the strips' chains are independent, so the
+  // processor overlaps them (the saturation is branch-free), while the block keeps the rows
+  // being written few enough to stay in the L1 cache.
+  const bool parabolic = bound.kind == TractionBound::parabolic;
+  constexpr int kBlock = 8;
+  for (int j0 = 0; j0 < ny; j0 += kBlock) {
+    const int j1 = std::min(ny, j0 + kBlock);
     for (int i = 0; i < nx; ++i) {
-      const double t = (i + 1) * dx;
-      const double x_node = xl - t;
-      const double x_mid = x_node + 0.5 * dx;
-      const double trial_x = px + step_x;
-      const double trial_y =
-          py - dx * (creepages.vy * flex.inv_l22 + creepages.phi * x_mid * flex.inv_l23);
-      const double q = std::max(t * (2.0 * xl - t), 0.0);
-      const double g = bound.coefficient * (parabolic ? q : std::sqrt(q));
-      const double ratio = bound_ratio(trial_x, trial_y, g);
-      const bool slipping = ratio < 1.0;
-      const double scale = std::min(1.0, ratio);
-      px = trial_x * scale;
-      py = trial_y * scale;
-      const std::size_t c = static_cast<std::size_t>(j) * nx + i;
-      fields.x[c] = x_mid;
-      fields.y[c] = grid.y_at_o[j];
-      fields.px[c] = px;
-      fields.py[c] = py;
-      if (slipping) {
+      for (int j = j0; j < j1; ++j) {
+        const double xl = grid.x_lead[j];
+        const double t = (i + 1) * dx[j];
+        const double x_node = xl - t;
+        const double x_mid = x_node + 0.5 * dx[j];
+        const double trial_x = px[j] + step_x[j];
+        const double trial_y =
+            py[j] - dx[j] * (creepages.vy * flex.inv_l22 + creepages.phi * x_mid * flex.inv_l23);
+        const double q = std::max(t * (2.0 * xl - t), 0.0);
+        const double g = bound.coefficient * (parabolic ? q : std::sqrt(q));
+        const double ratio = bound_ratio(trial_x, trial_y, g);
+        const double scale = std::min(1.0, ratio);
+        px[j] = trial_x * scale;
+        py[j] = trial_y * scale;
         // Simplified theory u = L p: the part of the trial traction the bound removes is the
         // elastic displacement released by slip over this cell, s = L (p - p_trial)/dx, and
-        // p - p_trial = (scale - 1) p_trial keeps s exactly opposite to p.
-        const double release = flex.effective * (scale - 1.0) / dx;
-        const double sx = release * trial_x;
-        const double sy = release * trial_y;
-        fields.sx[c] = sx;
-        fields.sy[c] = sy;
-        fields.work[c] = std::sqrt((px * px + py * py) * (sx * sx + sy * sy));
-        fields.slip[c] = 1;
-        ++totals.slip_cells;
-        work += fields.work[c];
+        // p - p_trial = (scale - 1) p_trial keeps s exactly opposite to p; |p||s| follows
+        // without a square root. Adhering cells get (scale - 1) = 0: no slip, no work.
+        const double release = flex.effective * (scale - 1.0) / dx[j];
+        const double trial2 = trial_x * trial_x + trial_y * trial_y;
+        const std::size_t c = static_cast<std::size_t>(j) * nx + i;
+        fields.x[c] = x_mid;
+        fields.y[c] = grid.y_at_o[j];
+        fields.px[c] = px[j];
+        fields.py[c] = py[j];
+        fields.sx[c] = release * trial_x;
+        fields.sy[c] = release * trial_y;
+        fields.work[c] = -release * scale * trial2;
+        fields.slip[c] = ratio < 1.0 ? 1 : 0;
+        work[j] += fields.work[c];
+        sum_px[j] += px[j];
+        sum_py[j] += py[j];
+        sum_xpy[j] += x_node * py[j];
       }
-      sum_px += px;
-      sum_py += py;
-      sum_xpy += x_node * py;
     }
-    totals.Fx += dx * sum_px;
-    totals.Fy += dx * sum_py;
-    totals.Mz += dx * (sum_xpy - grid.y_at_o[j] * sum_px);
-    totals.work += dx * work;
   }
+
+  MarchTotals totals;
+  for (int j = 0; j < ny; ++j) {
+    totals.Fx += dx[j] * sum_px[j];
+    totals.Fy += dx[j] * sum_py[j];
+    totals.Mz += dx[j] * (sum_xpy[j] - grid.y_at_o[j] * sum_px[j]);
+    totals.work += dx[j] * work[j];
+  }
+  for (const std::uint8_t slipping : fields.slip) totals.slip_cells += slipping;
   totals.scale_by_strip_width(grid.dy);
   return totals;
 }
@@ -180,8 +199,8 @@ void prepare_fields(CellFields& fields, int nx, int ny, double dy) {
   fields.ny = ny;
   fields.dy = dy;
   fields.dx.assign(static_cast<std::size_t>(ny), 0.0);
-  for (auto* v : {&fields.x, &fields.y, &fields.px, &fields.py, &fields.sx, &fields.sy,
-                  &fields.work})
+  for (auto* v :
+       {&fields.x, &fields.y, &fields.px, &fields.py, &fields.sx, &fields.sy, &fields.work})
     v->assign(cells, 0.0);
   fields.slip.assign(cells, 0);
 }
