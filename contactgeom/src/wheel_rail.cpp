@@ -25,7 +25,10 @@ profiles::Profile rolled(const profiles::Profile& wheel, double roll) {
     const double y = p.x(), z = p.y() - z0;  // a Point holds (y, z)
     p = profiles::Point(c * y - s * z, s * y + c * z + z0);
   }
-  return profiles::Profile(points, wheel.info(), wheel.curve_options());
+  // The points are already smooth: interpolate them, do not smooth a second time.
+  profiles::CurveOptions curve = wheel.curve_options();
+  curve.smoothing_length = 0.0;
+  return profiles::Profile(points, wheel.info(), curve);
 }
 
 // The gap sampled on uniform lateral windows of the rail frame where contact is possible.
@@ -36,7 +39,7 @@ struct GapSamples {
   std::vector<double> z_wheel;  // wheel surface height (wheel frame) [m]
   std::vector<int> window;      // index of the window a sample belongs to
   double h_min = kInf;
-  bool touches_end = false;  // a window reaches the end of a profile
+  std::vector<std::size_t> end_samples;  // samples that lie at the end of a profile
 };
 
 class Geometry {
@@ -89,8 +92,9 @@ class Geometry {
       while (end + 1 < coarse && hc[end + 1] < hc_min + options_.scan_margin) ++end;
       const double from = std::max(lo, lo + (i - 1) * options_.scan_spacing);
       const double to = std::min(hi, lo + (end + 1) * options_.scan_spacing);
-      if (i == 0 || end == coarse - 1) g.touches_end = true;
+      const bool low_end = i == 0, high_end = end == coarse - 1;
       ++window;
+      const std::size_t first = g.h.size();
       for (double y = from; y <= to; y += g.dy) {
         const auto v = gap(y);
         if (!v) continue;
@@ -100,6 +104,9 @@ class Geometry {
         g.window.push_back(window);
         g.h_min = std::min(g.h_min, v->first);
       }
+      // A contact that reaches these samples is cut off by the end of a profile.
+      if (low_end && g.h.size() > first) g.end_samples.push_back(first);
+      if (high_end && g.h.size() > first) g.end_samples.push_back(g.h.size() - 1);
       i = end + 1;
     }
   }
@@ -268,6 +275,9 @@ void WheelRailPair::validate() const {
   require(youngs_modulus > 0.0, "E", youngs_modulus, "Young's modulus must be positive (Pa)");
   require(poisson >= 0.0 && poisson < 0.5, "nu", poisson, "Poisson's ratio must lie in [0, 0.5)");
   require_finite("flange_back_y", flange_back_y);
+  require(wheel.surface_at(0.0).has_value(), "wheel profile", wheel.y_min(),
+          "the wheel profile must contain its taping line y = 0, where the rolling radius is "
+          "wheel_radius (the value is its smallest y)");
 }
 
 void WheelRailOptions::validate() const {
@@ -289,6 +299,10 @@ const char* status_name(WheelRailStatus status) {
       return "flange climb";
     case WheelRailStatus::not_converged:
       return "not converged";
+    case WheelRailStatus::load_jump:
+      return "load jump";
+    case WheelRailStatus::profile_end:
+      return "profile end";
   }
   return "unknown";
 }
@@ -408,12 +422,20 @@ WheelRailContact solve_wheel_rail(const WheelRailPair& pair, const WheelsetPose&
   result.lateral_force = e.lateral;
   result.approach = d;
   result.status = WheelRailStatus::ok;
+  bool at_profile_end = false;
+  for (const Run& run : interpenetration_runs(g, g.h_min + d, options.kp.epsilon))
+    for (std::size_t k : g.end_samples) at_profile_end |= (k == run.first || k == run.last);
   if (at_jump) {
+    result.status = WheelRailStatus::load_jump;
     result.message = "the vertical force jumps at this approach (contact regions merge); it is " +
                      std::to_string(e.vertical) + " N";
   } else if (std::abs(e.vertical / vertical_force - 1.0) > 1e-6) {
     result.status = WheelRailStatus::not_converged;
     result.message = "the vertical force iteration stopped at " + std::to_string(e.vertical) + " N";
+  } else if (at_profile_end) {
+    result.status = WheelRailStatus::profile_end;
+    result.message = "the contact reaches the end of a profile at dy = " + std::to_string(pose.dy) +
+                     " m: the profiles do not cover this position";
   } else if (e.steepest > options.max_contact_angle) {
     result.status = WheelRailStatus::flange_climb;
     result.message = "contact angle " + std::to_string(e.steepest) +

@@ -84,10 +84,19 @@ void run_contact(const ContactArgs& args) {
           p.measures.area * 1e6, p.measures.length * 1e3, p.measures.width * 1e3,
           p.measures.W1 * 1e3, p.measures.W2 * 1e3, p.pmax * 1e-6, p.sdec.a * 1e3, p.sdec.b * 1e3,
           p.sdec.psi);
+      if (args.creep) {
+        const wear::Creepages c = args.in.creepages_at(p);
+        const wear::CreepForces f = wear::fastsim(wear::FastsimMethod::sdec, p.sdec, c,
+                                                  {p.normal_force, args.in.mu}, args.in.material())
+                                        .forces;
+        std::printf("  creepages vx %.4g, vy %.4g, phi %.4g 1/m: Fx %.6g N, Fy %.6g N\n", c.vx,
+                    c.vy, c.phi, f.Fx, f.Fy);
+      }
     }
   }
   if (contact.status == contactgeom::WheelRailStatus::no_contact ||
-      contact.status == contactgeom::WheelRailStatus::not_converged) {
+      contact.status == contactgeom::WheelRailStatus::not_converged ||
+      contact.status == contactgeom::WheelRailStatus::profile_end) {
     throw std::runtime_error(std::string("contact ") + contactgeom::status_name(contact.status) +
                              (contact.message.empty() ? "" : ": " + contact.message));
   }

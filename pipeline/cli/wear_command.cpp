@@ -91,7 +91,7 @@ void write_map(const std::string& path, const std::vector<std::vector<ModelWear>
   const std::filesystem::path target(path);
   std::filesystem::path partial = target;
   partial += ".partial";
-  {
+  try {
     std::ofstream out(partial);
     if (!out) throw InputError("--map " + path + ": cannot write there");
     out << "# wheelwear wear map. kind=tgamma: frictional work density per metre rolled [J/m^2/m]"
@@ -114,8 +114,12 @@ void write_map(const std::string& path, const std::vector<std::vector<ModelWear>
       }
     }
     if (!out) throw std::runtime_error("--map " + path + ": write failed");
+    out.close();
+    std::filesystem::rename(partial, target);
+  } catch (...) {
+    std::filesystem::remove(partial);  // an existing map stays as it was
+    throw;
   }
-  std::filesystem::rename(partial, target);
 }
 
 void run_wear(const WearArgs& args) {
@@ -140,10 +144,12 @@ void run_wear(const WearArgs& args) {
   const SolvedContact solved = solve_contact(args.in);
   const auto& contact = solved.contact;
   if (contact.status == contactgeom::WheelRailStatus::no_contact ||
-      contact.status == contactgeom::WheelRailStatus::not_converged) {
+      contact.status == contactgeom::WheelRailStatus::not_converged ||
+      contact.status == contactgeom::WheelRailStatus::profile_end) {
     throw std::runtime_error(std::string("contact ") + contactgeom::status_name(contact.status) +
                              ": " + contact.message);
   }
+  if (!contact.message.empty()) std::cerr << "wheelwear: warning: " << contact.message << '\n';
   const profiles::Profile& wheel = solved.pair.wheel;
 
   std::vector<std::vector<ModelWear>> per_patch;

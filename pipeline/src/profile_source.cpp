@@ -28,7 +28,9 @@ profiles::Profile canted(const profiles::Profile& rail, double angle) {
   }
   profiles::ProfileInfo info = rail.info();
   info.name += " canted";
-  return profiles::Profile(points, info, rail.curve_options());
+  profiles::CurveOptions curve = rail.curve_options();
+  curve.smoothing_length = 0.0;  // the points are already smooth: no second smoothing
+  return profiles::Profile(points, info, curve);
 }
 
 }  // namespace

@@ -113,16 +113,22 @@ void write_group(H5::H5File& file, const std::string& root, const GroupRecord& g
 template <class Change>
 void change_atomically(const fs::path& path, Change change) {
   const fs::path partial = partial_path(path);
-  fs::copy_file(path, partial, fs::copy_options::overwrite_existing);
   try {
-    H5::H5File file(partial.string(), H5F_ACC_RDWR);
-    change(file);
-    file.close();
-  } catch (...) {
+    fs::copy_file(path, partial, fs::copy_options::overwrite_existing);
+    {
+      H5::H5File file(partial.string(), H5F_ACC_RDWR);
+      change(file);
+      file.close();
+    }
+    publish(partial, path);
+  } catch (const H5::Exception& error) {
+    // H5::Exception is not a std::exception: translate it, naming the file.
     fs::remove(partial);
+    throw std::runtime_error("cannot update " + path.string() + ": " + error.getDetailMsg());
+  } catch (...) {
+    fs::remove(partial);  // FILE keeps its last published state
     throw;
   }
-  publish(partial, path);
 }
 
 }  // namespace

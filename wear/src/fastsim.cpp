@@ -25,11 +25,15 @@ constexpr std::array<std::pair<FastsimMethod, std::string_view>, 5> kNames = {{
     {FastsimMethod::elliptic, "fastsim-elliptic"},
 }};
 
-// Kalker's (1982) creepage-weighted single flexibility, used to turn excess traction into slip.
+// A single flexibility that turns excess traction into slip: the three flexibilities weighted
+// by the squares of their creepages (a convex combination, after Kalker's 1982 weighting by
+// magnitudes, whose weights add up to more than 1 for combined creepages and inflate the
+// slip by up to sqrt(3)). Exact for a single creepage.
 double weighted_flexibility(const Creepages& v, double c, double l11, double l22, double l23) {
-  const double norm = std::sqrt(v.vx * v.vx + v.vy * v.vy + c * c * v.phi * v.phi);
-  if (norm == 0.0) return l11;
-  return (std::abs(v.vx) * l11 + std::abs(v.vy) * l22 + c * std::abs(v.phi) * l23) / norm;
+  const double wx = v.vx * v.vx, wy = v.vy * v.vy, wphi = c * c * v.phi * v.phi;
+  const double total = wx + wy + wphi;
+  if (total == 0.0) return l11;
+  return (wx * l11 + wy * l22 + wphi * l23) / total;
 }
 
 // Flexibilities of Eq. 17 from the coefficients C11, C22, C23 (possibly the SDEC ones) and K13.
@@ -67,6 +71,8 @@ void fill_strips(detail::StripGrid& grid, const contactgeom::Sdec& region, doubl
 void FastsimOptions::validate() const {
   require(nx >= 1 && nx <= 100000, "nx", nx, "cells per strip must lie in 1 ... 100000");
   require(ny >= 1 && ny <= 100000, "ny", ny, "strips must lie in 1 ... 100000");
+  require(static_cast<double>(nx) * ny <= 1e8, "nx*ny", static_cast<double>(nx) * ny,
+          "the grid must have at most 1e8 cells");
 }
 
 std::string_view method_name(FastsimMethod method) {

@@ -246,7 +246,7 @@ MarchTotals march_second_order(const StripGrid& grid, const Creepages& creepages
       if (cell.slipping) {
         fields->sx[c] = cell.slip.x;
         fields->sy[c] = cell.slip.y;
-        fields->work[c] = norm(s.p) * norm(cell.slip);
+        fields->work[c] = norm(cell.mean_traction) * norm(cell.slip);
         fields->slip[c] = 1;
         s.work += fields->work[c];
       }

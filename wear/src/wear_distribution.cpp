@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "wheelwear/input_error.hpp"
@@ -23,11 +24,13 @@ void strip_depths(const CellFields& cells, double speed, const WearLaw& law, Per
     const std::size_t row = static_cast<std::size_t>(j) * cells.nx;
     for (int i = 0; i < cells.nx; ++i) {
       const std::size_t c = row + i;
-      // sqrt(x^2 + y^2) rather than hypot: tractions and slips are far from overflow, and
-      // hypot's care costs more than the rest of the loop.
-      states[i] = {cells.pressure[c],
-                   std::sqrt(cells.px[c] * cells.px[c] + cells.py[c] * cells.py[c]),
-                   std::sqrt(cells.sx[c] * cells.sx[c] + cells.sy[c] * cells.sy[c]), speed};
+      // The traction that does the cell's work is its work over its slip (the scheme's mean
+      // over the cell); where a cell adheres it does no work and wears nothing.
+      const double slip = std::sqrt(cells.sx[c] * cells.sx[c] + cells.sy[c] * cells.sy[c]);
+      const double traction =
+          slip > 0.0 ? cells.work[c] / slip
+                     : std::sqrt(cells.px[c] * cells.px[c] + cells.py[c] * cells.py[c]);
+      states[i] = {cells.pressure[c], traction, slip, speed};
     }
     depths_per_passage(law, states, cells.dx[j], depth);
     double sum = 0.0;
@@ -67,7 +70,11 @@ WearSummary summarise(const WearDistribution& w) {
     sum += w.depth[k];
     if (w.depth[k] > w.depth[peak]) peak = k;
   }
-  if (sum <= 0.0) return out;
+  if (sum <= 0.0) {
+    // No wear: no position to report (NaN, written as null).
+    out.peak_s = out.centroid_s = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
   out.peak_depth = w.depth[peak];
   out.peak_s = w.s(peak);
   out.centroid_s = moment / sum;

@@ -69,7 +69,15 @@ struct WheelRailPatch {
 };
 
 /// Outcome of a wheel/rail contact evaluation.
-enum class WheelRailStatus { ok, no_contact, flange_climb, not_converged };
+enum class WheelRailStatus {
+  ok,
+  no_contact,
+  flange_climb,
+  not_converged,
+  load_jump,    ///< the load falls inside a jump of N(approach) where regions merge; the
+                ///< nearest side is reported and the vertical force misses the load
+  profile_end,  ///< the contact reaches the end of a profile: the profiles are too short
+};
 
 /// All patches of one wheel on its rail.
 struct WheelRailContact {
@@ -77,8 +85,9 @@ struct WheelRailContact {
   std::string message;                  ///< why, when status != ok
   std::vector<WheelRailPatch> patches;  ///< ordered from the field side to the gauge side
   double vertical_force = 0.0;          ///< sum of N cos(angle) [N]
-  double lateral_force = 0.0;  ///< sum of N sin(angle), + pushes the wheel to the field side [N]
-  double approach = 0.0;       ///< vertical approach beyond first touch [m]
+  double lateral_force = 0.0;           ///< sum of N sin(angle) [N], + pushes the wheel towards the
+                                        ///< gauge side (track centre), as flange contact does
+  double approach = 0.0;                ///< vertical approach beyond first touch [m]
 };
 
 /// Solves the normal contact of the wheel under a prescribed vertical force Fz [N] > 0.
