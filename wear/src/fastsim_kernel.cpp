@@ -128,6 +128,7 @@ MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
   double* __restrict sum_py = scratch.sum_py.data();
   double* __restrict sum_xpy = scratch.sum_xpy.data();
   double* __restrict work = scratch.work.data();
+  double* __restrict p_mag = scratch.t.data();  // |p| at each strip's current node
   double* __restrict step_x = scratch.step_x.data();
   double* __restrict dx = scratch.dx.data();
   for (int j = 0; j < ny; ++j) {
@@ -155,9 +156,14 @@ MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
             py[j] - dx[j] * (creepages.vy * flex.inv_l22 + creepages.phi * x_mid * flex.inv_l23);
         const double q = std::max(t * (2.0 * xl - t), 0.0);
         const double g = bound.coefficient * (parabolic ? q : std::sqrt(q));
-        const double ratio = bound_ratio(trial_x, trial_y, g);
+        // One square root per cell: |p_trial| gives the bound ratio, the end traction's
+        // magnitude (carried to the next cell as its start) and the slip's magnitude.
+        const double trial_norm =
+            std::sqrt(std::max(trial_x * trial_x + trial_y * trial_y, 1e-300));
+        const double ratio = g / trial_norm;
         const double scale = std::min(1.0, ratio);
-        const double p_start = std::sqrt(px[j] * px[j] + py[j] * py[j]);
+        const double p_start = p_mag[j];
+        p_mag[j] = scale * trial_norm;
         px[j] = trial_x * scale;
         py[j] = trial_y * scale;
         // Simplified theory u = L p: the part of the trial traction the bound removes is the
@@ -167,7 +173,6 @@ MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
         // work to second order; the end node alone underestimates it by O(1/nx) (-11 % at
         // 50). Adhering cells get (scale - 1) = 0: no slip, no work.
         const double release = flex.effective * (scale - 1.0) / dx[j];
-        const double trial_norm = std::sqrt(trial_x * trial_x + trial_y * trial_y);
         const std::size_t c = static_cast<std::size_t>(j) * nx + i;
         fields.x[c] = x_mid;
         fields.y[c] = grid.y_at_o[j];
@@ -175,8 +180,8 @@ MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
         fields.py[c] = py[j];
         fields.sx[c] = release * trial_x;
         fields.sy[c] = release * trial_y;
-        fields.work[c] = -release * trial_norm * 0.5 * (p_start + scale * trial_norm);
-        fields.slip[c] = (ratio < 1.0 && trial_norm > 0.0) ? 1 : 0;
+        fields.work[c] = -release * trial_norm * 0.5 * (p_start + p_mag[j]);
+        fields.slip[c] = (ratio < 1.0 && trial_norm > 1e-150) ? 1 : 0;
         work[j] += fields.work[c];
         sum_px[j] += px[j];
         sum_py[j] += py[j];

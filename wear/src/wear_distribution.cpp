@@ -25,12 +25,10 @@ void strip_depths(const CellFields& cells, double speed, const WearLaw& law, Per
     for (int i = 0; i < cells.nx; ++i) {
       const std::size_t c = row + i;
       // The traction that does the cell's work is its work over its slip (the scheme's mean
-      // over the cell); where a cell adheres it does no work and wears nothing.
+      // over the cell); where a cell adheres it does no work and wears nothing, so its
+      // traction may read 0 there (branch-free: the loop vectorises).
       const double slip = std::sqrt(cells.sx[c] * cells.sx[c] + cells.sy[c] * cells.sy[c]);
-      const double traction =
-          slip > 0.0 ? cells.work[c] / slip
-                     : std::sqrt(cells.px[c] * cells.px[c] + cells.py[c] * cells.py[c]);
-      states[i] = {cells.pressure[c], traction, slip, speed};
+      states[i] = {cells.pressure[c], cells.work[c] / std::max(slip, 1e-300), slip, speed};
     }
     depths_per_passage(law, states, cells.dx[j], depth);
     double sum = 0.0;
