@@ -13,12 +13,6 @@ namespace wheelwear::profiles {
 
 namespace {
 
-std::string lower(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
 std::vector<std::string> tokens_of(std::string_view line) {
   // Semicolon-separated files are the European spreadsheet export, where the comma is the
   // decimal separator.
@@ -72,7 +66,7 @@ struct ColumnName {
 };
 
 ColumnName parse_column_name(std::string_view token) {
-  std::string name = lower(trim(token));
+  std::string name = to_lower(trim(token));
   ColumnName out;
   // A unit in brackets or parentheses, or as a suffix "_mm", "_m", "/mm".
   for (const char* open : {"[", "("}) {
@@ -135,7 +129,7 @@ RawProfile parse_columns(std::string_view text, std::string_view source,
     if (line.front() == '#' || line.front() == '%' || line.front() == '!' ||
         line.substr(0, 2) == "//") {
       // wheelwear's own metadata comments: "# body: wheel", "# side: right".
-      const std::string comment = lower(trim(line.substr(line.front() == '/' ? 2 : 1)));
+      const std::string comment = to_lower(trim(line.substr(line.front() == '/' ? 2 : 1)));
       if (comment == "body: wheel") raw.body = Body::wheel;
       if (comment == "body: rail") raw.body = Body::rail;
       if (comment == "side: left") raw.side = Side::left;

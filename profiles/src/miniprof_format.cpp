@@ -12,12 +12,6 @@ namespace wheelwear::profiles {
 
 namespace {
 
-std::string lower(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
 std::vector<std::string> split_values(std::string_view line) {
   std::vector<std::string> out;
   std::string token;
@@ -47,7 +41,7 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
   bool old_layout = false;
   for (std::size_t i = 0; i < std::min<std::size_t>(3, lines.size()); ++i)
     if (lines[i].find("MINIPROF") != std::string_view::npos) old_layout = true;
-  const std::string ext = lower(extension);
+  const std::string ext = to_lower(extension);
   if (ext == ".whl" || (!lines.empty() && lines.front().rfind("#MINIWHEELPROF", 0) == 0))
     raw.body = Body::wheel;
   else if (ext == ".ban")

@@ -14,9 +14,7 @@ namespace wheelwear::profiles {
 namespace {
 
 std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
+  return to_lower(path.extension().string());
 }
 
 }  // namespace

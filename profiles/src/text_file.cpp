@@ -77,6 +77,12 @@ std::string_view trim(std::string_view text) {
   return text;
 }
 
+std::string to_lower(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
 std::optional<double> parse_number(std::string_view token) {
   if (token.empty()) return std::nullopt;
   bool negative = false;

@@ -85,8 +85,7 @@ MarchTotals march(const StripGrid& grid, const Creepages& creepages, const Flexi
     dx[j] = 2.0 * xl[j] * inv_nx;
     // Exact increments of Eq. 15 over one cell: the py slope is evaluated at the cell's
     // mid-point, where it equals the cell average.
-    step_x[j] =
-        -dx[j] * (creepages.vx * flex.inv_l11 - creepages.phi * grid.y_spin[j] * flex.inv_l13);
+    step_x[j] = dx[j] * px_rate(creepages, flex, grid.y_spin[j]);
     step_y[j] = -dx[j] * (creepages.vy * flex.inv_l22 +
                           creepages.phi * (xl[j] - 0.5 * dx[j]) * flex.inv_l23);
     step_y_change[j] = dx[j] * dx[j] * creepages.phi * flex.inv_l23;
@@ -134,8 +133,7 @@ MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
   for (int j = 0; j < ny; ++j) {
     dx[j] = 2.0 * grid.x_lead[j] / nx;
     fields.dx[j] = dx[j];
-    step_x[j] =
-        -dx[j] * (creepages.vx * flex.inv_l11 - creepages.phi * grid.y_spin[j] * flex.inv_l13);
+    step_x[j] = dx[j] * px_rate(creepages, flex, grid.y_spin[j]);
   }
 
   // Cell by cell across a block of strips: the strips' chains are independent, so the

@@ -33,6 +33,12 @@ struct Flexibilities {
   double effective = 0.0;  // single flexibility [m/Pa] that converts excess traction into slip
 };
 
+/// Rate of change of the unsaturated px along the marching distance t = x_l - x, on a strip at
+/// spin coordinate y_spin: -(vx/L11 - phi y/L13) (Eq. 15), constant along the strip.
+inline double px_rate(const Creepages& v, const Flexibilities& flex, double y_spin) {
+  return -(v.vx * flex.inv_l11 - v.phi * y_spin * flex.inv_l13);
+}
+
 /// Traction bound: parabolic coefficient * (x_l^2 - x^2), or coefficient * sqrt(x_l^2 - x^2).
 struct BoundLaw {
   TractionBound kind = TractionBound::parabolic;

@@ -225,7 +225,7 @@ MarchTotals march_second_order(const StripGrid& grid, const Creepages& creepages
     StripMarch& s = strips[j];
     s.xl = grid.x_lead[j];
     s.dx = 2.0 * s.xl / nx;
-    s.rate_x = -(creepages.vx * flex.inv_l11 - creepages.phi * grid.y_spin[j] * flex.inv_l13);
+    s.rate_x = px_rate(creepages, flex, grid.y_spin[j]);
     s.y_at_o = grid.y_at_o[j];
     if (fields) fields->dx[j] = s.dx;
   }

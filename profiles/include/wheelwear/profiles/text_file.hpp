@@ -23,6 +23,9 @@ std::vector<std::string_view> split_lines(std::string_view text);
 /// `text` without leading and trailing blanks.
 std::string_view trim(std::string_view text);
 
+/// `text` in lower case (ASCII), for case-blind keywords, headers and file extensions.
+std::string to_lower(std::string_view text);
+
 /// A decimal number (optional sign, digits, fraction, exponent; also nan and inf), the whole
 /// token and nothing else, locale-independent; nullopt otherwise.
 std::optional<double> parse_number(std::string_view token);
