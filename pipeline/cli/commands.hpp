@@ -19,4 +19,7 @@ void add_wear_command(CLI::App& app);
 /// `wheelwear profile`: generate, read, clean, resample and summarise wheel/rail profiles.
 void add_profile_command(CLI::App& app);
 
+/// `wheelwear run`: the wear-evolution run of a scene, written to an HDF5 results file.
+void add_run_command(CLI::App& app);
+
 }  // namespace wheelwear::cli

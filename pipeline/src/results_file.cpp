@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <system_error>
 
@@ -16,6 +17,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kFormatVersion = 1;
+constexpr std::size_t kCompressAbove = 4096;   // elements
+constexpr std::size_t kChunkElements = 65536;  // about 512 kB per chunk
 
 fs::path partial_path(const fs::path& path) {
   fs::path partial = path;
@@ -99,8 +102,23 @@ void write_group(H5::H5File& file, const std::string& root, const GroupRecord& g
     const H5::DataSpace space = dims.empty()
                                     ? H5::DataSpace(H5S_SCALAR)
                                     : H5::DataSpace(static_cast<int>(dims.size()), dims.data());
+    // Large arrays are chunked and compressed: per-state summaries and maps shrink severalfold,
+    // and every step's copy of the file is cheaper.
+    H5::DSetCreatPropList properties;
+    if (dims.size() >= 1 && count >= kCompressAbove) {
+      std::vector<hsize_t> chunk = dims;
+      std::size_t chunk_count = count;
+      for (std::size_t d = 0; d < chunk.size() && chunk_count > kChunkElements; ++d) {
+        const hsize_t keep = std::max<hsize_t>(1, chunk[d] * kChunkElements / chunk_count);
+        chunk_count = chunk_count / chunk[d] * keep;
+        chunk[d] = keep;
+      }
+      properties.setChunk(static_cast<int>(chunk.size()), chunk.data());
+      properties.setShuffle();
+      properties.setDeflate(4);
+    }
     H5::DataSet data = file.createDataSet(ensure_parents(file, root, array.name),
-                                          H5::PredType::NATIVE_DOUBLE, space);
+                                          H5::PredType::NATIVE_DOUBLE, space, properties);
     if (count > 0) data.write(array.values.data(), H5::PredType::NATIVE_DOUBLE);
     write_string_attribute(data, "units", array.units);
     write_string_attribute(data, "description", array.description);
@@ -204,7 +222,10 @@ void ResultsFile::write_run_info(const GroupRecord& info) {
 }
 
 std::vector<double> ResultsFile::read_step_array(int step, const std::string& name) const {
-  const std::string full = step_group(step) + "/" + name;
+  return read_array(step_group(step) + "/" + name);
+}
+
+std::vector<double> ResultsFile::read_array(const std::string& full) const {
   try {
     H5::Exception::dontPrint();
     H5::H5File file(path_.string(), H5F_ACC_RDONLY);
@@ -214,6 +235,30 @@ std::vector<double> ResultsFile::read_step_array(int step, const std::string& na
     std::vector<double> values(static_cast<std::size_t>(space.getSimpleExtentNpoints()));
     if (!values.empty()) data.read(values.data(), H5::PredType::NATIVE_DOUBLE);
     return values;
+  } catch (const H5::Exception& error) {
+    throw InputError("results file " + path_.string() + ": cannot read " + full + " (" +
+                     error.getDetailMsg() + ")");
+  }
+}
+
+bool ResultsFile::has(const std::string& full) const {
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
+    return file.nameExists(full);
+  } catch (const H5::Exception&) {
+    return false;  // a missing intermediate group
+  }
+}
+
+std::optional<std::string> ResultsFile::read_text(const std::string& full) const {
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
+    if (!file.nameExists(full)) return std::nullopt;
+    std::string text;
+    file.openDataSet(full).read(text, H5::StrType(H5::PredType::C_S1, H5T_VARIABLE));
+    return text;
   } catch (const H5::Exception& error) {
     throw InputError("results file " + path_.string() + ": cannot read " + full + " (" +
                      error.getDetailMsg() + ")");

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -63,6 +64,12 @@ class ResultsFile {
 
   /// Reads a dataset (as row-major doubles) of step `step`; throws InputError when missing.
   std::vector<double> read_step_array(int step, const std::string& name) const;
+  /// Reads any dataset by its full path (e.g. "/steps/000003/wheel/y"); InputError when missing.
+  std::vector<double> read_array(const std::string& full_path) const;
+  /// Whether the file holds an object at `full_path`.
+  bool has(const std::string& full_path) const;
+  /// Reads a text dataset by its full path; std::nullopt when missing.
+  std::optional<std::string> read_text(const std::string& full_path) const;
 
   /// The group name of a step: "/steps/000012".
   static std::string step_group(int step);

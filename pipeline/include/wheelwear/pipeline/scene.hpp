@@ -1,0 +1,89 @@
+#pragma once
+/// A wear-evolution scene: the wheel, the rail, the track, the contact and wear models, the load
+/// collective and the run's step control, read from a TOML file with unit-suffixed keys.
+
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "wheelwear/wear/contact_model.hpp"
+#include "wheelwear/wear/creep_types.hpp"
+#include "wheelwear/wear/fastsim.hpp"
+
+namespace wheelwear::pipeline {
+
+/// One state of the wheelset in the load collective: where it runs, how it is loaded, how fast,
+/// and which share of the running distance it stands for. Signs: `dy` and `yaw` as
+/// contactgeom::WheelsetState (+ towards the left wheel's flange); a curve of positive radius
+/// turns right, so that the left wheel runs on the outer rail.
+struct WheelsetStateSpec {
+  std::string label;                   ///< free text (e.g. the track section)
+  double dy = 0.0;                     ///< lateral shift [m], + to the left
+  double yaw = 0.0;                    ///< yaw angle [rad], + turns the left wheel's flange ahead
+  double load_left = 0.0;              ///< vertical force on the left wheel [N], > 0
+  double load_right = 0.0;             ///< vertical force on the right wheel [N], > 0
+  std::optional<double> lateral_force_left;   ///< lateral force on the left rail [N], + outwards
+  std::optional<double> lateral_force_right;  ///< same for the right wheel [N]
+  double speed = 0.0;                         ///< forward speed [m/s], > 0
+  double curve_radius = 0.0;  ///< [m]; 0 on tangent track, > 0 right-hand, < 0 left-hand
+  double lateral_velocity = 0.0;  ///< dy/dt [m/s], + to the left
+  /// Creepages given directly (each wheel in its own frame, + y towards the gauge side); when
+  /// absent they follow from the kinematics at every patch's O.
+  std::optional<wear::Creepages> creepages_left, creepages_right;
+  double weight = 1.0;  ///< share of the running distance (normalised over the collective)
+  int line = 0;         ///< line in the scene or the collective file (for messages)
+};
+
+/// Everything a run needs. Defaults are those of the built-in scene.
+struct Scene {
+  std::string title;
+  std::string wheel_profile = "S1002";  ///< standard name or resolved file path
+  double wheel_radius = 0.46;           ///< [m]
+  std::string rail_profile = "60E1";
+  std::optional<double> rail_inclination;  ///< [rad]; default per profile_source.hpp
+  double gauge = 1.435;                    ///< [m]
+  double back_to_back = 1.360;             ///< [m]
+  double lateral_arm = 0.75;               ///< wheelset centre to contact [m]
+  double youngs_modulus = 200e9;           ///< [Pa]
+  double poisson = 0.25;                   ///< [-]
+  wear::ContactModel model = wear::ContactModel::sdec;
+  double friction = 0.3;  ///< [-], > 0
+  int grid_nx = 30;
+  int grid_ny = 30;
+  wear::FastsimScheme scheme = wear::FastsimScheme::kalker;
+  double strip_width = 0.2e-3;       ///< [m]
+  double virtual_penetration = 0.55;  ///< Kik-Piotrowski epsilon [-]
+  std::string wear_law = "usfd";      ///< usfd or archard
+  std::string wear_law_table;         ///< resolved path of the user's table, empty: built-in
+  double distance = 100e3;            ///< running distance of the run [m]
+  double step_distance = 5e3;         ///< longest step [m]
+  double max_depth_step = 0.1e-3;     ///< deepest wear increment of one step [m]
+  double smoothing_length = 2e-3;     ///< smoothing of a step's depth along the profile [m]
+  bool separate_wheels = false;       ///< evolve left and right profiles separately
+  bool state_summaries = true;        ///< write per-state summaries
+  bool tgamma_maps = false;           ///< write per-cell T gamma maps of every contact
+  std::vector<WheelsetStateSpec> states;
+};
+
+/// Reads a file named in a scene (a profile, the collective, a wear table) as text.
+using SceneFileReader = std::function<std::string(const std::filesystem::path&)>;
+
+/// Parses a scene. Relative file names are taken from `base_directory`; `read` reads the
+/// collective file (default: from disk). Every problem (TOML syntax, unknown key, wrong type,
+/// a value out of range, a missing file) throws InputError naming the key and its line, before
+/// any work starts.
+Scene parse_scene(std::string_view toml_text, const std::filesystem::path& base_directory,
+                  const SceneFileReader& read = {});
+
+/// Reads and parses the scene file `path`.
+Scene load_scene(const std::filesystem::path& path);
+
+/// The built-in default scene's text (data/scenes/default.toml).
+std::string_view default_scene_text();
+/// The built-in default scene, with its collective (data/scenes/default_states.csv).
+Scene default_scene();
+
+}  // namespace wheelwear::pipeline

@@ -1,0 +1,51 @@
+#pragma once
+/// The wear-evolution run: evaluate the collective, step the wheel profile(s) by the wear of a
+/// controlled distance, record every step durably in the results file, repeat.
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "wheelwear/pipeline/scene.hpp"
+
+namespace wheelwear::pipeline {
+
+/// Where a run is, for progress reports.
+struct RunProgress {
+  int step = 0;                ///< index of the step just written (0: the new profile)
+  double distance = 0.0;       ///< running distance reached [m]
+  double total_distance = 0.0;  ///< the scene's distance [m]
+  std::size_t states = 0;      ///< states in the collective
+  double elapsed = 0.0;        ///< wall time of this process so far [s]
+  double evaluations_per_second = 0.0;  ///< wheelset states evaluated per second so far
+  int failed_contacts = 0;     ///< wheel contacts of this step that had no usable patch
+};
+
+/// How a run is driven.
+struct RunOptions {
+  bool overwrite = false;  ///< replace an existing output file
+  std::function<void(const RunProgress&)> progress;  ///< called after every step
+};
+
+/// What a run did.
+struct RunSummary {
+  int steps = 0;                   ///< wear steps taken (file groups minus one)
+  double distance = 0.0;           ///< [m]
+  double worn_area = 0.0;          ///< worn cross-section of the (first) wheel profile [m^2]
+  double elapsed = 0.0;            ///< wall time of this process [s]
+  std::size_t evaluations = 0;     ///< wheelset states evaluated by this process
+  std::size_t geometry_solves = 0;  ///< distinct wheel/rail contacts solved by this process
+};
+
+/// Runs `scene` from its new profile and writes `output` (see README, "Results file").
+/// `scene_text` is recorded in the file; `scene_directory` resolves its relative file names on
+/// resume (empty for the built-in scene).
+RunSummary run_scene(const Scene& scene, std::string_view scene_text,
+                     const std::filesystem::path& scene_directory, bool builtin_scene,
+                     const std::filesystem::path& output, const RunOptions& options);
+
+/// Continues the run recorded in `output` from its last complete step; the result is identical
+/// to an uninterrupted run. Throws InputError when the file is not a run or is complete.
+RunSummary resume_run(const std::filesystem::path& output, const RunOptions& options);
+
+}  // namespace wheelwear::pipeline

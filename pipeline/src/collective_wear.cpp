@@ -1,0 +1,254 @@
+#include "wheelwear/pipeline/collective_wear.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "wheelwear/contactgeom/kinematics.hpp"
+#include "wheelwear/input_error.hpp"
+#include "wheelwear/pipeline/profile_source.hpp"
+#include "wheelwear/wear/contact_model.hpp"
+
+namespace wheelwear::pipeline {
+
+namespace {
+
+constexpr double kBin = 0.1e-3;  // wear grid on the wheel's arc length [m]
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// One wheel of one state, in that wheel's own frame.
+struct WheelCase {
+  int profile = 0;  // index of the worn profile
+  contactgeom::WheelsetPose pose;
+  double vertical_force = 0.0;
+  std::optional<double> lateral_force;
+  contactgeom::WheelsetMotion motion;
+  std::optional<wear::Creepages> creepages;
+  double weight = 0.0;  // share of the running distance of this wheel's profile
+};
+
+// Geometry is shared by wheel cases with the same profile, position and loads.
+using GeometryKey = std::tuple<int, double, double, double, double, double>;
+
+GeometryKey geometry_key(const WheelCase& c) {
+  return {c.profile, c.pose.dy, c.pose.roll, c.vertical_force, c.lateral_force.value_or(kNaN),
+          c.lateral_force ? 1.0 : 0.0};
+}
+
+// The per-state wear of one wheel: a run of bins starting at `first`.
+struct LocalWear {
+  std::size_t first = 0;
+  std::vector<double> depth;
+};
+
+struct WheelResult {
+  std::vector<LocalWear> wear;
+};
+
+bool usable(contactgeom::WheelRailStatus status) {
+  return status == contactgeom::WheelRailStatus::ok ||
+         status == contactgeom::WheelRailStatus::load_jump;
+}
+
+}  // namespace
+
+CollectiveEvaluator::CollectiveEvaluator(const Scene& scene)
+    : scene_(scene),
+      rail_(std::make_shared<const profiles::Profile>(
+          rail_profile(scene.rail_profile, scene.rail_inclination))),
+      law_(wear::TgammaLaw::usfd()) {
+  if (!scene.wear_law_table.empty()) {
+    if (scene.wear_law == "usfd") law_ = wear::TgammaLaw::load_csv(scene.wear_law_table);
+    if (scene.wear_law == "archard") law_ = wear::ArchardLaw::load_csv(scene.wear_law_table);
+  } else {
+    const auto law = wear::default_wear_law(scene.wear_law);
+    if (!law) throw InputError("scene: wear.law = " + scene.wear_law + ": unknown wear law");
+    law_ = *law;
+  }
+  options_.strip_width = scene.strip_width;
+  options_.kp.epsilon = scene.virtual_penetration;
+  options_.validate();
+}
+
+contactgeom::WheelRailPair CollectiveEvaluator::pair(const profiles::Profile& wheel) const {
+  contactgeom::WheelRailPair p(wheel, *rail_);
+  p.gauge = scene_.gauge;
+  p.back_to_back = scene_.back_to_back;
+  p.wheel_radius = scene_.wheel_radius;
+  p.youngs_modulus = scene_.youngs_modulus;
+  p.poisson = scene_.poisson;
+  p.validate();
+  return p;
+}
+
+CollectiveWear CollectiveEvaluator::evaluate(
+    const std::vector<const profiles::Profile*>& wheels) const {
+  const std::size_t profiles_worn = scene_.separate_wheels ? 2 : 1;
+  require(wheels.size() == profiles_worn, "worn wheel profiles", static_cast<double>(wheels.size()),
+          scene_.separate_wheels ? "separate wheels need two profiles (left, right)"
+                                 : "shared wheels need one profile");
+  std::vector<contactgeom::WheelRailPair> pairs;
+  for (const profiles::Profile* wheel : wheels) pairs.push_back(pair(*wheel));
+
+  // Each state stands for weight/total of the distance; in a shared profile each wheel for half.
+  const std::size_t n_states = scene_.states.size();
+  double total_weight = 0.0;
+  for (const auto& s : scene_.states) total_weight += s.weight;
+  std::vector<WheelCase> cases(2 * n_states);
+  for (std::size_t i = 0; i < n_states; ++i) {
+    const WheelsetStateSpec& s = scene_.states[i];
+    for (int side = 0; side < 2; ++side) {
+      const double sign = side == 0 ? 1.0 : -1.0;  // the right wheel is the mirror image
+      WheelCase& c = cases[2 * i + static_cast<std::size_t>(side)];
+      c.profile = scene_.separate_wheels ? side : 0;
+      c.pose.dy = sign * s.dy;
+      c.pose.yaw = sign * s.yaw;
+      c.vertical_force = side == 0 ? s.load_left : s.load_right;
+      c.lateral_force = side == 0 ? s.lateral_force_left : s.lateral_force_right;
+      c.motion.speed = s.speed;
+      c.motion.lateral_velocity = sign * s.lateral_velocity;
+      // A right-hand curve (R > 0) puts the left wheel on the outer rail, ahead.
+      c.motion.yaw_rate = s.curve_radius == 0.0 ? 0.0 : sign * s.speed / s.curve_radius;
+      c.motion.lateral_arm = scene_.lateral_arm;
+      c.creepages = side == 0 ? s.creepages_left : s.creepages_right;
+      c.weight = s.weight / total_weight * (scene_.separate_wheels ? 1.0 : 0.5);
+    }
+  }
+
+  // Distinct geometries, numbered in the order of first use (deterministic).
+  std::map<GeometryKey, std::size_t> index_of;
+  std::vector<std::size_t> geometry_of(cases.size());
+  std::vector<std::size_t> first_case;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const auto [it, inserted] = index_of.emplace(geometry_key(cases[k]), first_case.size());
+    if (inserted) first_case.push_back(k);
+    geometry_of[k] = it->second;
+  }
+  std::vector<contactgeom::WheelRailContact> contacts(first_case.size());
+  tbb::parallel_for(std::size_t{0}, first_case.size(), [&](std::size_t g) {
+    const WheelCase& c = cases[first_case[g]];
+    contacts[g] = contactgeom::solve_wheel_rail(pairs[static_cast<std::size_t>(c.profile)],
+                                                c.pose, c.vertical_force, options_);
+  });
+
+  CollectiveWear out;
+  out.geometry_solves = first_case.size();
+  std::vector<std::size_t> bins(profiles_worn);
+  for (std::size_t p = 0; p < profiles_worn; ++p) {
+    bins[p] = static_cast<std::size_t>(std::ceil(wheels[p]->length() / kBin)) + 1;
+    out.rate.push_back(wear::WearDistribution::zeros(0.0, kBin, bins[p]));
+  }
+  StateSummaries& sum = out.summaries;
+  const bool summaries = scene_.state_summaries;
+  if (summaries) {
+    sum.states = n_states;
+    sum.status.assign(2 * n_states, kNaN);
+    sum.patches.assign(2 * n_states, 0.0);
+    sum.dy.assign(2 * n_states, kNaN);
+    for (auto* v : {&sum.normal_force, &sum.a, &sum.b, &sum.psi, &sum.y_wheel, &sum.contact_angle,
+                    &sum.vx, &sum.vy, &sum.phi, &sum.Fx, &sum.Fy, &sum.frictional_work,
+                    &sum.worn_area})
+      v->assign(2 * n_states * kPatchSlots, kNaN);
+  }
+  const int nx = scene_.grid_nx, ny = scene_.grid_ny;
+  const std::size_t cells = static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny);
+  if (scene_.tgamma_maps) {
+    out.maps = TgammaMaps{nx, ny, {}, {}, {}};
+    for (auto* v : {&out.maps->work, &out.maps->x, &out.maps->y})
+      v->assign(2 * n_states * kPatchSlots * cells, kNaN);
+  }
+
+  const wear::Material material{scene_.youngs_modulus / (2.0 * (1.0 + scene_.poisson)),
+                                scene_.poisson};
+  wear::FastsimOptions fastsim_options;
+  fastsim_options.nx = nx;
+  fastsim_options.ny = ny;
+  fastsim_options.scheme = scene_.scheme;
+  fastsim_options.cell_fields = true;  // the wear laws need every cell's traction and slip
+
+  std::vector<WheelResult> results(cases.size());
+  tbb::parallel_for(std::size_t{0}, cases.size(), [&](std::size_t k) {
+    const WheelCase& c = cases[k];
+    const contactgeom::WheelRailContact& contact = contacts[geometry_of[k]];
+    const std::size_t p = static_cast<std::size_t>(c.profile);
+    if (summaries) {
+      sum.status[k] = static_cast<double>(contact.status);
+      sum.dy[k] = c.pose.dy;
+    }
+    if (!usable(contact.status)) return;
+    const std::size_t n_patches = std::min<std::size_t>(contact.patches.size(), kPatchSlots);
+    if (summaries) sum.patches[k] = static_cast<double>(n_patches);
+    wear::TangentialSolution solution;
+    for (std::size_t slot = 0; slot < n_patches; ++slot) {
+      const contactgeom::WheelRailPatch& patch = contact.patches[slot];
+      std::optional<contactgeom::Sdec> hertz;
+      if (patch.hertz_valid) hertz = contactgeom::Sdec{patch.hertz.a, patch.hertz.b, 0.0};
+      if (scene_.model == wear::ContactModel::hertz && !hertz) continue;
+      const wear::ModelPatch region = wear::model_patch(scene_.model, patch.sdec, hertz);
+      const wear::Creepages creep =
+          c.creepages ? *c.creepages
+                      : contactgeom::kinematic_creepages(patch, c.pose, c.motion,
+                                                         scene_.wheel_radius);
+      wear::fastsim(region.method, region.region, creep, {patch.normal_force, scene_.friction},
+                    material, fastsim_options, solution);
+      // The bins the patch can reach on the wheel: its width around O, both ways.
+      const double reach = 2.0 * std::max(region.region.b, patch.sdec.b) + 2.0 * kBin;
+      const double lo = std::max(0.0, patch.s_wheel - reach);
+      const double hi = std::min(wheels[p]->length(), patch.s_wheel + reach);
+      LocalWear local;
+      local.first = static_cast<std::size_t>(std::floor(lo / kBin));
+      const std::size_t last = std::min(bins[p] - 1, static_cast<std::size_t>(std::ceil(hi / kBin)));
+      wear::WearDistribution part = wear::WearDistribution::zeros(
+          static_cast<double>(local.first) * kBin, kBin, last - local.first + 1);
+      wear::accumulate_wear(*solution.fields, c.motion.speed, law_,
+                            {patch.s_wheel, patch.rolling_radius}, 1.0, part);
+      local.depth = std::move(part.depth);
+      if (summaries) {
+        const std::size_t at = k * kPatchSlots + slot;
+        sum.normal_force[at] = patch.normal_force;
+        sum.a[at] = patch.sdec.a;
+        sum.b[at] = patch.sdec.b;
+        sum.psi[at] = patch.sdec.psi;
+        sum.y_wheel[at] = patch.y_wheel;
+        sum.contact_angle[at] = patch.contact_angle;
+        sum.vx[at] = creep.vx;
+        sum.vy[at] = creep.vy;
+        sum.phi[at] = creep.phi;
+        sum.Fx[at] = solution.forces.Fx;
+        sum.Fy[at] = solution.forces.Fy;
+        sum.frictional_work[at] = solution.frictional_work;
+        double area = 0.0;
+        for (double d : local.depth) area += d * kBin;
+        sum.worn_area[at] = area;
+      }
+      if (out.maps) {
+        const std::size_t at = (k * kPatchSlots + slot) * cells;
+        const wear::CellFields& f = *solution.fields;
+        std::copy(f.work.begin(), f.work.end(), out.maps->work.begin() + static_cast<long>(at));
+        std::copy(f.x.begin(), f.x.end(), out.maps->x.begin() + static_cast<long>(at));
+        std::copy(f.y.begin(), f.y.end(), out.maps->y.begin() + static_cast<long>(at));
+      }
+      results[k].wear.push_back(std::move(local));
+    }
+  });
+
+  // The reduction runs in state order, whatever the threads did: bit-identical results.
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const WheelCase& c = cases[k];
+    if (!usable(contacts[geometry_of[k]].status)) {
+      ++out.failed_contacts;
+      out.failed_weight += c.weight * (scene_.separate_wheels ? 0.5 : 1.0);
+      continue;
+    }
+    std::vector<double>& rate = out.rate[static_cast<std::size_t>(c.profile)].depth;
+    for (const LocalWear& local : results[k].wear)
+      for (std::size_t b = 0; b < local.depth.size(); ++b)
+        rate[local.first + b] += c.weight * local.depth[b];
+  }
+  return out;
+}
+
+}  // namespace wheelwear::pipeline

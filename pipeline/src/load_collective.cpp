@@ -1,0 +1,247 @@
+#include "load_collective.hpp"
+
+#include <H5Cpp.h>
+
+#include <cmath>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "wheelwear/input_error.hpp"
+#include "wheelwear/profiles/text_file.hpp"
+
+namespace wheelwear::pipeline::detail {
+
+namespace {
+
+// Limits that catch unit mistakes (mm for m, kN for N) as much as impossible values.
+constexpr double kMaxShift = 0.05;       // [m]: beyond it no wheel is on its rail
+constexpr double kMaxYaw = 0.1;          // [rad]
+constexpr double kMaxLoad = 1e6;         // [N] on one wheel
+constexpr double kMaxSpeed = 150.0;      // [m/s]
+constexpr double kMaxLateralSpeed = 5.0;  // [m/s]
+constexpr double kMinCurveRadius = 50.0;  // [m]
+
+struct Column {
+  const char* name;
+  const char* meaning;
+  std::function<void(WheelsetStateSpec&, double)> set;
+  double lo, hi;  // accepted range (inclusive)
+};
+
+std::optional<wear::Creepages>& creepages(WheelsetStateSpec& s, bool left) {
+  std::optional<wear::Creepages>& c = left ? s.creepages_left : s.creepages_right;
+  // Components not given are marked NaN until finish_state checks all three arrived.
+  if (!c) c = wear::Creepages{NAN, NAN, NAN};
+  return c;
+}
+
+const std::vector<Column>& columns() {
+  static const std::vector<Column> table = {
+      {"dy_m", "lateral shift, + to the left [m]", [](auto& s, double v) { s.dy = v; },
+       -kMaxShift, kMaxShift},
+      {"yaw_rad", "yaw angle [rad]", [](auto& s, double v) { s.yaw = v; }, -kMaxYaw, kMaxYaw},
+      {"load_left_N", "vertical force on the left wheel [N]",
+       [](auto& s, double v) { s.load_left = v; }, 1.0, kMaxLoad},
+      {"load_right_N", "vertical force on the right wheel [N]",
+       [](auto& s, double v) { s.load_right = v; }, 1.0, kMaxLoad},
+      {"axle_load_N", "vertical axle force, split evenly [N]",
+       [](auto& s, double v) { s.load_left = s.load_right = 0.5 * v; }, 2.0, 2 * kMaxLoad},
+      {"lateral_force_left_N", "lateral force of the left wheel on its rail [N]",
+       [](auto& s, double v) { s.lateral_force_left = v; }, -kMaxLoad, kMaxLoad},
+      {"lateral_force_right_N", "lateral force of the right wheel on its rail [N]",
+       [](auto& s, double v) { s.lateral_force_right = v; }, -kMaxLoad, kMaxLoad},
+      {"speed_m_s", "forward speed [m/s]", [](auto& s, double v) { s.speed = v; }, 1e-3,
+       kMaxSpeed},
+      {"curve_radius_m", "curve radius, 0 on tangent track, + right-hand [m]",
+       [](auto& s, double v) { s.curve_radius = v; }, -1e12, 1e12},
+      {"lateral_velocity_m_s", "dy/dt, + to the left [m/s]",
+       [](auto& s, double v) { s.lateral_velocity = v; }, -kMaxLateralSpeed, kMaxLateralSpeed},
+      {"vx_left", "longitudinal creepage of the left wheel [-]",
+       [](auto& s, double v) { creepages(s, true)->vx = v; }, -1.0, 1.0},
+      {"vy_left", "lateral creepage of the left wheel [-]",
+       [](auto& s, double v) { creepages(s, true)->vy = v; }, -1.0, 1.0},
+      {"spin_left_1_m", "spin creepage of the left wheel [1/m]",
+       [](auto& s, double v) { creepages(s, true)->phi = v; }, -100.0, 100.0},
+      {"vx_right", "longitudinal creepage of the right wheel [-]",
+       [](auto& s, double v) { creepages(s, false)->vx = v; }, -1.0, 1.0},
+      {"vy_right", "lateral creepage of the right wheel [-]",
+       [](auto& s, double v) { creepages(s, false)->vy = v; }, -1.0, 1.0},
+      {"spin_right_1_m", "spin creepage of the right wheel [1/m]",
+       [](auto& s, double v) { creepages(s, false)->phi = v; }, -100.0, 100.0},
+      {"weight", "share of the running distance [-]", [](auto& s, double v) { s.weight = v; },
+       0.0, 1e12},
+  };
+  return table;
+}
+
+bool is_label(std::string_view name) { return name == "label" || name == "section"; }
+
+std::string format_value(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+}  // namespace
+
+bool is_state_field(std::string_view name) {
+  if (is_label(name)) return true;
+  for (const Column& c : columns())
+    if (name == c.name) return true;
+  return false;
+}
+
+std::string state_field_names() {
+  std::string names = "label (or section)";
+  for (const Column& c : columns()) names += std::string(", ") + c.name;
+  return names;
+}
+
+void set_state_field(WheelsetStateSpec& state, const StateField& field, const std::string& where) {
+  if (is_label(field.name)) {
+    state.label = field.text;
+    return;
+  }
+  for (const Column& c : columns()) {
+    if (field.name != c.name) continue;
+    if (!std::isfinite(field.number) || field.number < c.lo || field.number > c.hi) {
+      throw InputError(where + ": " + c.name + " = " + format_value(field.number) + ": the " +
+                       c.meaning + " must be finite and within [" + format_value(c.lo) + ", " +
+                       format_value(c.hi) + "] (SI units)");
+    }
+    c.set(state, field.number);
+    return;
+  }
+  throw InputError(where + ": unknown state key '" + field.name + "'; a state has " +
+                   state_field_names());
+}
+
+void finish_state(WheelsetStateSpec& state, const std::string& where) {
+  if (!(state.load_left > 0.0) || !(state.load_right > 0.0)) {
+    throw InputError(where +
+                     ": the wheel loads are missing; give load_left_N and load_right_N "
+                     "(or axle_load_N), in newtons");
+  }
+  if (!(state.speed > 0.0))
+    throw InputError(where + ": speed_m_s is missing; give the forward speed in m/s");
+  if (state.curve_radius != 0.0 && std::abs(state.curve_radius) < kMinCurveRadius) {
+    throw InputError(where + ": curve_radius_m = " + format_value(state.curve_radius) +
+                     ": a curve radius must be at least 50 m (0 on tangent track)");
+  }
+  for (bool left : {true, false}) {
+    const auto& c = left ? state.creepages_left : state.creepages_right;
+    if (c && (std::isnan(c->vx) || std::isnan(c->vy) || std::isnan(c->phi))) {
+      const char* side = left ? "left" : "right";
+      throw InputError(where + ": creepages of the " + side + " wheel are incomplete; give vx_" +
+                       side + ", vy_" + side + " and spin_" + side + "_1_m together");
+    }
+  }
+}
+
+std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
+                                                   const std::string& file_name) {
+  std::vector<std::string> header;
+  std::vector<WheelsetStateSpec> states;
+  std::istringstream in{std::string(text)};
+  std::string raw;
+  int line = 0;
+  while (std::getline(in, raw)) {
+    ++line;
+    const std::string_view row = profiles::trim(raw);
+    if (row.empty() || row.front() == '#') continue;
+    std::vector<std::string> cells;
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = row.find(',', start);
+      cells.emplace_back(
+          profiles::trim(row.substr(start, comma == std::string_view::npos ? comma : comma - start)));
+      if (comma == std::string_view::npos) break;
+      start = comma + 1;
+    }
+    const std::string where = file_name + " line " + std::to_string(line);
+    if (header.empty()) {
+      header = cells;
+      for (const std::string& name : header) {
+        // Check the names before any row, so a misspelt column is reported as such.
+        if (!is_state_field(name)) {
+          throw InputError(where + ": unknown column '" + name + "'; a state has " +
+                           state_field_names());
+        }
+      }
+      continue;
+    }
+    if (cells.size() != header.size()) {
+      throw InputError(where + ": " + std::to_string(cells.size()) + " cells but the header has " +
+                       std::to_string(header.size()) + " columns");
+    }
+    WheelsetStateSpec state;
+    state.line = line;
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+      if (is_label(header[k])) {
+        state.label = cells[k];
+        continue;
+      }
+      if (cells[k].empty()) continue;  // an optional column left blank
+      const auto value = profiles::parse_number(cells[k]);
+      if (!value) {
+        throw InputError(where + ": column " + header[k] + ": '" + cells[k] +
+                         "' is not a number (SI units, e.g. 0.002 or 55e3)");
+      }
+      set_state_field(state, {header[k], *value, {}}, where);
+    }
+    finish_state(state, where);
+    states.push_back(std::move(state));
+  }
+  if (header.empty()) throw InputError(file_name + ": empty load collective (no header line)");
+  return states;
+}
+
+std::vector<WheelsetStateSpec> read_collective_hdf5(const std::filesystem::path& path,
+                                                    const std::string& group) {
+  const std::string file_name = path.string();
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File file(file_name, H5F_ACC_RDONLY);
+    if (!file.nameExists(group))
+      throw InputError(file_name + ": no group '" + group + "' with the collective's columns");
+    H5::Group g = file.openGroup(group);
+    std::map<std::string, std::vector<double>> data;
+    std::size_t rows = 0;
+    for (hsize_t i = 0; i < g.getNumObjs(); ++i) {
+      const std::string name = g.getObjnameByIdx(i);
+      if (g.getObjTypeByIdx(i) != H5G_DATASET || is_label(name)) continue;
+      H5::DataSet set = g.openDataSet(name);
+      const H5::DataSpace space = set.getSpace();
+      if (space.getSimpleExtentNdims() != 1)
+        throw InputError(file_name + ": dataset " + group + "/" + name + " must be 1-D");
+      std::vector<double> values(static_cast<std::size_t>(space.getSimpleExtentNpoints()));
+      if (!values.empty()) set.read(values.data(), H5::PredType::NATIVE_DOUBLE);
+      if (!data.empty() && values.size() != rows) {
+        throw InputError(file_name + ": dataset " + group + "/" + name + " has " +
+                         std::to_string(values.size()) + " rows, the others " +
+                         std::to_string(rows));
+      }
+      rows = values.size();
+      data.emplace(name, std::move(values));
+    }
+    if (data.empty()) throw InputError(file_name + ": no datasets in group '" + group + "'");
+    std::vector<WheelsetStateSpec> states(rows);
+    for (std::size_t r = 0; r < rows; ++r) {
+      const std::string where = file_name + " row " + std::to_string(r);
+      states[r].line = static_cast<int>(r);
+      for (const auto& [name, values] : data) {
+        // NaN marks a value not given in an optional column, as blank cells do in CSV.
+        if (std::isnan(values[r])) continue;
+        set_state_field(states[r], {name, values[r], {}}, where);
+      }
+      finish_state(states[r], where);
+    }
+    return states;
+  } catch (const H5::Exception& error) {
+    throw InputError(file_name + ": cannot read the load collective (" + error.getDetailMsg() +
+                     ")");
+  }
+}
+
+}  // namespace wheelwear::pipeline::detail

@@ -1,0 +1,381 @@
+#include "wheelwear/pipeline/scene.hpp"
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "load_collective.hpp"
+#include "wheelwear/input_error.hpp"
+#include "wheelwear/profiles/text_file.hpp"
+#include "wheelwear/wear/wear_law.hpp"
+
+namespace wheelwear::pipeline {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string where(const toml::source_region& source, std::string_view key) {
+  std::ostringstream out;
+  out << "scene line " << source.begin.line << ": " << key;
+  return out.str();
+}
+
+std::string format(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+// One key's reader: it receives the node and the key's full name for messages.
+using KeyHandler = std::function<void(const toml::node&, const std::string&)>;
+
+double number(const toml::node& node, const std::string& key, double lo, double hi,
+              std::string_view meaning) {
+  const auto value = node.value<double>();  // integers convert too
+  if (!value || node.is_boolean()) {
+    throw InputError(where(node.source(), key) + ": expected a number (" + std::string(meaning) +
+                     ")");
+  }
+  if (!std::isfinite(*value) || *value < lo || *value > hi) {
+    throw InputError(where(node.source(), key) + " = " + format(*value) + ": " +
+                     std::string(meaning) + " must lie in [" + format(lo) + ", " + format(hi) +
+                     "]");
+  }
+  return *value;
+}
+
+int integer(const toml::node& node, const std::string& key, int lo, int hi,
+            std::string_view meaning) {
+  const auto value = node.value_exact<int64_t>();
+  if (!value || *value < lo || *value > hi) {
+    throw InputError(where(node.source(), key) + ": expected a whole number in [" +
+                     std::to_string(lo) + ", " + std::to_string(hi) + "] (" +
+                     std::string(meaning) + ")");
+  }
+  return static_cast<int>(*value);
+}
+
+std::string text(const toml::node& node, const std::string& key) {
+  const auto value = node.value_exact<std::string>();
+  if (!value) throw InputError(where(node.source(), key) + ": expected a quoted string");
+  return *value;
+}
+
+bool boolean(const toml::node& node, const std::string& key) {
+  const auto value = node.value_exact<bool>();
+  if (!value) throw InputError(where(node.source(), key) + ": expected true or false");
+  return *value;
+}
+
+// A hint for a key that is unknown only by its unit suffix (radius_mm for radius_m).
+std::string unit_hint(std::string_view key, const std::map<std::string, KeyHandler>& known) {
+  const std::size_t cut = key.rfind('_');
+  if (cut == std::string_view::npos) return {};
+  const std::string_view stem = key.substr(0, cut);
+  for (const auto& [name, handler] : known) {
+    if (name.size() > stem.size() && name.compare(0, stem.size(), stem) == 0 &&
+        name[stem.size()] == '_') {
+      return "; did you mean '" + name + "'? Keys carry SI units (m, N, Pa, m/s as _m_s)";
+    }
+  }
+  return {};
+}
+
+void read_table(const toml::table& table, const std::string& section,
+                const std::map<std::string, KeyHandler>& handlers) {
+  for (auto&& [key, node] : table) {
+    const std::string name(key.str());
+    const auto handler = handlers.find(name);
+    if (handler == handlers.end()) {
+      std::string allowed;
+      for (const auto& [known, unused] : handlers) allowed += (allowed.empty() ? "" : ", ") + known;
+      throw InputError(where(key.source(), section.empty() ? name : section + "." + name) +
+                       ": unknown key" + unit_hint(name, handlers) + " (allowed here: " + allowed +
+                       ")");
+    }
+    handler->second(node, section.empty() ? name : section + "." + name);
+  }
+}
+
+fs::path resolve(const fs::path& base, const std::string& name) {
+  const fs::path p(name);
+  return p.is_absolute() || base.empty() ? p : base / p;
+}
+
+bool is_standard_profile(const std::string& spec, std::string_view standard) {
+  return profiles::to_lower(spec) == profiles::to_lower(standard);
+}
+
+// A profile is a standard name or a file, which must exist.
+std::string profile_spec(const toml::node& node, const std::string& key, const fs::path& base,
+                         std::string_view standard) {
+  const std::string spec = text(node, key);
+  if (is_standard_profile(spec, standard)) return std::string(standard);
+  const fs::path file = resolve(base, spec);
+  if (!fs::is_regular_file(file)) {
+    throw InputError(where(node.source(), key) + " = \"" + spec + "\": no such file (looked for " +
+                     file.string() + "); give \"" + std::string(standard) +
+                     "\" or a profile file, relative to the scene file");
+  }
+  return file.string();
+}
+
+std::vector<WheelsetStateSpec> inline_states(const toml::node& node, const std::string& key) {
+  const toml::array* array = node.as_array();
+  if (!array || !array->is_array_of_tables()) {
+    throw InputError(where(node.source(), key) +
+                     ": expected [[load_collective.state]] tables, one per state");
+  }
+  std::vector<WheelsetStateSpec> states;
+  for (const toml::node& element : *array) {
+    const toml::table& table = *element.as_table();
+    WheelsetStateSpec state;
+    state.line = static_cast<int>(table.source().begin.line);
+    for (auto&& [name, value] : table) {
+      const std::string field(name.str());
+      const std::string place = where(name.source(), key + "." + field);
+      detail::StateField f{field, 0.0, {}};
+      if (field == "label" || field == "section") {
+        f.text = text(value, key + "." + field);
+      } else {
+        const auto v = value.value<double>();
+        if (!v || value.is_boolean()) throw InputError(place + ": expected a number (SI units)");
+        f.number = *v;
+      }
+      detail::set_state_field(state, f, where(name.source(), key));
+    }
+    detail::finish_state(state, "scene line " + std::to_string(state.line) + ": " + key);
+    states.push_back(std::move(state));
+  }
+  return states;
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
+                  const SceneFileReader& read) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, std::string_view("scene"));
+  } catch (const toml::parse_error& error) {
+    std::ostringstream out;
+    out << "scene line " << error.source().begin.line << ": " << error.description();
+    throw InputError(out.str());
+  }
+  Scene s;
+  bool inclination_given = false;
+  std::optional<int> collective_line;
+  std::string law_table;
+
+  auto section = [&](const std::string& name, std::map<std::string, KeyHandler> handlers) {
+    return [name, handlers](const toml::node& node, const std::string& key) {
+      const toml::table* table = node.as_table();
+      if (!table) throw InputError(where(node.source(), key) + ": expected a table [" + name + "]");
+      read_table(*table, name, handlers);
+    };
+  };
+
+  const std::map<std::string, KeyHandler> top = {
+      {"title", [&](const auto& n, const auto& k) { s.title = text(n, k); }},
+      {"wheel", section("wheel",
+                        {{"profile",
+                          [&](const auto& n, const auto& k) {
+                            s.wheel_profile = profile_spec(n, k, base_directory, "S1002");
+                          }},
+                         {"radius_m",
+                          [&](const auto& n, const auto& k) {
+                            s.wheel_radius = number(n, k, 0.2, 1.0, "the rolling radius in m");
+                          }}})},
+      {"rail", section("rail",
+                       {{"profile",
+                         [&](const auto& n, const auto& k) {
+                           s.rail_profile = profile_spec(n, k, base_directory, "60E1");
+                         }},
+                        {"inclination",
+                         [&](const auto& n, const auto& k) {
+                           s.rail_inclination = std::atan(
+                               number(n, k, -0.1, 0.1, "the inclination as a slope (1:40 = 0.025)"));
+                           inclination_given = true;
+                         }}})},
+      {"track",
+       section("track",
+               {{"gauge_m",
+                 [&](const auto& n, const auto& k) {
+                   s.gauge = number(n, k, 0.6, 2.0, "the track gauge in m");
+                 }},
+                {"back_to_back_m",
+                 [&](const auto& n, const auto& k) {
+                   s.back_to_back = number(n, k, 0.5, 2.0, "the wheels' back-to-back in m");
+                 }},
+                {"lateral_arm_m",
+                 [&](const auto& n, const auto& k) {
+                   s.lateral_arm = number(n, k, 0.3, 1.2, "the half distance of the contacts in m");
+                 }}})},
+      {"material",
+       section("material",
+               {{"youngs_modulus_Pa",
+                 [&](const auto& n, const auto& k) {
+                   s.youngs_modulus = number(n, k, 1e9, 1e12, "Young's modulus in Pa");
+                 }},
+                {"poisson", [&](const auto& n, const auto& k) {
+                   s.poisson = number(n, k, 0.0, 0.5, "Poisson's ratio");
+                 }}})},
+      {"contact",
+       section(
+           "contact",
+           {{"model",
+             [&](const auto& n, const auto& k) {
+               const std::string name = text(n, k);
+               const auto model = wear::parse_contact_model(name);
+               if (!model) {
+                 throw InputError(where(n.source(), k) + " = \"" + name +
+                                  "\": unknown contact model; use sdec, eql, eqe, eqe-shifted or "
+                                  "hertz");
+               }
+               s.model = *model;
+             }},
+            {"friction",
+             [&](const auto& n, const auto& k) {
+               s.friction = number(n, k, 1e-6, 2.0, "the coefficient of friction (> 0)");
+             }},
+            {"grid_nx",
+             [&](const auto& n, const auto& k) {
+               s.grid_nx = integer(n, k, 2, 1000, "FASTSIM cells along x");
+             }},
+            {"grid_ny",
+             [&](const auto& n, const auto& k) {
+               s.grid_ny = integer(n, k, 2, 1000, "FASTSIM strips across y");
+             }},
+            {"scheme",
+             [&](const auto& n, const auto& k) {
+               const std::string name = text(n, k);
+               if (name == "kalker") {
+                 s.scheme = wear::FastsimScheme::kalker;
+               } else if (name == "second-order") {
+                 s.scheme = wear::FastsimScheme::second_order;
+               } else {
+                 throw InputError(where(n.source(), k) + " = \"" + name +
+                                  "\": unknown FASTSIM scheme; use kalker or second-order");
+               }
+             }},
+            {"strip_width_m",
+             [&](const auto& n, const auto& k) {
+               s.strip_width = number(n, k, 1e-5, 2e-3, "the strip width in m");
+             }},
+            {"virtual_penetration", [&](const auto& n, const auto& k) {
+               s.virtual_penetration = number(n, k, 0.05, 1.0, "Kik-Piotrowski's epsilon");
+             }}})},
+      {"wear", section("wear",
+                       {{"law",
+                         [&](const auto& n, const auto& k) {
+                           s.wear_law = text(n, k);
+                           if (s.wear_law != "usfd" && s.wear_law != "archard") {
+                             throw InputError(where(n.source(), k) + " = \"" + s.wear_law +
+                                              "\": unknown wear law; use usfd or archard");
+                           }
+                         }},
+                        {"law_table", [&](const auto& n, const auto& k) {
+                           const fs::path file = resolve(base_directory, text(n, k));
+                           if (!fs::is_regular_file(file)) {
+                             throw InputError(where(n.source(), k) + ": no such file " +
+                                              file.string());
+                           }
+                           law_table = file.string();
+                         }}})},
+      {"run",
+       section(
+           "run",
+           {{"distance_m",
+             [&](const auto& n, const auto& k) {
+               s.distance = number(n, k, 1.0, 1e9, "the running distance in m");
+             }},
+            {"step_distance_m",
+             [&](const auto& n, const auto& k) {
+               s.step_distance = number(n, k, 1e-3, 1e9, "the longest step in m");
+             }},
+            {"max_depth_step_m",
+             [&](const auto& n, const auto& k) {
+               s.max_depth_step = number(n, k, 1e-9, 2e-3, "the deepest increment of a step in m");
+             }},
+            {"smoothing_length_m",
+             [&](const auto& n, const auto& k) {
+               s.smoothing_length = number(n, k, 0.0, 0.02, "the smoothing length in m");
+             }},
+            {"wheels", [&](const auto& n, const auto& k) {
+               const std::string mode = text(n, k);
+               if (mode != "shared" && mode != "separate") {
+                 throw InputError(where(n.source(), k) + " = \"" + mode +
+                                  "\": use shared (one profile worn by both wheels) or separate");
+               }
+               s.separate_wheels = mode == "separate";
+             }}})},
+      {"output",
+       section("output",
+               {{"state_summaries",
+                 [&](const auto& n, const auto& k) { s.state_summaries = boolean(n, k); }},
+                {"tgamma_maps",
+                 [&](const auto& n, const auto& k) { s.tgamma_maps = boolean(n, k); }}})},
+      {"load_collective",
+       section("load_collective",
+               {{"file",
+                 [&](const auto& n, const auto& k) {
+                   collective_line = static_cast<int>(n.source().begin.line);
+                   const fs::path file = resolve(base_directory, text(n, k));
+                   const std::string ext = profiles::to_lower(file.extension().string());
+                   if (ext == ".h5" || ext == ".hdf5") {
+                     if (!fs::is_regular_file(file))
+                       throw InputError(where(n.source(), k) + ": no such file " + file.string());
+                     auto states = detail::read_collective_hdf5(file, "/");
+                     s.states.insert(s.states.end(), states.begin(), states.end());
+                     return;
+                   }
+                   std::string content;
+                   if (read) {
+                     content = read(file);
+                   } else {
+                     if (!fs::is_regular_file(file))
+                       throw InputError(where(n.source(), k) + ": no such file " + file.string());
+                     content = profiles::read_text_file(file);
+                   }
+                   auto states = detail::read_collective_csv(content, file.filename().string());
+                   s.states.insert(s.states.end(), states.begin(), states.end());
+                 }},
+                {"state", [&](const auto& n, const auto& k) {
+                   collective_line = static_cast<int>(n.source().begin.line);
+                   auto states = inline_states(n, k);
+                   s.states.insert(s.states.end(), states.begin(), states.end());
+                 }}})},
+  };
+  read_table(root, "", top);
+
+  if (!inclination_given) s.rail_inclination.reset();
+  s.wear_law_table = law_table;
+  if (s.states.empty()) {
+    throw InputError(collective_line ? "scene line " + std::to_string(*collective_line) +
+                                           ": load_collective: no states"
+                                     : "scene: no [load_collective]; give file = \"states.csv\" "
+                                       "or [[load_collective.state]] tables");
+  }
+  double total = 0.0;
+  for (const auto& state : s.states) total += state.weight;
+  if (!(total > 0.0))
+    throw InputError("scene: load_collective: the weights sum to 0; give some state a weight > 0");
+  if (s.max_depth_step <= 0.0 || s.step_distance > s.distance) s.step_distance = s.distance;
+  return s;
+}
+
+Scene load_scene(const fs::path& path) {
+  if (!fs::is_regular_file(path))
+    throw InputError("scene " + path.string() + ": no such file");
+  const std::string text = profiles::read_text_file(path);
+  try {
+    return parse_scene(text, path.parent_path());
+  } catch (const InputError& error) {
+    throw InputError(path.string() + ": " + error.what());
+  }
+}
+
+}  // namespace wheelwear::pipeline
