@@ -5,12 +5,15 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
 
 #include "commands.hpp"
 #include "wheelwear/input_error.hpp"
 #include "wheelwear/pipeline/json_writer.hpp"
 #include "wheelwear/wear/fastsim.hpp"
+#include "wheelwear/wear/grid_choice.hpp"
 #include "wheelwear/wear/linear_theory.hpp"
 
 namespace wheelwear::cli {
@@ -26,6 +29,7 @@ struct CreepArgs {
   wear::FastsimOptions options;
   std::string bound = "parabolic";
   std::string scheme = "kalker";
+  std::optional<double> target_error;  // fraction of mu N; chooses nx = ny (grid_choice.hpp)
   bool json = false;
 };
 
@@ -33,6 +37,13 @@ void run_creep(const CreepArgs& args) {
   wear::CreepForces forces;
   int cells = 0, slip_cells = 0;
   const bool linear = args.method == "linear-sdec" || args.method == "she-sdec";
+  std::optional<wear::GridChoice> chosen;
+  if (linear && args.target_error) {
+    std::ostringstream message;
+    message << "--target-error " << *args.target_error << ": " << args.method
+            << " has no grid; use --target-error with a FASTSIM method";
+    throw InputError(message.str());
+  }
   if (linear) {
     args.sdec.validate();
     args.load.validate();
@@ -47,6 +58,15 @@ void run_creep(const CreepArgs& args) {
                                                   : wear::TractionBound::parabolic;
     options.scheme = args.scheme == "second-order" ? wear::FastsimScheme::second_order
                                                    : wear::FastsimScheme::kalker;
+    if (args.target_error) {
+      try {
+        chosen = wear::choose_grid(*method, options.scheme, options.bound, *args.target_error);
+      } catch (const InputError& e) {
+        throw InputError(std::string("--target-error: ") + e.what());
+      }
+      options.nx = chosen->nx;
+      options.ny = chosen->ny;
+    }
     const wear::TangentialSolution solution =
         wear::fastsim(*method, args.sdec, args.creepages, args.load, args.material, options);
     forces = solution.forces;
@@ -64,6 +84,12 @@ void run_creep(const CreepArgs& args) {
         .add("Fy_muN", forces.Fy / mu_n);
     if (forces.has_Mz) out.add("Mz", forces.Mz);
     if (!linear) out.add("cells", cells).add("slip_cells", slip_cells);
+    if (chosen) {
+      out.add("target_error", *args.target_error)
+          .add("nx", chosen->nx)
+          .add("ny", chosen->ny)
+          .add("predicted_error", chosen->predicted_error);
+    }
     out.add("extrapolated", forces.flags.any()).add("warnings", warnings);
     std::cout << out.str() << '\n';
     return;
@@ -73,6 +99,10 @@ void run_creep(const CreepArgs& args) {
   std::printf("Fy       %14.6g N   (Fy/muN = %+.6f)\n", forces.Fy, forces.Fy / mu_n);
   if (forces.has_Mz) std::printf("Mz       %14.6g N m (about O)\n", forces.Mz);
   if (!linear) std::printf("slip     %d of %d cells\n", slip_cells, cells);
+  if (chosen) {
+    std::printf("grid     %d x %d cells for --target-error %g (model error %.3g of muN)\n",
+                chosen->nx, chosen->ny, *args.target_error, chosen->predicted_error);
+  }
   if (!warnings.empty()) std::printf("warning  %s\n", warnings.c_str());
 }
 
@@ -106,10 +136,17 @@ void add_creep_command(CLI::App& app) {
   cmd->add_option("--mu", args->load.mu, "friction coefficient [-]")->capture_default_str();
   cmd->add_option("--G", args->material.G, "combined shear modulus [Pa]")->capture_default_str();
   cmd->add_option("--nu", args->material.nu, "Poisson's ratio [-]")->capture_default_str();
-  cmd->add_option("--nx", args->options.nx, "FASTSIM cells along x per strip")
-      ->capture_default_str();
-  cmd->add_option("--ny", args->options.ny, "FASTSIM strips across the width")
-      ->capture_default_str();
+  CLI::Option* nx = cmd->add_option("--nx", args->options.nx, "FASTSIM cells along x per strip")
+                        ->capture_default_str();
+  CLI::Option* ny = cmd->add_option("--ny", args->options.ny, "FASTSIM strips across the width")
+                        ->capture_default_str();
+  cmd->add_option("--target-error", args->target_error,
+                  "instead of --nx/--ny: the cheapest n x n grid whose discretisation error\n"
+                  "is at most this fraction of muN against the method's converged answer\n"
+                  "(error model C/n^p measured on CONTACT's pure-spin cases,\n"
+                  "bench/runtime_error_study.cpp); the JSON then gives nx, ny, predicted_error")
+      ->excludes(nx)
+      ->excludes(ny);
   cmd->add_option("--bound", args->bound, "traction bound: parabolic (Eq. 18) or semi-elliptic")
       ->check(CLI::IsMember({"parabolic", "semi-elliptic"}))
       ->capture_default_str();

@@ -65,7 +65,7 @@ void show_progress(const pipeline::RunProgress& p) {
 }
 
 void report(const RunArgs& args, const std::string& output, const pipeline::RunSummary& s) {
-  const pipeline::ResultsFile file = pipeline::ResultsFile::open(output);
+  const pipeline::ResultsFile file = pipeline::ResultsFile::read(output);
   const int last = file.completed_steps() - 1;
   const std::string wheel = file.has(pipeline::ResultsFile::step_group(last) + "/wheel")
                                 ? "wheel"

@@ -188,6 +188,11 @@ ResultsFile ResultsFile::open(const fs::path& path) {
   if (!fs::exists(path)) throw InputError("results file " + path.string() + ": does not exist");
   // A stray copy from a run killed mid-step holds an unfinished step: it is discarded.
   fs::remove(partial_path(path));
+  return read(path);
+}
+
+ResultsFile ResultsFile::read(const fs::path& path) {
+  if (!fs::exists(path)) throw InputError("results file " + path.string() + ": does not exist");
   try {
     H5::Exception::dontPrint();
     H5::H5File file(path.string(), H5F_ACC_RDONLY);

@@ -69,6 +69,34 @@ ArrayRecord vector(std::string name, std::vector<double> values, std::string uni
   return {std::move(name), std::move(values), {n}, std::move(units), std::move(description)};
 }
 
+// The rate smoothed along the arc length by a Gaussian of standard deviation `length`: each
+// bin's wear is spread over its neighbours with weights that sum to one within the profile, so
+// the worn area is conserved exactly and no negative lobes appear (a smoothing spline's would
+// be clipped at zero and add area).
+wear::WearDistribution smoothed(const wear::WearDistribution& rate, double length) {
+  if (length <= 0.0) return rate;
+  const auto reach = static_cast<long>(std::ceil(4.0 * length / rate.ds));
+  std::vector<double> kernel(static_cast<std::size_t>(2 * reach + 1));
+  for (long k = -reach; k <= reach; ++k) {
+    const double u = static_cast<double>(k) * rate.ds / length;
+    kernel[static_cast<std::size_t>(k + reach)] = std::exp(-0.5 * u * u);
+  }
+  wear::WearDistribution out = rate;
+  std::fill(out.depth.begin(), out.depth.end(), 0.0);
+  const auto n = static_cast<long>(rate.depth.size());
+  for (long i = 0; i < n; ++i) {
+    const double d = rate.depth[static_cast<std::size_t>(i)];
+    if (d == 0.0) continue;
+    const long lo = std::max(0L, i - reach), hi = std::min(n - 1, i + reach);
+    double total = 0.0;
+    for (long j = lo; j <= hi; ++j) total += kernel[static_cast<std::size_t>(j - i + reach)];
+    for (long j = lo; j <= hi; ++j)
+      out.depth[static_cast<std::size_t>(j)] +=
+          d * kernel[static_cast<std::size_t>(j - i + reach)] / total;
+  }
+  return out;
+}
+
 // The step's depth as a function of the profile's lateral coordinate (what apply_wear takes):
 // bins where y does not increase (a vertical flange back) carry no wear and are left out.
 profiles::WearDepth depth_on_y(const profiles::Profile& profile,
@@ -164,7 +192,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   int step = start.step;
   double distance = start.distance;
   std::vector<WornProfile> worn = std::move(start.worn);
-  const profiles::WearUpdateOptions update{scene.smoothing_length};
+  // The depth arrives smoothed (smoothed() above): the update adds no smoothing of its own.
+  const profiles::WearUpdateOptions update{0.0};
   while (true) {
     std::vector<profiles::Profile> wheels;
     for (const WornProfile& w : worn) wheels.push_back(w.build());
@@ -174,9 +203,11 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     summary.evaluations += scene.states.size();
     summary.geometry_solves += cw.geometry_solves;
 
+    std::vector<wear::WearDistribution> smooth_rate;
+    for (const auto& r : cw.rate) smooth_rate.push_back(smoothed(r, scene.smoothing_length));
     // Step control: the distance that keeps the deepest increment below max_depth_step.
     double peak = 0.0;
-    for (const auto& r : cw.rate)
+    for (const auto& r : smooth_rate)
       for (double d : r.depth) peak = std::max(peak, d);
     const double remaining = scene.distance - distance;
     double step_distance = 0.0;
@@ -225,12 +256,12 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       g.arrays.push_back(vector(n + "/wear_rate/s", s, "m", "bin centre, arc length on the profile"));
       g.arrays.push_back(vector(n + "/wear_rate/y", ys, "m", "bin centre, lateral position"));
       g.arrays.push_back(vector(n + "/wear_rate/depth", rate.depth, "m/m",
-                                "worn depth per metre running, weighted over the collective"));
-      increments.push_back(depth_on_y(wheels[p], rate, step_distance));
+                                "worn depth per metre running, weighted over the collective (unsmoothed)"));
+      increments.push_back(depth_on_y(wheels[p], smooth_rate[p], step_distance));
       g.arrays.push_back(vector(n + "/wear_step/y", increments.back().y, "m",
                                 "lateral positions of the step's wear depth"));
       g.arrays.push_back(vector(n + "/wear_step/depth", increments.back().depth, "m",
-                                "wear depth of the step (before smoothing)"));
+                                "wear depth of the step (smoothed wear rate times the step distance)"));
     }
     const contactgeom::WheelRailPair left = evaluator.pair(wheels.front());
     const contactgeom::WheelRailPair right = evaluator.pair(wheels.back());
@@ -259,7 +290,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     }
     if (step_distance == 0.0) break;
     for (std::size_t p = 0; p < worn.size(); ++p) {
-      summary.worn_area += p == 0 ? cw.rate[p].area() * step_distance : 0.0;
+      summary.worn_area += p == 0 ? smooth_rate[p].area() * step_distance : 0.0;
       worn[p].points = profiles::apply_wear(wheels[p], increments[p], update).knot_points();
     }
     distance += step_distance;
@@ -304,7 +335,7 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   const CollectiveEvaluator evaluator(scene);
   LoopStart start{last + 1, file.read_step_array(last, "distance").at(0) + step_distance,
                   new_profiles(scene)};
-  const profiles::WearUpdateOptions update{scene.smoothing_length};
+  const profiles::WearUpdateOptions update{0.0};  // as in loop()
   for (WornProfile& w : start.worn) {
     const auto y = file.read_step_array(last, w.name + "/y");
     const auto z = file.read_step_array(last, w.name + "/z");

@@ -4,6 +4,7 @@
 
 #include "support/run_command.hpp"
 #include "wheelwear/wear/fastsim.hpp"
+#include "wheelwear/wear/grid_choice.hpp"
 #include "wheelwear/wear/linear_theory.hpp"
 
 namespace wheelwear {
@@ -46,6 +47,35 @@ TEST(CreepCommand, EveryMethodAnswersWithTheContractKeys) {
   EXPECT_EQ(json_number(linear.out, "Fx"), f.Fx);
 }
 
+// --target-error picks the grid of grid_choice.hpp, reports it, and the forces are the
+// library's on that grid.
+TEST(CreepCommand, TargetErrorChoosesAndReportsTheGrid) {
+  const auto result =
+      run_wheelwear(kCase + " --method fastsim-sdec --scheme second-order --target-error 1e-3");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const wear::GridChoice choice = wear::choose_grid(
+      wear::FastsimMethod::sdec, wear::FastsimScheme::second_order,
+      wear::TractionBound::parabolic, 1e-3);
+  EXPECT_EQ(json_number(result.out, "nx"), choice.nx);
+  EXPECT_EQ(json_number(result.out, "ny"), choice.ny);
+  EXPECT_EQ(json_number(result.out, "target_error"), 1e-3);
+  EXPECT_EQ(json_number(result.out, "predicted_error"), choice.predicted_error);
+  EXPECT_EQ(json_number(result.out, "cells"), choice.nx * choice.ny);
+  wear::FastsimOptions options;
+  options.nx = choice.nx;
+  options.ny = choice.ny;
+  options.scheme = wear::FastsimScheme::second_order;
+  const wear::CreepForces f = wear::fastsim(wear::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.6},
+                                            {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options)
+                                  .forces;
+  EXPECT_EQ(json_number(result.out, "Fx"), f.Fx);
+  EXPECT_EQ(json_number(result.out, "Fy"), f.Fy);
+  // Without --target-error the output keeps its keys and adds none.
+  const auto plain = run_wheelwear(kCase + " --method fastsim-sdec");
+  EXPECT_FALSE(json_number(plain.out, "target_error").has_value());
+  EXPECT_FALSE(json_number(plain.out, "nx").has_value());
+}
+
 // Bad input: a message on stderr that names the problem, a non-zero exit, nothing on stdout.
 TEST(CreepCommand, RejectsBadInputWithAMessage) {
   struct Case {
@@ -62,6 +92,10 @@ TEST(CreepCommand, RejectsBadInputWithAMessage) {
       {"creep --a 4e-3 --b 4e-3 --N 1e4 --bogus 1", "--bogus"},
       {"creep --a 4e-3 --b 4e-3", "--N"},
       {"nosuchcommand --help", "unknown command"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --target-error 1e-3 --nx 20", "--target-error"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --target-error 0", "target_error = 0"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --target-error 1e-7", "raise the target"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --target-error 1e-3 --method she-sdec", "has no grid"},
   };
   for (const Case& c : cases) {
     const auto result = run_wheelwear(c.arguments);

@@ -49,9 +49,11 @@ class ResultsFile {
   /// `overwrite` is false; the existing file is then left untouched.
   static ResultsFile create(const std::filesystem::path& path, std::string_view scene_text,
                             bool overwrite);
-  /// Opens an existing results file to continue it (resume). Throws InputError when the
-  /// file is missing or is not a wheelwear results file.
+  /// Opens an existing results file to continue it (resume): a stray FILE.partial of a killed
+  /// run is discarded. Throws InputError when the file is missing or is not a results file.
   static ResultsFile open(const std::filesystem::path& path);
+  /// Opens a results file to read it, touching nothing (safe while a run is writing it).
+  static ResultsFile read(const std::filesystem::path& path);
 
   /// Publishes step `completed_steps()` atomically.
   void append_step(const GroupRecord& step);

@@ -1,0 +1,158 @@
+#!/usr/bin/env python3
+"""Plots of a wheelwear results file: profile evolution, wear depth per step, wheel parameters
+and conicity, and T gamma maps where the run recorded them.
+
+    scripts/plot_run.py RUN.h5 [--out DIR]
+
+Writes PNGs next to RUN.h5 (or into DIR) and prints their names. Needs h5py and matplotlib
+(Debian: python3-h5py, python3-matplotlib).
+"""
+
+import argparse
+import os
+import sys
+
+try:
+    import h5py
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+except ImportError as error:  # pragma: no cover - depends on the machine
+    sys.exit(f"plot_run.py: {error}; install python3-h5py and python3-matplotlib")
+
+
+def steps(f):
+    return [f["steps"][name] for name in sorted(f["steps"].keys())]
+
+
+def wheel_groups(step):
+    return [name for name in ("wheel", "wheel_left", "wheel_right") if name in step]
+
+
+def plot_profiles(f, out):
+    groups = steps(f)
+    fig, axes = plt.subplots(2, 1, figsize=(9, 7), sharex=True)
+    first = groups[0]
+    name = wheel_groups(first)[0]
+    y0 = np.asarray(first[name]["y"]) * 1e3
+    z0 = np.asarray(first[name]["z"]) * 1e3
+    colours = plt.cm.viridis(np.linspace(0, 1, len(groups)))
+    grid = np.linspace(-45.0, 50.0, 951)
+    worn = np.zeros_like(grid)
+    for g, colour in zip(groups, colours):
+        y = np.asarray(g[name]["y"]) * 1e3
+        z = np.asarray(g[name]["z"]) * 1e3
+        axes[0].plot(y, z, color=colour, lw=0.8)
+        # Cumulative wear normal to the surface: the sum of the steps' depths so far.
+        axes[1].plot(grid, worn * 1e6, color=colour, lw=0.8)
+        step = g[name]["wear_step"]
+        if len(step["y"]) >= 2:
+            worn += np.interp(grid, np.asarray(step["y"]) * 1e3, np.asarray(step["depth"]),
+                              left=0.0, right=0.0)
+    mask = (y0 > -45) & (y0 < 50)
+    axes[0].set_ylim(z0[mask].max() + 1, z0[mask].min() - 1)
+    axes[0].set_ylabel("z [mm] (down)")
+    axes[0].set_title(f"{name} profile, {len(groups) - 1} wear steps "
+                      f"to {groups[-1]['distance'][()] / 1e3:.1f} km")
+    axes[1].set_ylabel("worn depth, normal [µm]")
+    axes[1].set_xlabel("y [mm] (+ field side, flange at -y)")
+    axes[1].set_xlim(-45, 50)
+    path = os.path.join(out, "profile_evolution.png")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
+def plot_wear_depth(f, out):
+    groups = steps(f)
+    fig, ax = plt.subplots(figsize=(9, 4.5))
+    colours = plt.cm.viridis(np.linspace(0, 1, len(groups)))
+    for g, colour in zip(groups[:-1], colours):
+        for name in wheel_groups(g):
+            step = g[name]["wear_step"]
+            ax.plot(np.asarray(step["y"]) * 1e3, np.asarray(step["depth"]) * 1e6, color=colour,
+                    lw=0.8)
+    ax.set_xlabel("y on the wheel [mm]")
+    ax.set_ylabel("wear depth of the step [µm]")
+    ax.set_xlim(-40, 50)
+    ax.set_title("wear depth per step (colour: step)")
+    path = os.path.join(out, "wear_depth_per_step.png")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
+def plot_parameters(f, out):
+    groups = steps(f)
+    distance = np.array([g["distance"][()] for g in groups]) / 1e3
+    name = wheel_groups(groups[0])[0]
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for key in ("Sh", "Sd", "qR"):
+        axes[0].plot(distance, [g[name][key][()] * 1e3 for g in groups], marker="o", ms=3,
+                     label=key)
+    axes[0].set_xlabel("distance [km]")
+    axes[0].set_ylabel("[mm]")
+    axes[0].legend()
+    axes[0].set_title("EN 15313 parameters")
+    axes[1].plot(distance, [g["equivalent_conicity"][()] for g in groups], marker="o", ms=3)
+    axes[1].set_xlabel("distance [km]")
+    axes[1].set_ylabel("tan γe at 3 mm")
+    axes[1].set_title("equivalent conicity (EN 15302)")
+    path = os.path.join(out, "parameters.png")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
+def plot_tgamma(f, out):
+    first = steps(f)[0]
+    if "tgamma" not in first:
+        return None
+    work = np.asarray(first["tgamma"]["work"])
+    x = np.asarray(first["tgamma"]["x"])
+    y = np.asarray(first["tgamma"]["y"])
+    # The contact with the largest total frictional work of the first step.
+    totals = np.nansum(work, axis=(3, 4))
+    state, wheel, patch = np.unravel_index(np.nanargmax(totals), totals.shape)
+    fig, ax = plt.subplots(figsize=(6, 5))
+    mesh = ax.pcolormesh(y[state, wheel, patch] * 1e3, x[state, wheel, patch] * 1e3,
+                         work[state, wheel, patch], shading="auto", cmap="inferno")
+    fig.colorbar(mesh, ax=ax, label="Tγ density [J/m²/m]")
+    ax.set_xlabel("y [mm] (+ flange)")
+    ax.set_ylabel("x [mm] (rolling)")
+    side = "left" if wheel == 0 else "right"
+    ax.set_title(f"Tγ map, state {state}, {side} wheel, patch {patch + 1}")
+    path = os.path.join(out, "tgamma_map.png")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("run", help="results file written by `wheelwear run`")
+    parser.add_argument("--out", help="directory for the PNGs (default: next to RUN)")
+    args = parser.parse_args()
+    out = args.out or os.path.dirname(os.path.abspath(args.run))
+    os.makedirs(out, exist_ok=True)
+    try:
+        f = h5py.File(args.run, "r")
+    except OSError as error:
+        sys.exit(f"plot_run.py: cannot read {args.run}: {error}")
+    with f:
+        if "steps" not in f or len(f["steps"]) == 0:
+            sys.exit(f"plot_run.py: {args.run} holds no steps")
+        for plot in (plot_profiles, plot_wear_depth, plot_parameters, plot_tgamma):
+            path = plot(f, out)
+            if path:
+                print(path)
+
+
+if __name__ == "__main__":
+    main()

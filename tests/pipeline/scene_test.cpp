@@ -1,0 +1,199 @@
+// Scenes: what a valid scene reads into, and a table of bad scenes, each with its own message.
+
+#include "wheelwear/pipeline/scene.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "support/run_command.hpp"
+#include "wheelwear/input_error.hpp"
+
+namespace wheelwear::pipeline {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kState =
+    "[[load_collective.state]]\n"
+    "dy_m = 0.002\nyaw_rad = 1e-3\nload_left_N = 60e3\nload_right_N = 50e3\nspeed_m_s = 30\n";
+
+class SceneTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("wheelwear_scene_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+  fs::path dir_;
+};
+
+TEST_F(SceneTest, ReadsEveryKeyInSiUnits) {
+  const Scene s = parse_scene(
+      "title = \"t\"\n"
+      "[wheel]\nprofile = \"S1002\"\nradius_m = 0.45\n"
+      "[rail]\nprofile = \"60E1\"\ninclination = 0.05\n"
+      "[track]\ngauge_m = 1.432\nback_to_back_m = 1.358\n"
+      "[material]\nyoungs_modulus_Pa = 210e9\npoisson = 0.3\n"
+      "[contact]\nmodel = \"eqe-shifted\"\nfriction = 0.4\ngrid_nx = 12\ngrid_ny = 14\n"
+      "scheme = \"second-order\"\nstrip_width_m = 1e-4\nvirtual_penetration = 0.5\n"
+      "[wear]\nlaw = \"archard\"\n"
+      "[run]\ndistance_m = 1000\nstep_distance_m = 100\nmax_depth_step_m = 1e-5\n"
+      "smoothing_length_m = 1e-3\nwheels = \"separate\"\n"
+      "[output]\nstate_summaries = false\ntgamma_maps = true\n" +
+          std::string(kState),
+      dir_);
+  EXPECT_EQ(s.title, "t");
+  EXPECT_DOUBLE_EQ(s.wheel_radius, 0.45);
+  ASSERT_TRUE(s.rail_inclination.has_value());
+  EXPECT_NEAR(*s.rail_inclination, std::atan(0.05), 1e-15);
+  EXPECT_DOUBLE_EQ(s.gauge, 1.432);
+  EXPECT_DOUBLE_EQ(s.back_to_back, 1.358);
+  EXPECT_DOUBLE_EQ(s.youngs_modulus, 210e9);
+  EXPECT_DOUBLE_EQ(s.poisson, 0.3);
+  EXPECT_EQ(s.model, wear::ContactModel::eqe_shifted);
+  EXPECT_DOUBLE_EQ(s.friction, 0.4);
+  EXPECT_EQ(s.grid_nx, 12);
+  EXPECT_EQ(s.grid_ny, 14);
+  EXPECT_EQ(s.scheme, wear::FastsimScheme::second_order);
+  EXPECT_EQ(s.wear_law, "archard");
+  EXPECT_DOUBLE_EQ(s.distance, 1000.0);
+  EXPECT_DOUBLE_EQ(s.step_distance, 100.0);
+  EXPECT_DOUBLE_EQ(s.max_depth_step, 1e-5);
+  EXPECT_TRUE(s.separate_wheels);
+  EXPECT_FALSE(s.state_summaries);
+  EXPECT_TRUE(s.tgamma_maps);
+  ASSERT_EQ(s.states.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.states[0].dy, 0.002);
+  EXPECT_DOUBLE_EQ(s.states[0].load_left, 60e3);
+  EXPECT_DOUBLE_EQ(s.states[0].load_right, 50e3);
+  EXPECT_DOUBLE_EQ(s.states[0].speed, 30.0);
+}
+
+TEST_F(SceneTest, CollectiveFromCsvWithOptionalColumnsAndCreepages) {
+  write("states.csv",
+        "# a comment\n"
+        "section,dy_m,axle_load_N,speed_m_s,lateral_force_left_N,vx_left,vy_left,spin_left_1_m,"
+        "weight\n"
+        "tangent,0.001,110e3,40,,,,,3\n"
+        "curve,0.007,110e3,20,30e3,0.001,-0.002,0.5,1\n");
+  const Scene s = parse_scene("[load_collective]\nfile = \"states.csv\"\n", dir_);
+  ASSERT_EQ(s.states.size(), 2u);
+  EXPECT_EQ(s.states[0].label, "tangent");
+  EXPECT_DOUBLE_EQ(s.states[0].load_left, 55e3);  // the axle load is split evenly
+  EXPECT_FALSE(s.states[0].lateral_force_left.has_value());
+  EXPECT_FALSE(s.states[0].creepages_left.has_value());
+  ASSERT_TRUE(s.states[1].lateral_force_left.has_value());
+  EXPECT_DOUBLE_EQ(*s.states[1].lateral_force_left, 30e3);
+  ASSERT_TRUE(s.states[1].creepages_left.has_value());
+  EXPECT_DOUBLE_EQ(s.states[1].creepages_left->phi, 0.5);
+  EXPECT_DOUBLE_EQ(s.states[0].weight, 3.0);
+  EXPECT_EQ(s.states[1].line, 4);
+}
+
+TEST(DefaultScene, HasAThousandStatesOfTangentAndCurves) {
+  const Scene s = default_scene();
+  EXPECT_GE(s.states.size(), 1000u);
+  int tangent = 0, curves = 0, flange = 0;
+  for (const auto& state : s.states) {
+    (state.curve_radius == 0.0 ? tangent : curves)++;
+    if (state.lateral_force_left || state.lateral_force_right) ++flange;
+  }
+  EXPECT_GT(tangent, 100);
+  EXPECT_GT(curves, 100);
+  EXPECT_GT(flange, 10);  // tight curves put the outer flange against the rail
+  EXPECT_EQ(s.wheel_profile, "S1002");
+  EXPECT_EQ(s.rail_profile, "60E1");
+}
+
+// One bad scene, what it must say, and the line it must name.
+struct BadScene {
+  const char* name;
+  std::string text;
+  const char* message;
+};
+
+class BadSceneTest : public SceneTest, public ::testing::WithParamInterface<BadScene> {};
+
+TEST_P(BadSceneTest, IsRejectedNamingTheKeyAndLine) {
+  write("bad_cell.csv", "dy_m,axle_load_N,speed_m_s\n0.001,abc,30\n");
+  write("bad_column.csv", "dy_m,axle_load_kN,speed_m_s\n0.001,110,30\n");
+  try {
+    parse_scene(GetParam().text, dir_);
+    FAIL() << "accepted: " << GetParam().text;
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find(GetParam().message), std::string::npos)
+        << error.what();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, BadSceneTest,
+    ::testing::Values(
+        BadScene{"UnknownKey", "colour = 1\n" + std::string(kState), "scene line 1: colour"},
+        BadScene{"WrongUnit", "[wheel]\nradius_mm = 460\n" + std::string(kState),
+                 "did you mean 'radius_m'"},
+        BadScene{"WrongType", "[wheel]\nradius_m = \"big\"\n" + std::string(kState),
+                 "scene line 2: wheel.radius_m: expected a number"},
+        BadScene{"RadiusInMillimetres", "[wheel]\nradius_m = 460\n" + std::string(kState),
+                 "wheel.radius_m = 460"},
+        BadScene{"NegativeFriction", "[contact]\nfriction = -0.1\n" + std::string(kState),
+                 "contact.friction = -0.1"},
+        BadScene{"MissingProfile", "[wheel]\nprofile = \"nosuch.csv\"\n" + std::string(kState),
+                 "no such file"},
+        BadScene{"UnknownModel", "[contact]\nmodel = \"ellipse\"\n" + std::string(kState),
+                 "unknown contact model"},
+        BadScene{"Syntax", "[run\n", "scene line 1"},
+        BadScene{"NoStates", "[run]\ndistance_m = 10\n", "no [load_collective]"},
+        BadScene{"StateWithoutLoad",
+                 "[[load_collective.state]]\ndy_m = 0.001\nspeed_m_s = 20\n",
+                 "wheel loads are missing"},
+        BadScene{"ShiftInMillimetres",
+                 "[[load_collective.state]]\ndy_m = 5\naxle_load_N = 1e5\nspeed_m_s = 20\n",
+                 "dy_m = 5"},
+        BadScene{"NegativeLoad",
+                 "[[load_collective.state]]\nload_left_N = -5\nload_right_N = 5e4\n"
+                 "speed_m_s = 20\n",
+                 "load_left_N = -5"},
+        BadScene{"IncompleteCreepages",
+                 "[[load_collective.state]]\naxle_load_N = 1e5\nspeed_m_s = 20\nvx_left = 0.001\n",
+                 "creepages of the left wheel are incomplete"},
+        BadScene{"MissingCollectiveFile", "[load_collective]\nfile = \"none.csv\"\n",
+                 "no such file"},
+        BadScene{"BadCell", "[load_collective]\nfile = \"bad_cell.csv\"\n",
+                 "bad_cell.csv line 2: column axle_load_N: 'abc' is not a number"},
+        BadScene{"UnknownColumn", "[load_collective]\nfile = \"bad_column.csv\"\n",
+                 "unknown column 'axle_load_kN'"},
+        BadScene{"UnknownWheelsMode", "[run]\nwheels = \"both\"\n" + std::string(kState),
+                 "run.wheels = \"both\""}),
+    [](const auto& param_info) { return std::string(param_info.param.name); });
+
+// Through the command line: a bad scene fails with exit code 2 before any file is written,
+// and an existing results file stays as it was.
+TEST_F(SceneTest, BadSceneLeavesNoFileAndKeepsAnExistingOne) {
+  const fs::path scene = write("bad.toml", "[contact]\nfriction = -1\n" + std::string(kState));
+  const fs::path out = dir_ / "out.h5";
+  auto result = testing::run_wheelwear("run " + scene.string() + " -o " + out.string() + " -q");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("contact.friction"), std::string::npos) << result.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(dir_ / "out.h5.partial"));
+
+  write("out.h5", "earlier results");
+  result = testing::run_wheelwear("run " + scene.string() + " -o " + out.string() +
+                                  " -q --overwrite");
+  EXPECT_EQ(result.exit_code, 2);
+  std::ifstream in(out);
+  std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(content, "earlier results");
+}
+
+}  // namespace
+}  // namespace wheelwear::pipeline
