@@ -85,6 +85,8 @@ void write_text(H5::H5File& file, const std::string& path, const std::string& te
   const H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
   H5::DataSet data = file.createDataSet(path, type, H5::DataSpace(H5S_SCALAR));
   data.write(text, type);
+  // Every dataset carries units; a text has none to give.
+  write_string_attribute(data, "units", "text");
   write_string_attribute(data, "description", description);
 }
 

@@ -2,6 +2,7 @@
 
 #include "wheelwear/pipeline/scene.hpp"
 
+#include <H5Cpp.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -96,6 +97,44 @@ TEST_F(SceneTest, CollectiveFromCsvWithOptionalColumnsAndCreepages) {
   EXPECT_DOUBLE_EQ(s.states[1].creepages_left->phi, 0.5);
   EXPECT_DOUBLE_EQ(s.states[0].weight, 3.0);
   EXPECT_EQ(s.states[1].line, 4);
+}
+
+TEST_F(SceneTest, CollectiveFromHdf5AsAMultibodyExportWritesIt) {
+  // One 1-D dataset per column in the file's root group; NaN leaves an optional value unset.
+  const fs::path file = dir_ / "states.h5";
+  {
+    H5::H5File h5(file.string(), H5F_ACC_TRUNC);
+    auto column = [&](const char* name, std::vector<double> values) {
+      const hsize_t n = values.size();
+      H5::DataSet set =
+          h5.createDataSet(name, H5::PredType::NATIVE_DOUBLE, H5::DataSpace(1, &n));
+      set.write(values.data(), H5::PredType::NATIVE_DOUBLE);
+    };
+    column("dy_m", {0.001, 0.007});
+    column("axle_load_N", {110e3, 120e3});
+    column("speed_m_s", {40, 20});
+    column("lateral_force_left_N", {NAN, 30e3});
+    column("weight", {2, 1});
+  }
+  const Scene s = parse_scene("[load_collective]\nfile = \"states.h5\"\n", dir_);
+  ASSERT_EQ(s.states.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.states[1].dy, 0.007);
+  EXPECT_DOUBLE_EQ(s.states[1].load_right, 60e3);
+  EXPECT_FALSE(s.states[0].lateral_force_left.has_value());
+  ASSERT_TRUE(s.states[1].lateral_force_left.has_value());
+  EXPECT_DOUBLE_EQ(*s.states[1].lateral_force_left, 30e3);
+  EXPECT_DOUBLE_EQ(s.states[0].weight, 2.0);
+
+  // A truncated file is an input error naming the file, not a crash.
+  const fs::path broken = dir_ / "broken.h5";
+  fs::copy_file(file, broken);
+  fs::resize_file(broken, fs::file_size(broken) / 3);
+  try {
+    parse_scene("[load_collective]\nfile = \"broken.h5\"\n", dir_);
+    FAIL() << "a truncated HDF5 file was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("broken.h5"), std::string::npos) << error.what();
+  }
 }
 
 TEST(DefaultScene, HasAThousandStatesOfTangentAndCurves) {

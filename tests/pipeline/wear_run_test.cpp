@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -105,6 +106,27 @@ TEST_F(WearRunTest, OneAndTwoThreadsGiveIdenticalFiles) {
   ASSERT_EQ(testing::run_wheelwear(base + (dir_ / "t1.h5").string() + " --threads 1").exit_code, 0);
   ASSERT_EQ(testing::run_wheelwear(base + (dir_ / "t2.h5").string() + " --threads 2").exit_code, 0);
   expect_identical(dir_ / "t1.h5", dir_ / "t2.h5");
+  // HDF5's own comparison finds no difference outside /run_info (timings, host) either.
+  const std::string h5diff = "h5diff --exclude-path /run_info " + (dir_ / "t1.h5").string() +
+                             " " + (dir_ / "t2.h5").string() + " > /dev/null";
+  EXPECT_EQ(std::system(h5diff.c_str()), 0);
+}
+
+TEST_F(WearRunTest, EveryDatasetHasUnits) {
+  const fs::path out = dir_ / "units.h5";
+  run(small_scene(10e3, 10e3, 1e-3), out);
+  // h5dump lists the attributes of every dataset; count datasets and their units.
+  const std::string listing = (dir_ / "listing.txt").string();
+  ASSERT_EQ(std::system(("h5dump -H -A " + out.string() + " > " + listing).c_str()), 0);
+  std::ifstream in(listing);
+  std::string line;
+  int datasets = 0, units = 0;
+  while (std::getline(in, line)) {
+    if (line.find("DATASET \"") != std::string::npos) ++datasets;
+    if (line.find("ATTRIBUTE \"units\"") != std::string::npos) ++units;
+  }
+  EXPECT_GT(datasets, 30);
+  EXPECT_EQ(units, datasets);
 }
 
 TEST_F(WearRunTest, KilledRunResumesToIdenticalResults) {
@@ -209,6 +231,32 @@ TEST_F(WearRunTest, WornAreaEqualsAccumulatedWearAndGrowsMonotonically) {
     // 0.5 % for 0.1 mm on the 15 mm flange root), the wear on the flange back's side is
     // dropped, and the polygon closes over re-interpolated ends: 1 % covers these.
     EXPECT_NEAR(area, accumulated, 0.01 * accumulated) << "step " << next;
+  }
+}
+
+TEST_F(WearRunTest, SeparateWheelsOfAMirroredCollectiveWearAlike) {
+  // A state and its mirror image: the left wheel of one is the right wheel of the other, so
+  // separately evolved left and right profiles stay identical, and equal the shared profile.
+  const std::string states =
+      "[[load_collective.state]]\ndy_m = 0.003\nyaw_rad = 1e-3\nload_left_N = 60e3\n"
+      "load_right_N = 50e3\nspeed_m_s = 30\ncurve_radius_m = 1000\n"
+      "[[load_collective.state]]\ndy_m = -0.003\nyaw_rad = -1e-3\nload_left_N = 50e3\n"
+      "load_right_N = 60e3\nspeed_m_s = 30\ncurve_radius_m = -1000\n";
+  const std::string common =
+      "[contact]\ngrid_nx = 10\ngrid_ny = 10\nstrip_width_m = 0.2e-3\n"
+      "[run]\ndistance_m = 20e3\nstep_distance_m = 10e3\n";
+  const fs::path separate = dir_ / "separate.h5", shared = dir_ / "shared.h5";
+  run(common + "wheels = \"separate\"\n" + states, separate);
+  run(common + states, shared);
+  const ResultsFile fs_ = ResultsFile::read(separate), fh = ResultsFile::read(shared);
+  ASSERT_EQ(fs_.completed_steps(), 3);
+  for (int step = 0; step < 3; ++step) {
+    EXPECT_EQ(fs_.read_step_array(step, "wheel_left/z"), fs_.read_step_array(step, "wheel_right/z"));
+    const auto left = fs_.read_step_array(step, "wheel_left/wear_rate/depth");
+    const auto one = fh.read_step_array(step, "wheel/wear_rate/depth");
+    ASSERT_EQ(left.size(), one.size());
+    // The shared profile weighs each wheel by one half: the same sum up to rounding.
+    for (std::size_t i = 0; i < left.size(); ++i) EXPECT_NEAR(left[i], one[i], 1e-12 * one[i]);
   }
 }
 
