@@ -29,7 +29,7 @@ struct RunArgs {
   bool overwrite = false;
   bool quiet = false;
   bool json = false;
-  bool show_default = false;
+  std::string export_default;
 };
 
 std::string duration(double seconds) {
@@ -111,8 +111,20 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
 }
 
 void run(const RunArgs& args) {
-  if (args.show_default) {
-    std::cout << pipeline::default_scene_text();
+  if (!args.export_default.empty()) {
+    const std::filesystem::path dir(args.export_default);
+    std::filesystem::create_directories(dir);
+    for (const auto& [name, text] :
+         {std::pair{"default.toml", pipeline::default_scene_text()},
+          std::pair{"default_states.csv", pipeline::default_states_text()}}) {
+      if (std::filesystem::exists(dir / name) && !args.overwrite) {
+        throw InputError("--export-default-scene: " + (dir / name).string() +
+                         " exists; pass --overwrite to replace it");
+      }
+      profiles::write_file_atomically(dir / name, text);
+    }
+    std::cout << "wrote " << (dir / "default.toml").string() << " and its load collective; run it "
+              << "with: wheelwear run " << (dir / "default.toml").string() << " -o run.h5\n";
     return;
   }
   std::unique_ptr<tbb::global_control> threads;
@@ -157,7 +169,7 @@ void add_run_command(CLI::App& app) {
       "Wear-evolution run of a scene: evaluate every wheelset state of the load collective, wear\n"
       "the wheel profile step by step, record everything in one HDF5 file.\n"
       "Without SCENE the built-in default scene runs (S1002 on 60E1 1:40, 1000 states of a mixed\n"
-      "line, 100 km); `wheelwear run --show-default-scene > my.toml` prints it to start from.\n"
+      "line, 100 km); `wheelwear run --export-default-scene DIR` writes it out to start from.\n"
       "Each step is published atomically: a killed run keeps every finished step and continues\n"
       "with --resume. Plots: scripts/plot_run.py FILE.");
   cmd->add_option("scene", args->scene, "scene file (TOML); the built-in default when omitted")
@@ -171,8 +183,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("--overwrite", args->overwrite, "replace an existing output file");
   cmd->add_flag("-q,--quiet", args->quiet, "no progress on stderr");
   cmd->add_flag("--json", args->json, "print the summary as JSON");
-  cmd->add_flag("--show-default-scene", args->show_default,
-                "print the built-in scene (TOML) and exit");
+  cmd->add_option("--export-default-scene", args->export_default,
+                  "write the built-in scene (default.toml, default_states.csv) into this "
+                  "directory and exit");
   cmd->callback([args] { run(*args); });
 }
 

@@ -83,6 +83,8 @@ Scene load_scene(const std::filesystem::path& path);
 
 /// The built-in default scene's text (data/scenes/default.toml).
 std::string_view default_scene_text();
+/// The built-in default scene's load collective (data/scenes/default_states.csv).
+std::string_view default_states_text();
 /// The built-in default scene, with its collective (data/scenes/default_states.csv).
 Scene default_scene();
 
