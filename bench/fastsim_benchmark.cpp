@@ -94,4 +94,19 @@ void BM_FastsimSdecWithFields(benchmark::State& state) {
 }
 BENCHMARK(BM_FastsimSdecWithFields)->Arg(20)->Arg(50);
 
+// The same with the solution's storage reused from call to call, as a loop over contacts does:
+// no allocation per call.
+void BM_FastsimSdecWithFieldsReused(benchmark::State& state) {
+  wear::FastsimOptions options;
+  options.nx = options.ny = static_cast<int>(state.range(0));
+  options.cell_fields = true;
+  wear::TangentialSolution solution;
+  for (auto _ : state) {
+    wear::fastsim(wear::FastsimMethod::sdec, kPatch, kSpin, kLoad, kSteel, options, solution);
+    benchmark::DoNotOptimize(solution.frictional_work);
+  }
+  state.SetItemsProcessed(state.iterations() * options.nx * options.ny);
+}
+BENCHMARK(BM_FastsimSdecWithFieldsReused)->Arg(50);
+
 }  // namespace

@@ -54,6 +54,8 @@ ModelWear wear_of(const WearArgs& args, const contactgeom::WheelRailPatch& p,
   wear::FastsimOptions options;
   options.nx = options.ny = args.cells;
   options.cell_fields = true;
+  // The Tgamma map needs the cells' positions; the wear alone needs work, slip and pressure.
+  options.field_set = args.map.empty() ? wear::CellFieldSet::wear : wear::CellFieldSet::all;
   ModelWear out{model,
                 wear::fastsim(mp.method, mp.region, args.in.creepages_at(p),
                               {p.normal_force, args.in.mu}, args.in.material(), options),

@@ -121,3 +121,26 @@ TEST(FastsimSecondOrder, FieldsAddUpToTheTotals) {
 
 }  // namespace
 }  // namespace wheelwear::wear
+
+namespace wheelwear::wear {
+namespace {
+
+TEST(FastsimSecondOrder, StripThroughOHasNoSpuriousTraction) {
+  // A 5 x 5 grid whose middle strip passes through O up to rounding (y = 1e-18), with a spin so
+  // small that the contact is nearly linear: the adhesion-to-slip search once put that strip's
+  // trailing cell at -1e8 Pa (Fy 200 times too large). The linear theory is the reference; the
+  // coarse grid's own error is a few per cent, 10 % bounds it.
+  const contactgeom::Sdec patch{0.00425, 0.006071429, -0.4};
+  const ContactLoad load{54042.874, 0.35};
+  const Creepages spin{0.0, 0.0, 1.968612e-04};
+  FastsimOptions o;
+  o.nx = o.ny = 5;
+  o.scheme = FastsimScheme::second_order;
+  const CreepForces f = fastsim(FastsimMethod::sdec, patch, spin, load, {80e9, 0.25}, o).forces;
+  const CreepForces linear = linear_sdec_forces(patch, spin, {80e9, 0.25});
+  EXPECT_NEAR(f.Fy, linear.Fy, 0.1 * std::abs(linear.Fy));
+  EXPECT_NEAR(f.Fx, linear.Fx, 0.1 * std::abs(linear.Fx));
+}
+
+}  // namespace
+}  // namespace wheelwear::wear

@@ -189,6 +189,44 @@ TEST(FastsimFields, AddUpToTheTotalsAndDissipateOnlyInSlip) {
   EXPECT_EQ(forces_only.slip_cells, s.slip_cells);
 }
 
+// The slip magnitude and the strip positions are stored as such; the wear field set fills
+// the same numbers for what it fills and leaves the rest empty.
+TEST(FastsimFields, WearFieldSetMatchesTheFullSet) {
+  for (const FastsimScheme scheme : {FastsimScheme::kalker, FastsimScheme::second_order}) {
+    FastsimOptions options = grid(37, 21);  // neither a multiple of the march's blocks of 8
+    options.cell_fields = true;
+    options.scheme = scheme;
+    const Creepages v{1e-3, 5e-4, 0.8};
+    const TangentialSolution all = fastsim(FastsimMethod::sdec, kSdec, v, kLoad, kSteel, options);
+    options.field_set = CellFieldSet::wear;
+    const TangentialSolution wear = fastsim(FastsimMethod::sdec, kSdec, v, kLoad, kSteel, options);
+    const CellFields& a = *all.fields;
+    const CellFields& w = *wear.fields;
+    ASSERT_EQ(a.slip_norm.size(), 37u * 21u);
+    ASSERT_EQ(w.work.size(), a.work.size());
+    ASSERT_EQ(w.pressure.size(), a.pressure.size());
+    if (scheme == FastsimScheme::kalker) {
+      EXPECT_TRUE(w.px.empty() && w.sx.empty() && w.x.empty() && w.slip.empty());
+    }
+    for (std::size_t k = 0; k < a.work.size(); ++k) {
+      // 4e-16: hypot of the components against the magnitude they were scaled from, a few
+      // roundings of the slip (at most ~1e-2 here) apart.
+      EXPECT_NEAR(a.slip_norm[k], std::hypot(a.sx[k], a.sy[k]), 1e-13 * a.slip_norm[k] + 1e-300);
+      // The same arithmetic in both sets: equal to rounding.
+      EXPECT_NEAR(w.work[k], a.work[k], 1e-12 * a.work[k]);
+      EXPECT_NEAR(w.slip_norm[k], a.slip_norm[k], 1e-12 * a.slip_norm[k]);
+      EXPECT_DOUBLE_EQ(w.pressure[k], a.pressure[k]);
+    }
+    for (int j = 0; j < a.ny; ++j) {
+      EXPECT_EQ(a.strip_y[j], a.y[static_cast<std::size_t>(j) * a.nx]);
+      EXPECT_EQ(w.strip_y[j], a.strip_y[j]);
+      EXPECT_EQ(w.dx[j], a.dx[j]);
+    }
+    EXPECT_NEAR(wear.forces.Fx, all.forces.Fx, 1e-12 * kLoad.N);
+    EXPECT_NEAR(wear.frictional_work, all.frictional_work, 1e-12 * all.frictional_work);
+  }
+}
+
 // In full sliding under a uniform creepage vx the work done per rolled metre is mu N |vx|
 // (energy balance); the discrete sum telescopes to it up to the bound's quadrature error.
 TEST(FastsimFields, FullSlidingDissipatesMuNTimesCreepage) {

@@ -46,6 +46,32 @@ TEST(WearDistribution, ConservesTheWornArea) {
   }
 }
 
+// The wear field set carries everything accumulate_wear() reads: the same distribution.
+TEST(WearDistribution, WearFieldSetGivesTheSameWear) {
+  const Sdec patch{5e-3, 4e-3, 0.4};
+  const ContactLoad load{60e3, 0.3};
+  FastsimOptions options;
+  options.nx = 50;
+  options.ny = 45;
+  options.cell_fields = true;
+  for (const WearLaw& law : {*default_wear_law("usfd"), *default_wear_law("archard")}) {
+    options.field_set = CellFieldSet::all;
+    const TangentialSolution all =
+        fastsim(FastsimMethod::sdec, patch, {2e-3, 1e-3, 1.5}, load, kSteel, options);
+    options.field_set = CellFieldSet::wear;
+    const TangentialSolution wear =
+        fastsim(FastsimMethod::sdec, patch, {2e-3, 1e-3, 1.5}, load, kSteel, options);
+    WearDistribution a = grid(), w = grid();
+    accumulate_wear(*all.fields, kSpeed, law, {0.0, 0.46}, 1.0, a);
+    accumulate_wear(*wear.fields, kSpeed, law, {0.0, 0.46}, 1.0, w);
+    ASSERT_GT(a.area(), 0.0);
+    for (std::size_t k = 0; k < a.depth.size(); ++k) {
+      // Both sets run the same arithmetic: equal to a few roundings.
+      EXPECT_NEAR(w.depth[k], a.depth[k], 1e-12 * a.depth[k]) << law_name(law) << " bin " << k;
+    }
+  }
+}
+
 // Pure rolling wears nothing; the weight (share of running distance) scales the wear exactly.
 TEST(WearDistribution, NoCreepNoWearAndLinearInDistance) {
   const Sdec patch{5e-3, 4e-3, 0.3};

@@ -272,6 +272,33 @@ TEST(WearLaw, StripDispatchMatchesPerCellCalls) {
   }
 }
 
+// Cells given as columns give what the same cells given as CellStates give.
+TEST(WearLaw, ColumnsMatchCellStates) {
+  std::vector<CellState> cells;
+  std::vector<double> pressure, work, slip;
+  for (int i = 0; i < 150; ++i) {  // through every regime of both laws, as above
+    const CellState c{2.2e9 * i / 149.0, 2e8 + 5e6 * i, 0.0007 * i, 20.0};
+    cells.push_back(c);
+    pressure.push_back(c.pressure);
+    work.push_back(c.work_density());
+    slip.push_back(c.slip);
+  }
+  for (std::string_view name : kWearLawNames) {
+    const WearLaw law = *default_wear_law(name);
+    std::vector<double> from_states(cells.size()), from_columns(cells.size());
+    depths_per_passage(law, cells, 0.3e-3, from_states);
+    depths_per_passage(law, CellColumns{pressure, work, slip, 20.0}, 0.3e-3, from_columns);
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      // The same expressions, up to where the multiply by dx is grouped: 4 ulps.
+      EXPECT_DOUBLE_EQ(from_columns[i], from_states[i]) << name << " cell " << i;
+    }
+    std::vector<double> short_output(cells.size() - 1);
+    EXPECT_THROW(
+        depths_per_passage(law, CellColumns{pressure, work, slip, 20.0}, 0.3e-3, short_output),
+        InputError);
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // CSV tables
 

@@ -151,22 +151,25 @@ void fastsim(FastsimMethod method, const contactgeom::Sdec& sdec, const Creepage
     totals = detail::march_second_order(grid, at_origin, flex, bound,
                                         solution.fields ? &*solution.fields : nullptr);
   } else if (options.cell_fields) {
-    totals = detail::march_with_fields(grid, at_origin, flex, bound, *solution.fields);
+    totals = detail::march_with_fields(grid, at_origin, flex, bound, options.field_set,
+                                       *solution.fields);
   } else {
     totals = detail::march(grid, at_origin, flex, bound);
   }
   if (solution.fields) {
     // Semi-elliptic pressure (Eq. 4) of the region the tractions live on, at the cell centres.
-    // Per strip p = (p0/a) sqrt(x_l^2 - x^2), with the strip's own leading edge.
+    // Per strip p = (p0/a) sqrt(x_l^2 - x^2), with the strip's own leading edge and the cell
+    // centres x = x_l - (i + 1/2) dx.
     CellFields& f = *solution.fields;
-    f.pressure.resize(f.x.size());
     const double p0_over_a = region.peak_pressure(load.N) / region.a;
     for (int j = 0; j < f.ny; ++j) {
-      const double xl2 = grid.x_lead[j] * grid.x_lead[j];
-      const std::size_t row = static_cast<std::size_t>(j) * f.nx;
+      const double xl = grid.x_lead[j];
+      const double dx = f.dx[j];
+      const double x_first = xl - 0.5 * dx;
+      double* __restrict pressure = f.pressure.data() + static_cast<std::size_t>(j) * f.nx;
       for (int i = 0; i < f.nx; ++i) {
-        const double x = f.x[row + i];
-        f.pressure[row + i] = p0_over_a * std::sqrt(std::max(xl2 - x * x, 0.0));
+        const double x = x_first - i * dx;
+        pressure[i] = p0_over_a * std::sqrt(std::max((xl - x) * (xl + x), 0.0));
       }
     }
   }

@@ -60,17 +60,20 @@ struct MarchTotals {
   }
 };
 
-/// Sizes and zeroes the per-cell fields for an nx x ny grid of strip width dy (keeping their
-/// storage).
-void prepare_fields(CellFields& fields, int nx, int ny, double dy);
+/// Sizes the per-cell fields of `set` for an nx x ny grid of strip width dy and empties the
+/// others (keeping their storage); zeroes them when `zero`, for marches that write only the
+/// cells that slip.
+void prepare_fields(CellFields& fields, int nx, int ny, double dy, bool zero, CellFieldSet set);
 
 /// Marches every strip from its leading to its trailing edge (Kalker 1982): forces only.
 MarchTotals march(const StripGrid& grid, const Creepages& creepages, const Flexibilities& flex,
                   const BoundLaw& bound);
 
-/// The same march, also filling the per-cell fields.
+/// The same march, also filling the per-cell fields of `set` (every cell; the pressure is left
+/// to the caller); fastsim_fields.cpp.
 MarchTotals march_with_fields(const StripGrid& grid, const Creepages& creepages,
-                              const Flexibilities& flex, const BoundLaw& bound, CellFields& fields);
+                              const Flexibilities& flex, const BoundLaw& bound, CellFieldSet set,
+                              CellFields& fields);
 
 /// Second-order marching of every strip (FastsimScheme::second_order); fills `fields` when it
 /// is not null.

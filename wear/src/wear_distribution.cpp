@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <variant>
 
 #include "wheelwear/input_error.hpp"
 
@@ -11,30 +12,40 @@ namespace wheelwear::wear {
 
 namespace {
 
-// Depth per passage of each strip of the solution [m], one law dispatch per strip.
+// Sum of a strip's depths in four interleaved partial sums, which the compiler keeps in
+// vector registers (a single running sum would wait on every addition).
+double sum_of(const std::vector<double>& values) {
+  double part[4] = {0.0, 0.0, 0.0, 0.0};
+  const std::size_t n = values.size(), whole = n / 4 * 4;
+  for (std::size_t i = 0; i < whole; i += 4) {
+    for (int k = 0; k < 4; ++k) part[k] += values[i + k];
+  }
+  for (std::size_t i = whole; i < n; ++i) part[i - whole] += values[i];
+  return (part[0] + part[1]) + (part[2] + part[3]);
+}
+
+// Depth per passage of each strip of the solution [m]: the law reads the strip's cells as
+// columns of the fields, with one dispatch for the whole patch.
 template <class PerStrip>
 void strip_depths(const CellFields& cells, double speed, const WearLaw& law, PerStrip&& per_strip) {
   require(speed > 0.0 && std::isfinite(speed), "V", speed,
           "the rolling speed must be positive (m/s)");
-  thread_local std::vector<CellState> states;
   thread_local std::vector<double> depth;
-  states.resize(static_cast<std::size_t>(cells.nx));
-  depth.resize(static_cast<std::size_t>(cells.nx));
-  for (int j = 0; j < cells.ny; ++j) {
-    const std::size_t row = static_cast<std::size_t>(j) * cells.nx;
-    for (int i = 0; i < cells.nx; ++i) {
-      const std::size_t c = row + i;
-      // The traction that does the cell's work is its work over its slip (the scheme's mean
-      // over the cell); where a cell adheres it does no work and wears nothing, so its
-      // traction may read 0 there (branch-free: the loop vectorises).
-      const double slip = std::sqrt(cells.sx[c] * cells.sx[c] + cells.sy[c] * cells.sy[c]);
-      states[i] = {cells.pressure[c], cells.work[c] / std::max(slip, 1e-300), slip, speed};
-    }
-    depths_per_passage(law, states, cells.dx[j], depth);
-    double sum = 0.0;
-    for (double d : depth) sum += d;
-    per_strip(j, cells.y[row], sum);
-  }
+  const auto nx = static_cast<std::size_t>(cells.nx);
+  depth.resize(nx);
+  std::visit(
+      [&](const auto& l) {
+        for (int j = 0; j < cells.ny; ++j) {
+          const std::size_t row = static_cast<std::size_t>(j) * nx;
+          const CellColumns columns{{cells.pressure.data() + row, nx},
+                                    {cells.work.data() + row, nx},
+                                    {cells.slip_norm.data() + row, nx},
+                                    speed};
+          l.depths_per_passage(columns, cells.dx[j], depth);
+          per_strip(j, cells.strip_y[j], sum_of(depth));
+        }
+      },
+      law);
 }
 
 }  // namespace

@@ -38,6 +38,15 @@ enum class FastsimScheme {
   second_order,
 };
 
+/// Which per-cell fields a solve with FastsimOptions::cell_fields fills.
+enum class CellFieldSet {
+  all,  ///< every member of CellFields
+  /// What the wear laws and accumulate_wear() read: dx, strip_y, work, slip_norm and pressure.
+  /// Kalker's scheme leaves x, y, px, py, sx, sy and slip empty (less to compute and store);
+  /// the second-order scheme fills them anyway.
+  wear,
+};
+
 /// Discretisation and output options.
 struct FastsimOptions {
   int nx = 50;  ///< cells along x in every strip, >= 1
@@ -45,6 +54,7 @@ struct FastsimOptions {
   TractionBound bound = TractionBound::parabolic;
   FastsimScheme scheme = FastsimScheme::kalker;
   bool cell_fields = false;  ///< also return per-cell tractions, slip and frictional work
+  CellFieldSet field_set = CellFieldSet::all;  ///< which fields, when cell_fields
 
   void validate() const;
 };
@@ -57,9 +67,11 @@ struct CellFields {
   int nx = 0, ny = 0;
   double dy = 0.0;                 ///< strip width [m]
   std::vector<double> dx;          ///< cell length of each strip [m], size ny
+  std::vector<double> strip_y;     ///< lateral position of each strip's centre from O [m], size ny
   std::vector<double> x, y;        ///< cell centre [m]
   std::vector<double> px, py;      ///< tangential traction on the wheel [Pa]
   std::vector<double> sx, sy;      ///< slip (relative velocity / V) [-]; 0 where adhering
+  std::vector<double> slip_norm;   ///< slip magnitude |s| = sqrt(sx^2 + sy^2) [-]
   std::vector<double> work;        ///< frictional work density |p||s| [J/m^2 per m rolled]
   std::vector<double> pressure;    ///< normal pressure of the region at the cell centre [Pa]
   std::vector<std::uint8_t> slip;  ///< 1 where the cell slips, 0 where it adheres

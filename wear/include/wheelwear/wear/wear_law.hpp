@@ -50,4 +50,17 @@ inline void depths_per_passage(const WearLaw& law, std::span<const CellState> ce
   std::visit([&](const auto& l) { l.depths_per_passage(cells, dx, depth); }, law);
 }
 
+/// The same for cells given as columns (CellColumns).
+/// @param depth  output; throws InputError unless depth.size() == cells.work.size() and the
+///               three columns have that size too
+inline void depths_per_passage(const WearLaw& law, const CellColumns& cells, double dx,
+                               std::span<double> depth) {
+  require(depth.size() == cells.work.size(), "depth.size()", static_cast<double>(depth.size()),
+          "must equal the number of cells");
+  require(cells.pressure.size() == depth.size() && cells.slip.size() == depth.size(),
+          "cells.pressure.size()", static_cast<double>(cells.pressure.size()),
+          "the columns pressure, work and slip must have the same size");
+  std::visit([&](const auto& l) { l.depths_per_passage(cells, dx, depth); }, law);
+}
+
 }  // namespace wheelwear::wear

@@ -112,40 +112,61 @@ class ArchardLaw {
   /// the compiler can vectorise across cells.
   void depths_per_passage(std::span<const CellState> cells, double dx,
                           std::span<double> depth) const noexcept {
-    constexpr std::size_t kBlock = 64;
-    double p[kBlock], slip[kBlock], v[kBlock], cell_index[kBlock], k[kBlock];
+    double p[kBlock], slip[kBlock], v[kBlock];
     for (std::size_t start = 0; start < cells.size(); start += kBlock) {
       const std::size_t n = std::min(kBlock, cells.size() - start);
       const CellState* cell = cells.data() + start;
       for (std::size_t i = 0; i < n; ++i) {
-        p[i] = cell[i].pressure * inverse_hardness_;
+        p[i] = cell[i].pressure;
         slip[i] = cell[i].slip;
         v[i] = cell[i].sliding_speed();
-        // an invalid state (NaN, negative) starts far below every grid index and keeps k NaN
-        cell_index[i] = (p[i] >= 0.0) & (v[i] >= 0.0) ? 0.0 : -1e9;
-        k[i] = std::numeric_limits<double>::quiet_NaN();
       }
-      // The grid index of grid_cell(), counted in doubles (exact for small integers) so that
-      // every loop below works on one vector type and vectorises.
-      const double speed_cells = speed_cells_;
-      for (const double bound : p_bounds_) {
-        for (std::size_t i = 0; i < n; ++i) cell_index[i] += p[i] >= bound ? speed_cells : 0.0;
-      }
-      for (const double bound : v_bounds_) {
-        for (std::size_t i = 0; i < n; ++i) cell_index[i] += v[i] >= bound ? 1.0 : 0.0;
-      }
-      // A select per grid cell rather than a gather, which does not vectorise here.
-      for (std::size_t c = 0; c < grid_k_.size(); ++c) {
-        const double index = static_cast<double>(c), k_of_cell = grid_k_[c];
-        for (std::size_t i = 0; i < n; ++i) k[i] = cell_index[i] == index ? k_of_cell : k[i];
-      }
-      for (std::size_t i = 0; i < n; ++i) {
-        depth[start + i] = k[i] * p[i] * slip[i] * dx;
-      }
+      depths_block(p, slip, v, n, dx, depth.data() + start);
+    }
+  }
+  /// The same for cells given as columns (pressure and slip are read, not the work).
+  void depths_per_passage(const CellColumns& cells, double dx,
+                          std::span<double> depth) const noexcept {
+    double v[kBlock];
+    for (std::size_t start = 0; start < cells.slip.size(); start += kBlock) {
+      const std::size_t n = std::min(kBlock, cells.slip.size() - start);
+      const double* slip = cells.slip.data() + start;
+      for (std::size_t i = 0; i < n; ++i) v[i] = slip[i] * cells.speed;
+      depths_block(cells.pressure.data() + start, slip, v, n, dx, depth.data() + start);
     }
   }
 
  private:
+  static constexpr std::size_t kBlock = 64;  // cells per block of depths_block()
+
+  // Depths of n <= kBlock cells of pressure p [Pa], slip and sliding speed v [m/s] into depth[]:
+  // the grid index of grid_cell() counted in doubles (exact for small integers) so that every
+  // loop works on one vector type and vectorises, then a select per grid cell rather than a
+  // gather, which does not vectorise here.
+  void depths_block(const double* __restrict pressure, const double* __restrict slip,
+                    const double* __restrict v, std::size_t n, double dx,
+                    double* __restrict depth) const noexcept {
+    double p[kBlock], cell_index[kBlock], k[kBlock];
+    for (std::size_t i = 0; i < n; ++i) {
+      p[i] = pressure[i] * inverse_hardness_;
+      // an invalid state (NaN, negative) starts far below every grid index and keeps k NaN
+      cell_index[i] = (p[i] >= 0.0) & (v[i] >= 0.0) ? 0.0 : -1e9;
+      k[i] = std::numeric_limits<double>::quiet_NaN();
+    }
+    const double speed_cells = speed_cells_;
+    for (const double bound : p_bounds_) {
+      for (std::size_t i = 0; i < n; ++i) cell_index[i] += p[i] >= bound ? speed_cells : 0.0;
+    }
+    for (const double bound : v_bounds_) {
+      for (std::size_t i = 0; i < n; ++i) cell_index[i] += v[i] >= bound ? 1.0 : 0.0;
+    }
+    for (std::size_t c = 0; c < grid_k_.size(); ++c) {
+      const double index = static_cast<double>(c), k_of_cell = grid_k_[c];
+      for (std::size_t i = 0; i < n; ++i) k[i] = cell_index[i] == index ? k_of_cell : k[i];
+    }
+    for (std::size_t i = 0; i < n; ++i) depth[i] = k[i] * p[i] * slip[i] * dx;
+  }
+
   // The regions tile the quadrant, so the distinct inner bounds of all regions cut it into a
   // grid of cells that each lie in exactly one region: a lookup is two counts and a read.
   int grid_cell(double p_over_h, double sliding_speed) const noexcept {

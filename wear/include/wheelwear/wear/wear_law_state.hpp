@@ -2,6 +2,8 @@
 /// The local state of one cell of a contact patch, as the wear laws read it, and the unit
 /// conventions the laws share.
 
+#include <span>
+
 namespace wheelwear::wear {
 
 /// Local state of one cell of the tangential solution (FASTSIM's CellFields plus the patch's
@@ -21,6 +23,17 @@ struct CellState {
 
   /// Throws InputError unless every field is finite and >= 0.
   void validate() const;
+};
+
+/// The states of a row of cells as columns (one value per cell in each), the layout a patch's
+/// per-cell fields already have: the laws read them without building a CellState per cell.
+/// Cell i has pressure[i], work density work[i] = |tau||s| and slip[i]; all share `speed`.
+/// The spans have the same size (not checked); the per-cell rules of CellState apply.
+struct CellColumns {
+  std::span<const double> pressure;  ///< normal pressure p [Pa], >= 0
+  std::span<const double> work;      ///< frictional work density |tau||s| [N/m^2], >= 0
+  std::span<const double> slip;      ///< slip magnitude |s| [-], >= 0
+  double speed = 0.0;                ///< rolling speed V [m/s], >= 0
 };
 
 }  // namespace wheelwear::wear

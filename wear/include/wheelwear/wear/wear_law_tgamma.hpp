@@ -119,25 +119,18 @@ class TgammaLaw {
   void depths_per_passage(std::span<const CellState> cells, double dx,
                           std::span<double> depth) const noexcept {
     constexpr std::size_t kBlock = 64;
-    double x[kBlock], k[kBlock];
+    double work[kBlock];
     for (std::size_t start = 0; start < cells.size(); start += kBlock) {
       const std::size_t n = std::min(kBlock, cells.size() - start);
       const CellState* cell = cells.data() + start;
-      const Row first = rows_[0];  // copies: stores to k[] cannot alias them
-      for (std::size_t i = 0; i < n; ++i) {
-        x[i] = cell[i].work_density() * kPaToNPerMm2;
-        k[i] = rate(first, x[i]);
-      }
-      for (std::size_t j = 1; j < rows_.size(); ++j) {  // regime j starts where j-1 ends
-        const Row row = rows_[j];
-        const double lower = rows_[j - 1].upper;
-        for (std::size_t i = 0; i < n; ++i) k[i] = x[i] >= lower ? rate(row, x[i]) : k[i];
-      }
-      constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-      for (std::size_t i = 0; i < n; ++i) {
-        depth[start + i] = (x[i] >= 0.0 ? k[i] : nan) * dx * rate_to_depth_;
-      }
+      for (std::size_t i = 0; i < n; ++i) work[i] = cell[i].work_density();
+      depths_from_work(work, n, dx, depth.data() + start);
     }
+  }
+  /// The same for cells given as columns (only their work densities are read).
+  void depths_per_passage(const CellColumns& cells, double dx,
+                          std::span<double> depth) const noexcept {
+    depths_from_work(cells.work.data(), cells.work.size(), dx, depth.data());
   }
 
  private:
@@ -150,6 +143,24 @@ class TgammaLaw {
   static double rate(const Row& row, double x) noexcept {
     const double line = row.slope * x + row.intercept;
     return line > row.floor ? line : row.floor;
+  }
+  // Depths of n cells of work densities work[] [N/m^2] into depth[], with the regimes in the
+  // outer loop so that the loops over cells vectorise.
+  void depths_from_work(const double* __restrict work, std::size_t n, double dx,
+                        double* __restrict depth) const noexcept {
+    const Row first = rows_[0];  // copies: stores to depth[] cannot alias them
+    for (std::size_t i = 0; i < n; ++i) depth[i] = rate(first, work[i] * kPaToNPerMm2);
+    for (std::size_t j = 1; j < rows_.size(); ++j) {  // regime j starts where j-1 ends
+      const Row row = rows_[j];
+      const double lower = rows_[j - 1].upper;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double x = work[i] * kPaToNPerMm2;
+        depth[i] = x >= lower ? rate(row, x) : depth[i];
+      }
+    }
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    const double scale = dx * rate_to_depth_;
+    for (std::size_t i = 0; i < n; ++i) depth[i] = (work[i] >= 0.0 ? depth[i] : nan) * scale;
   }
   std::vector<TgammaRegime> regimes_;
   std::vector<Row> rows_;
