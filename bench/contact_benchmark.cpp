@@ -1,10 +1,13 @@
 // Wheel/rail contact: geometry + Kik-Piotrowski normal problem + SDEC regularisation for one
-// position of an S1002 wheel on a 60E1 rail (1:40), 0.1 mm strips, Fz = 55 kN.
+// position of an S1002 wheel on a 60E1 rail (1:40), 0.1 mm strips, Fz = 55 kN; a rolled wheel,
+// as the rigid wheelset has on every call; the rigid wheelset itself, with and without a
+// prescribed lateral force.
 
 #include <benchmark/benchmark.h>
 
 #include "wheelwear/contactgeom/kik_piotrowski.hpp"
 #include "wheelwear/contactgeom/wheel_rail.hpp"
+#include "wheelwear/contactgeom/wheelset.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 
@@ -30,6 +33,46 @@ void BM_ContactGeometry(benchmark::State& state) {
   state.counters["patches"] = static_cast<double>(patches);
 }
 BENCHMARK(BM_ContactGeometry)->Arg(0)->Arg(40)->Arg(-40)->Arg(55)->Unit(benchmark::kMicrosecond);
+
+// The same with the wheel rolled by -0.5 mrad (what a wheelset 3 mm off centre has): the gap
+// maps each rail point onto the unrolled wheel profile.
+void BM_ContactGeometryRolled(benchmark::State& state) {
+  contactgeom::WheelsetPose pose;
+  pose.dy = static_cast<double>(state.range(0)) * 1e-4;
+  pose.roll = -0.5e-3;
+  std::size_t patches = 0;
+  for (auto _ : state) {
+    const auto contact = contactgeom::solve_wheel_rail(pair(), pose, 55e3);
+    patches = contact.patches.size();
+    benchmark::DoNotOptimize(contact.vertical_force);
+  }
+  state.counters["patches"] = static_cast<double>(patches);
+}
+BENCHMARK(BM_ContactGeometryRolled)->Arg(0)->Arg(40)->Arg(55)->Unit(benchmark::kMicrosecond);
+
+// A rigid wheelset (both wheels, the roll from both touching) at a lateral shift (0.1 mm), 55 kN
+// per wheel; range(1) = 1: the left wheel's lateral force prescribed at 20 kN.
+void BM_Wheelset(benchmark::State& state) {
+  const contactgeom::WheelsetOnTrack track{pair(), pair()};
+  contactgeom::WheelsetState s;
+  s.dy = static_cast<double>(state.range(0)) * 1e-4;
+  s.vertical_force_left = s.vertical_force_right = 55e3;
+  if (state.range(1) == 1) s.lateral_force_left = 20e3;
+  contactgeom::WheelsetContact contact;
+  for (auto _ : state) {
+    contact = contactgeom::solve_wheelset(track, s);
+    benchmark::DoNotOptimize(contact.left.vertical_force);
+  }
+  state.counters["roll_urad"] = contact.roll * 1e6;
+  state.counters["touches"] = contact.touch_evaluations;
+  state.counters["solves"] = contact.contact_solves;
+}
+BENCHMARK(BM_Wheelset)
+    ->Args({0, 0})
+    ->Args({30, 0})
+    ->Args({60, 0})
+    ->Args({60, 1})
+    ->Unit(benchmark::kMicrosecond);
 
 // The normal problem alone on a Hertzian gap of 121 strips of 0.1 mm (a 12 mm patch).
 void BM_NormalKP(benchmark::State& state) {

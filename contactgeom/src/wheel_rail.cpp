@@ -5,128 +5,18 @@
 #include <limits>
 #include <optional>
 
+#include "wheel_rail_gap.hpp"
+#include "wheel_rail_solve.hpp"
 #include "wheelwear/contactgeom/sdec_regularisation.hpp"
 #include "wheelwear/input_error.hpp"
-#include "wheelwear/profiles/track.hpp"
 
 namespace wheelwear::contactgeom {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// The wheel profile rotated by `roll` about its point at y = 0 (small angles are the use).
-profiles::Profile rolled(const profiles::Profile& wheel, double roll) {
-  const auto pivot = wheel.surface_at(0.0);
-  const double z0 = pivot ? pivot->z : 0.0;
-  const double c = std::cos(roll), s = std::sin(roll);
-  profiles::PointList points = wheel.resample(0.1e-3);
-  for (auto& p : points) {
-    const double y = p.x(), z = p.y() - z0;  // a Point holds (y, z)
-    p = profiles::Point(c * y - s * z, s * y + c * z + z0);
-  }
-  // The points are already smooth: interpolate them, do not smooth a second time.
-  profiles::CurveOptions curve = wheel.curve_options();
-  curve.smoothing_length = 0.0;
-  return profiles::Profile(points, wheel.info(), curve);
-}
-
-// The gap sampled on uniform lateral windows of the rail frame where contact is possible.
-struct GapSamples {
-  double dy = 0.0;
-  std::vector<double> y;        // rail-frame lateral coordinate [m]
-  std::vector<double> h;        // vertical gap z_rail - z_wheel [m]
-  std::vector<double> z_wheel;  // wheel surface height (wheel frame) [m]
-  std::vector<int> window;      // index of the window a sample belongs to
-  double h_min = kInf;
-  std::vector<std::size_t> end_samples;  // samples that lie at the end of a profile
-};
-
-class Geometry {
- public:
-  Geometry(const WheelRailPair& pair, const WheelsetPose& pose, const WheelRailOptions& options)
-      : pair_(pair), options_(options) {
-    if (pose.roll != 0.0) rolled_wheel_.emplace(rolled(pair.wheel, pose.roll));
-    const profiles::ProfilePoint gauge = profiles::gauge_point(pair.rail, pair.gauge_depth);
-    // The flange back lies (gauge - back_to_back)/2 on the gauge side (-y) of the gauge point.
-    shift_ =
-        gauge.point.x() - 0.5 * (pair.gauge - pair.back_to_back) - pair.flange_back_y + pose.dy;
-    const auto tape = pair.wheel.surface_at(0.0);
-    z_tape_ = tape ? tape->z : 0.0;
-  }
-
-  const profiles::Profile& wheel() const { return rolled_wheel_ ? *rolled_wheel_ : pair_.wheel; }
-  double shift() const { return shift_; }
-  double z_tape() const { return z_tape_; }
-
-  // Vertical gap at rail-frame y, and the wheel height there; nullopt outside either profile.
-  std::optional<std::pair<double, double>> gap(double y) const {
-    const auto r = pair_.rail.surface_at(y);
-    const auto w = wheel().surface_at(y - shift_);
-    if (!r || !w) return std::nullopt;
-    return std::make_pair(r->z - w->z, w->z);
-  }
-
-  void sample(GapSamples& g) const {
-    const double lo = std::max(pair_.rail.y_min(), wheel().y_min() + shift_);
-    const double hi = std::min(pair_.rail.y_max(), wheel().y_max() + shift_);
-    g = GapSamples{};
-    g.dy = options_.strip_width;
-    if (!(hi > lo)) return;
-    // Coarse scan, then fine samples only where the gap is within the margin of its minimum.
-    const int coarse = static_cast<int>(std::floor((hi - lo) / options_.scan_spacing)) + 1;
-    std::vector<double> hc(static_cast<std::size_t>(coarse), kInf);
-    double hc_min = kInf;
-    for (int i = 0; i < coarse; ++i) {
-      if (const auto v = gap(lo + i * options_.scan_spacing)) hc[i] = v->first;
-      hc_min = std::min(hc_min, hc[i]);
-    }
-    if (!std::isfinite(hc_min)) return;
-    int window = -1;
-    for (int i = 0; i < coarse;) {
-      if (!(hc[i] < hc_min + options_.scan_margin)) {
-        ++i;
-        continue;
-      }
-      int end = i;
-      while (end + 1 < coarse && hc[end + 1] < hc_min + options_.scan_margin) ++end;
-      const double from = std::max(lo, lo + (i - 1) * options_.scan_spacing);
-      const double to = std::min(hi, lo + (end + 1) * options_.scan_spacing);
-      const bool low_end = i == 0, high_end = end == coarse - 1;
-      ++window;
-      const std::size_t first = g.h.size();
-      for (double y = from; y <= to; y += g.dy) {
-        const auto v = gap(y);
-        if (!v) continue;
-        g.y.push_back(y);
-        g.h.push_back(v->first);
-        g.z_wheel.push_back(v->second);
-        g.window.push_back(window);
-        g.h_min = std::min(g.h_min, v->first);
-      }
-      // A contact that reaches these samples is cut off by the end of a profile.
-      if (low_end && g.h.size() > first) g.end_samples.push_back(first);
-      if (high_end && g.h.size() > first) g.end_samples.push_back(g.h.size() - 1);
-      i = end + 1;
-    }
-  }
-
-  // Contact angle at rail-frame y: the rail surface's slope, + where it falls towards -y
-  // (the gauge side), as on the gauge corner and flange contact.
-  double contact_angle(double y) const {
-    const auto r = pair_.rail.surface_at(y);
-    return r ? std::atan(-r->dz_dy) : 0.0;
-  }
-
-  const WheelRailPair& pair() const { return pair_; }
-
- private:
-  const WheelRailPair& pair_;
-  const WheelRailOptions& options_;
-  std::optional<profiles::Profile> rolled_wheel_;
-  double shift_ = 0.0;
-  double z_tape_ = 0.0;
-};
+using detail::CoarseScan;
+using detail::GapSamples;
+using detail::WheelRailGap;
 
 // One run of samples where the surfaces interpenetrate at the rigid approach.
 struct Run {
@@ -134,25 +24,9 @@ struct Run {
   double y_O = 0.0, h_O = 0.0;      // gap minimum (parabola through the lowest sample)
 };
 
-// The gap minimum of samples [first, last], refined by a parabola through its neighbours.
 Run with_minimum(const GapSamples& g, std::size_t first, std::size_t last) {
-  Run run{first, last};
-  std::size_t k = first;
-  for (std::size_t j = first; j <= last; ++j)
-    if (g.h[j] < g.h[k]) k = j;
-  run.y_O = g.y[k];
-  run.h_O = g.h[k];
-  if (k > 0 && k + 1 < g.h.size() && g.window[k - 1] == g.window[k] &&
-      g.window[k + 1] == g.window[k]) {
-    const double hm = g.h[k - 1], h0 = g.h[k], hp = g.h[k + 1];
-    const double curvature = hm - 2.0 * h0 + hp;
-    if (curvature > 0.0) {
-      const double offset = 0.5 * (hm - hp) / curvature;  // in samples, |offset| <= 1/2
-      run.y_O = g.y[k] + offset * g.dy;
-      run.h_O = h0 - 0.25 * (hm - hp) * offset;
-    }
-  }
-  return run;
+  const detail::GapMinimum m = detail::refined_minimum(g, first, last);
+  return Run{first, last, m.y, m.h};
 }
 
 // Runs of samples where the surfaces interpenetrate at the rigid approach. A run whose virtual
@@ -198,60 +72,75 @@ struct Evaluation {
   double steepest = 0.0;
 };
 
-Evaluation evaluate(const Geometry& geometry, const GapSamples& g, double approach, double E_star,
-                    const WheelRailOptions& options, bool details) {
+// The details of one Kik-Piotrowski patch of the region whose gap minimum lies at rail-frame
+// y_O, with contact angle `angle`; its strips' s is measured from y_O along the contact plane.
+WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch, double y_O_run,
+                              double angle, double E_star) {
+  const double c = std::cos(angle);
+  WheelRailPatch p;
+  p.kp = patch;
+  p.contact_angle = angle;
+  p.normal_force = patch.normal_force;
+  p.pmax = patch.pmax;
+  // O of the KP patch lies at s_O from the run's minimum, along the contact plane.
+  const double y_O = y_O_run - patch.s_O * c;
+  p.y_rail = -y_O;
+  const auto w = geometry.wheel_at(y_O);
+  const auto r = geometry.pair().rail.surface_at(y_O);
+  // The wheel's material point at O (the unrolled profile's, which a roll does not move).
+  p.y_wheel = w ? -w->y : -(y_O - geometry.shift());
+  p.s_wheel = w ? w->s : 0.0;
+  p.rolling_radius = geometry.rolling_radius(w ? w->z : geometry.z_tape());
+  p.measures = measure_patch(patch);
+  p.sdec = regularise_sdec(p.measures);
+  const double lateral_curvature = 0.5 * ((w ? geometry.pair().wheel.curvature(w->s) : 0.0) +
+                                          (r ? geometry.pair().rail.curvature(r->s) : 0.0));
+  const double longitudinal = c / (2.0 * p.rolling_radius);
+  if (lateral_curvature > 0.0) {
+    p.hertz = hertz_from_load(longitudinal, lateral_curvature, E_star, patch.normal_force);
+    p.hertz_valid = true;
+  }
+  return p;
+}
+
+// The strips of samples [first, last] for the Kik-Piotrowski solver, in increasing s (towards
+// the gauge side, -y in the profile frame), s measured from y_O along the contact plane. The gap
+// along the contact normal is the vertical gap times cos(angle), to second order.
+GapStrips strips_of(const WheelRailGap& geometry, const GapSamples& g, std::size_t first,
+                    std::size_t last, double y_O, double c, std::vector<double>& h,
+                    std::vector<double>& ax) {
+  const std::size_t n = last - first + 1;
+  h.resize(n);
+  ax.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t j = last - k;
+    h[k] = g.h[j] * c;
+    ax[k] = c / (2.0 * geometry.rolling_radius(g.z_wheel[j]));
+  }
+  GapStrips strips;
+  strips.ds = g.dy / c;
+  strips.s_first = -(g.y[last] - y_O) / c;
+  strips.h = h;
+  strips.ax = ax;
+  return strips;
+}
+
+Evaluation evaluate(const WheelRailGap& geometry, const GapSamples& g, double approach,
+                    double E_star, const WheelRailOptions& options, bool details) {
   Evaluation out;
-  std::vector<double> h, ax;
+  thread_local std::vector<double> h, ax;
+  thread_local KpResult kp;
   for (const Run& run : interpenetration_runs(g, approach, options.kp.epsilon)) {
     const double angle = geometry.contact_angle(run.y_O);
     const double c = std::cos(angle);
-    // Strips in increasing s, i.e. towards the gauge side (-y in the profile frame); the gap
-    // measured along the contact normal is the vertical gap times cos(angle), to second order.
-    const std::size_t n = run.last - run.first + 1;
-    h.resize(n);
-    ax.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::size_t j = run.last - k;
-      h[k] = g.h[j] * c;
-      const double radius = geometry.pair().wheel_radius + g.z_wheel[j] - geometry.z_tape();
-      ax[k] = c / (2.0 * radius);
-    }
-    GapStrips strips;
-    strips.ds = g.dy / c;
-    strips.s_first = -(g.y[run.last] - run.y_O) / c;
-    strips.h = h;
-    strips.ax = ax;
-    thread_local KpResult kp;
+    const GapStrips strips = strips_of(geometry, g, run.first, run.last, run.y_O, c, h, ax);
     solve_kp_approach(strips, E_star, approach * c, options.kp, kp);
     if (kp.status != KpStatus::converged) continue;
     for (const KpPatch& patch : kp.patches) {
       out.vertical += patch.normal_force * c;
       out.lateral += patch.normal_force * std::sin(angle);
       out.steepest = std::max(out.steepest, std::abs(angle));
-      if (!details) continue;
-      WheelRailPatch p;
-      p.kp = patch;
-      p.contact_angle = angle;
-      p.normal_force = patch.normal_force;
-      p.pmax = patch.pmax;
-      // O of the KP patch lies at s_O from the run's minimum, along the contact plane.
-      const double y_O = run.y_O - patch.s_O * c;
-      p.y_rail = -y_O;
-      p.y_wheel = -(y_O - geometry.shift());
-      const auto w = geometry.wheel().surface_at(y_O - geometry.shift());
-      const auto r = geometry.pair().rail.surface_at(y_O);
-      p.s_wheel = w ? w->s : 0.0;
-      p.rolling_radius = geometry.pair().wheel_radius + (w ? w->z : 0.0) - geometry.z_tape();
-      p.measures = measure_patch(patch);
-      p.sdec = regularise_sdec(p.measures);
-      const double lateral_curvature = 0.5 * ((w ? geometry.wheel().curvature(w->s) : 0.0) +
-                                              (r ? geometry.pair().rail.curvature(r->s) : 0.0));
-      const double longitudinal = c / (2.0 * p.rolling_radius);
-      if (lateral_curvature > 0.0) {
-        p.hertz = hertz_from_load(longitudinal, lateral_curvature, E_star, patch.normal_force);
-        p.hertz_valid = true;
-      }
-      out.patches.push_back(std::move(p));
+      if (details) out.patches.push_back(describe_patch(geometry, patch, run.y_O, angle, E_star));
     }
   }
   return out;
@@ -286,6 +175,10 @@ void WheelRailOptions::validate() const {
   require(scan_spacing >= strip_width && scan_spacing <= 5e-3, "scan_spacing", scan_spacing,
           "the scan spacing must lie between the strip width and 5 mm");
   require(scan_margin > 0.0, "scan_margin", scan_margin, "must be positive");
+  require(lateral_tolerance > 0.0 && lateral_tolerance < 0.1, "lateral_tolerance",
+          lateral_tolerance, "must lie in (0, 0.1)");
+  require(flange_angle > 0.0 && flange_angle < max_contact_angle, "flange_angle", flange_angle,
+          "must lie between 0 and max_contact_angle (rad)");
   kp.validate();
 }
 
@@ -307,22 +200,16 @@ const char* status_name(WheelRailStatus status) {
   return "unknown";
 }
 
-WheelRailContact solve_wheel_rail(const WheelRailPair& pair, const WheelsetPose& pose,
-                                  double vertical_force, const WheelRailOptions& options) {
-  pair.validate();
-  options.validate();
-  require_finite("dy", pose.dy);
-  require_finite("roll", pose.roll);
-  require_finite("yaw", pose.yaw);
-  require_finite("load", vertical_force);
-  require(vertical_force > 0.0, "load", vertical_force,
-          "the vertical wheel load must be positive (newtons)");
-  require(std::abs(pose.roll) < 0.1, "roll", pose.roll, "the roll angle must be small (< 0.1 rad)");
+namespace detail {
 
+namespace {
+
+// The contact solved on one sampling of the gap.
+WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples& g,
+                                  const WheelsetPose& pose, double vertical_force,
+                                  const WheelRailOptions& options) {
+  const WheelRailPair& pair = geometry.pair();
   WheelRailContact result;
-  const Geometry geometry(pair, pose, options);
-  thread_local GapSamples g;
-  geometry.sample(g);
   if (g.h.empty()) {
     result.message =
         "the wheel and rail profiles do not overlap laterally at dy = " + std::to_string(pose.dy) +
@@ -333,9 +220,11 @@ WheelRailContact solve_wheel_rail(const WheelRailPair& pair, const WheelsetPose&
 
   // Fast path, the usual case: one contact region. The window around the gap's minimum goes
   // to the Kik-Piotrowski load solve at the normal load Fz/cos(angle); the answer stands if,
-  // at its approach, the gap shows that one region only.
+  // at its approach, the gap shows that one region only. Its patch is then the one evaluate()
+  // would find at that approach (same strips, s from the same O), so it is described directly.
   double d = -1.0;
   bool at_jump = false;
+  std::optional<Evaluation> fast;
   {
     std::size_t k = 0;
     for (std::size_t j = 0; j < g.h.size(); ++j)
@@ -344,28 +233,25 @@ WheelRailContact solve_wheel_rail(const WheelRailPair& pair, const WheelsetPose&
     while (first > 0 && g.window[first - 1] == g.window[k]) --first;
     while (last + 1 < g.h.size() && g.window[last + 1] == g.window[k]) ++last;
     // The angle at the refined minimum, as evaluate() takes it for the region.
-    const double angle = geometry.contact_angle(with_minimum(g, first, last).y_O);
+    const double y_O = with_minimum(g, first, last).y_O;
+    const double angle = geometry.contact_angle(y_O);
     const double c = std::cos(angle);
     thread_local std::vector<double> h, ax;
-    h.resize(last - first + 1);
-    ax.resize(last - first + 1);
-    for (std::size_t i = 0; i < h.size(); ++i) {
-      const std::size_t j = last - i;
-      h[i] = g.h[j] * c;
-      ax[i] = c / (2.0 * (pair.wheel_radius + g.z_wheel[j] - geometry.z_tape()));
-    }
-    GapStrips strips;
-    strips.ds = g.dy / c;
-    strips.s_first = -(g.y[last] - g.y[k]) / c;
-    strips.h = h;
-    strips.ax = ax;
-    const KpResult kp = solve_kp_load(strips, E_star, vertical_force / c, options.kp);
+    const GapStrips strips = strips_of(geometry, g, first, last, y_O, c, h, ax);
+    thread_local KpResult kp;
+    solve_kp_load(strips, E_star, vertical_force / c, options.kp, kp);
     if (kp.status == KpStatus::converged && kp.patches.size() == 1) {
       const double candidate = kp.approach / c - g.h_min;
       const auto runs = interpenetration_runs(g, g.h_min + candidate, options.kp.epsilon);
       if (runs.size() == 1 &&
           std::abs(geometry.contact_angle(runs[0].y_O) - angle) < 1e-3 * std::max(1.0, angle)) {
         d = candidate;
+        Evaluation e;
+        e.vertical = kp.patches[0].normal_force * c;
+        e.lateral = kp.patches[0].normal_force * std::sin(angle);
+        e.steepest = std::abs(angle);
+        e.patches.push_back(describe_patch(geometry, kp.patches[0], y_O, angle, E_star));
+        fast = std::move(e);
       }
     }
   }
@@ -414,7 +300,8 @@ WheelRailContact solve_wheel_rail(const WheelRailPair& pair, const WheelsetPose&
     }
   }
 
-  Evaluation e = evaluate(geometry, g, g.h_min + d, E_star, options, true);
+  Evaluation e =
+      fast ? std::move(*fast) : evaluate(geometry, g, g.h_min + d, E_star, options, true);
   std::sort(e.patches.begin(), e.patches.end(),
             [](const WheelRailPatch& a, const WheelRailPatch& b) { return a.y_rail < b.y_rail; });
   result.patches = std::move(e.patches);
@@ -442,6 +329,92 @@ WheelRailContact solve_wheel_rail(const WheelRailPair& pair, const WheelsetPose&
                      " rad: the flange climbs the rail, no stable contact";
   }
   return result;
+}
+
+// The first sampling keeps only the windows where the gap lies within this of its minimum [m]:
+// 0.3 mm, three times the approach of a 55 kN wheel on its flange root. The coarse scan misses
+// nothing that deep: a dip of 0.1 mm between two coarse points 1 mm apart needs a gap curvature
+// of 800 1/m (a 1.2 mm radius), far sharper than any wheel or rail. The answer stands when its
+// approach stays 0.1 mm inside the margin; otherwise the gap is sampled to options.scan_margin.
+constexpr double kFirstMargin = 0.3e-3;
+constexpr double kMarginReserve = 0.1e-3;
+
+}  // namespace
+
+WheelRailContact solve_wheel_rail_at(const WheelRailPair& pair, const WheelsetPose& pose,
+                                     double vertical_force, const WheelRailOptions& options,
+                                     double gauge_y) {
+  const WheelRailGap geometry(pair, pose, options, gauge_y);
+  thread_local CoarseScan coarse;
+  thread_local GapSamples g;
+  geometry.scan(coarse);
+  const double first_margin = std::min(options.scan_margin, kFirstMargin);
+  geometry.sample(coarse, first_margin, g);
+  WheelRailContact result = solve_on_samples(geometry, g, pose, vertical_force, options);
+  const bool settled = result.status == WheelRailStatus::ok ||
+                       result.status == WheelRailStatus::load_jump ||
+                       result.status == WheelRailStatus::flange_climb ||
+                       result.status == WheelRailStatus::profile_end;
+  if (first_margin < options.scan_margin &&
+      (!settled || result.approach + kMarginReserve > first_margin)) {
+    geometry.sample(coarse, options.scan_margin, g);
+    result = solve_on_samples(geometry, g, pose, vertical_force, options);
+  }
+  return result;
+}
+
+WheelRailTouch first_touch_at(const WheelRailPair& pair, const WheelsetPose& pose,
+                              const WheelRailOptions& options, double gauge_y) {
+  WheelRailTouch touch;
+  const WheelRailGap geometry(pair, pose, options, gauge_y);
+  thread_local CoarseScan coarse;
+  thread_local GapSamples g;
+  geometry.scan(coarse);
+  // The gap's minimum lies within one coarse spacing of a coarse local minimum; those within
+  // the first margin of the coarse minimum (the dip argument of kFirstMargin) are refined.
+  geometry.sample(coarse, std::min(options.scan_margin, kFirstMargin), g, true);
+  if (g.h.empty()) return touch;
+  std::size_t k = 0;
+  for (std::size_t j = 0; j < g.h.size(); ++j)
+    if (g.h[j] < g.h[k]) k = j;
+  const Run run = with_minimum(g, k, k);
+  touch.found = true;
+  touch.gap = run.h_O;
+  touch.y_rail = -run.y_O;
+  touch.contact_angle = geometry.contact_angle(run.y_O);
+  const auto w = geometry.wheel_at(run.y_O);
+  touch.y_wheel = w ? -w->y : -(run.y_O - geometry.shift());
+  touch.rolling_radius = geometry.rolling_radius(w ? w->z : geometry.z_tape());
+  return touch;
+}
+
+void validate_pose(const WheelsetPose& pose) {
+  require_finite("dy", pose.dy);
+  require_finite("roll", pose.roll);
+  require_finite("yaw", pose.yaw);
+  require(std::abs(pose.roll) < 0.1, "roll", pose.roll, "the roll angle must be small (< 0.1 rad)");
+}
+
+}  // namespace detail
+
+WheelRailContact solve_wheel_rail(const WheelRailPair& pair, const WheelsetPose& pose,
+                                  double vertical_force, const WheelRailOptions& options) {
+  pair.validate();
+  options.validate();
+  detail::validate_pose(pose);
+  require_finite("load", vertical_force);
+  require(vertical_force > 0.0, "load", vertical_force,
+          "the vertical wheel load must be positive (newtons)");
+  return detail::solve_wheel_rail_at(pair, pose, vertical_force, options,
+                                     detail::rail_gauge_y(pair));
+}
+
+WheelRailTouch first_touch(const WheelRailPair& pair, const WheelsetPose& pose,
+                           const WheelRailOptions& options) {
+  pair.validate();
+  options.validate();
+  detail::validate_pose(pose);
+  return detail::first_touch_at(pair, pose, options, detail::rail_gauge_y(pair));
 }
 
 }  // namespace wheelwear::contactgeom

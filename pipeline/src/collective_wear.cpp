@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "wheelwear/contactgeom/kinematics.hpp"
+#include "wheelwear/contactgeom/wheelset.hpp"
 #include "wheelwear/input_error.hpp"
 #include "wheelwear/pipeline/profile_source.hpp"
 #include "wheelwear/wear/contact_model.hpp"
@@ -30,13 +31,25 @@ struct WheelCase {
   double weight = 0.0;  // share of the running distance of this wheel's profile
 };
 
-// Geometry is shared by wheel cases with the same profile, position and loads.
-using GeometryKey = std::tuple<int, double, double, double, double, double>;
+// Geometry is shared by states with the same position and loads (the yaw enters only the
+// creepages): NaN stands for a lateral force not given.
+using GeometryKey = std::tuple<double, double, double, double, double>;
 
-GeometryKey geometry_key(const WheelCase& c) {
-  return {c.profile, c.pose.dy, c.pose.roll, c.vertical_force, c.lateral_force.value_or(kNaN),
-          c.lateral_force ? 1.0 : 0.0};
+GeometryKey geometry_key(const WheelsetStateSpec& s) {
+  return {s.dy, s.load_left, s.load_right, s.lateral_force_left.value_or(kNaN),
+          s.lateral_force_right.value_or(kNaN)};
 }
+
+// Orders keys with NaN (no lateral force) before any number, so std::map can hold them.
+struct KeyLess {
+  bool operator()(const GeometryKey& a, const GeometryKey& b) const {
+    auto as_pair = [](double v) { return std::pair{!std::isnan(v), std::isnan(v) ? 0.0 : v}; };
+    return std::tuple{std::get<0>(a), std::get<1>(a), std::get<2>(a), as_pair(std::get<3>(a)),
+                      as_pair(std::get<4>(a))} <
+           std::tuple{std::get<0>(b), std::get<1>(b), std::get<2>(b), as_pair(std::get<3>(b)),
+                      as_pair(std::get<4>(b))};
+  }
+};
 
 // The per-state wear of one wheel: a run of bins starting at `first`.
 struct LocalWear {
@@ -55,11 +68,12 @@ bool usable(contactgeom::WheelRailStatus status) {
 
 }  // namespace
 
-CollectiveEvaluator::CollectiveEvaluator(const Scene& scene)
+CollectiveEvaluator::CollectiveEvaluator(const Scene& scene, bool reuse_geometry)
     : scene_(scene),
       rail_(std::make_shared<const profiles::Profile>(
           rail_profile(scene.rail_profile, scene.rail_inclination))),
-      law_(wear::TgammaLaw::usfd()) {
+      law_(wear::TgammaLaw::usfd()),
+      reuse_geometry_(reuse_geometry) {
   if (!scene.wear_law_table.empty()) {
     if (scene.wear_law == "usfd") law_ = wear::TgammaLaw::load_csv(scene.wear_law_table);
     if (scene.wear_law == "archard") law_ = wear::ArchardLaw::load_csv(scene.wear_law_table);
@@ -92,6 +106,7 @@ CollectiveWear CollectiveEvaluator::evaluate(
                                  : "shared wheels need one profile");
   std::vector<contactgeom::WheelRailPair> pairs;
   for (const profiles::Profile* wheel : wheels) pairs.push_back(pair(*wheel));
+  // The right wheel's pair: its own profile when the wheels evolve separately.
 
   // Each state stands for weight/total of the distance; in a shared profile each wheel for half.
   const std::size_t n_states = scene_.states.size();
@@ -118,24 +133,45 @@ CollectiveWear CollectiveEvaluator::evaluate(
     }
   }
 
-  // Distinct geometries, numbered in the order of first use (deterministic).
-  std::map<GeometryKey, std::size_t> index_of;
-  std::vector<std::size_t> geometry_of(cases.size());
-  std::vector<std::size_t> first_case;
-  for (std::size_t k = 0; k < cases.size(); ++k) {
-    const auto [it, inserted] = index_of.emplace(geometry_key(cases[k]), first_case.size());
-    if (inserted) first_case.push_back(k);
-    geometry_of[k] = it->second;
+  // Distinct wheelset geometries, numbered in the order of first use (deterministic).
+  std::map<GeometryKey, std::size_t, KeyLess> index_of;
+  std::vector<std::size_t> geometry_of(n_states);
+  std::vector<std::size_t> first_state;
+  for (std::size_t i = 0; i < n_states; ++i) {
+    GeometryKey key = geometry_key(scene_.states[i]);
+    if (!reuse_geometry_) std::get<0>(key) = static_cast<double>(i) + 1.0;  // unique per state
+    const auto [it, inserted] = index_of.emplace(key, first_state.size());
+    if (inserted) first_state.push_back(i);
+    geometry_of[i] = it->second;
   }
-  std::vector<contactgeom::WheelRailContact> contacts(first_case.size());
-  tbb::parallel_for(std::size_t{0}, first_case.size(), [&](std::size_t g) {
-    const WheelCase& c = cases[first_case[g]];
-    contacts[g] = contactgeom::solve_wheel_rail(pairs[static_cast<std::size_t>(c.profile)],
-                                                c.pose, c.vertical_force, options_);
+  const contactgeom::WheelsetOnTrack track{pairs.front(), pairs.back()};
+  std::vector<contactgeom::WheelsetContact> contacts(first_state.size());
+  tbb::parallel_for(std::size_t{0}, first_state.size(), [&](std::size_t g) {
+    const WheelsetStateSpec& s = scene_.states[first_state[g]];
+    contactgeom::WheelsetState state;
+    state.dy = s.dy;
+    state.yaw = s.yaw;
+    state.vertical_force_left = s.load_left;
+    state.vertical_force_right = s.load_right;
+    state.lateral_force_left = s.lateral_force_left;
+    state.lateral_force_right = s.lateral_force_right;
+    contacts[g] = contactgeom::solve_wheelset(track, state, options_);
   });
+  // The contact of wheel case k (state k/2, side k%2) and the pose it was solved at, with this
+  // state's yaw (a shared geometry may come from a state of another yaw).
+  auto contact_of = [&](std::size_t k) -> const contactgeom::WheelRailContact& {
+    const auto& c = contacts[geometry_of[k / 2]];
+    return k % 2 == 0 ? c.left : c.right;
+  };
+  auto pose_of = [&](std::size_t k) {
+    const auto& c = contacts[geometry_of[k / 2]];
+    contactgeom::WheelsetPose pose = k % 2 == 0 ? c.left_pose : c.right_pose;
+    pose.yaw = cases[k].pose.yaw;
+    return pose;
+  };
 
   CollectiveWear out;
-  out.geometry_solves = first_case.size();
+  out.geometry_solves = first_state.size();
   std::vector<std::size_t> bins(profiles_worn);
   for (std::size_t p = 0; p < profiles_worn; ++p) {
     bins[p] = static_cast<std::size_t>(std::ceil(wheels[p]->length() / kBin)) + 1;
@@ -148,6 +184,10 @@ CollectiveWear CollectiveEvaluator::evaluate(
     sum.status.assign(2 * n_states, kNaN);
     sum.patches.assign(2 * n_states, 0.0);
     sum.dy.assign(2 * n_states, kNaN);
+    sum.roll.assign(n_states, kNaN);
+    sum.vertical_force.assign(2 * n_states, kNaN);
+    sum.lateral_force.assign(2 * n_states, kNaN);
+    sum.lateral_fit.assign(2 * n_states, kNaN);
     for (auto* v : {&sum.normal_force, &sum.a, &sum.b, &sum.psi, &sum.y_wheel, &sum.contact_angle,
                     &sum.vx, &sum.vy, &sum.phi, &sum.Fx, &sum.Fy, &sum.frictional_work,
                     &sum.worn_area})
@@ -167,16 +207,24 @@ CollectiveWear CollectiveEvaluator::evaluate(
   fastsim_options.nx = nx;
   fastsim_options.ny = ny;
   fastsim_options.scheme = scene_.scheme;
-  fastsim_options.cell_fields = true;  // the wear laws need every cell's traction and slip
+  fastsim_options.cell_fields = true;  // the wear laws need every cell's work and slip
+  // Only the fields the wear needs, unless T gamma maps with their cell positions are written.
+  fastsim_options.field_set = scene_.tgamma_maps ? wear::CellFieldSet::all : wear::CellFieldSet::wear;
 
   std::vector<WheelResult> results(cases.size());
   tbb::parallel_for(std::size_t{0}, cases.size(), [&](std::size_t k) {
     const WheelCase& c = cases[k];
-    const contactgeom::WheelRailContact& contact = contacts[geometry_of[k]];
+    const contactgeom::WheelRailContact& contact = contact_of(k);
+    const contactgeom::WheelsetPose pose = pose_of(k);
     const std::size_t p = static_cast<std::size_t>(c.profile);
     if (summaries) {
+      const auto& both = contacts[geometry_of[k / 2]];
       sum.status[k] = static_cast<double>(contact.status);
-      sum.dy[k] = c.pose.dy;
+      sum.dy[k] = pose.dy;
+      sum.roll[k / 2] = both.roll;
+      sum.vertical_force[k] = contact.vertical_force;
+      sum.lateral_force[k] = contact.lateral_force;
+      sum.lateral_fit[k] = static_cast<double>(k % 2 == 0 ? both.left_fit : both.right_fit);
     }
     if (!usable(contact.status)) return;
     const std::size_t n_patches = std::min<std::size_t>(contact.patches.size(), kPatchSlots);
@@ -190,7 +238,7 @@ CollectiveWear CollectiveEvaluator::evaluate(
       const wear::ModelPatch region = wear::model_patch(scene_.model, patch.sdec, hertz);
       const wear::Creepages creep =
           c.creepages ? *c.creepages
-                      : contactgeom::kinematic_creepages(patch, c.pose, c.motion,
+                      : contactgeom::kinematic_creepages(patch, pose, c.motion,
                                                          scene_.wheel_radius);
       wear::fastsim(region.method, region.region, creep, {patch.normal_force, scene_.friction},
                     material, fastsim_options, solution);
@@ -238,7 +286,7 @@ CollectiveWear CollectiveEvaluator::evaluate(
   // The reduction runs in state order, whatever the threads did: bit-identical results.
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const WheelCase& c = cases[k];
-    if (!usable(contacts[geometry_of[k]].status)) {
+    if (!usable(contact_of(k).status)) {
       ++out.failed_contacts;
       out.failed_weight += c.weight * (scene_.separate_wheels ? 0.5 : 1.0);
       continue;

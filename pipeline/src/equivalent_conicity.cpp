@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "wheelwear/input_error.hpp"
@@ -10,19 +11,12 @@ namespace wheelwear::pipeline {
 
 namespace {
 
-// A light vertical force only locates the contact point: the patch stays ~1 mm wide.
-constexpr double kProbeForce = 500.0;  // [N]
-
-// Rolling radius at the first-touch point: the patch with the largest normal force.
+// Rolling radius at the first touch of the undeformed surfaces (no load), NaN without contact.
 double rolling_radius(const contactgeom::WheelRailPair& pair, double dy) {
   contactgeom::WheelsetPose pose;
   pose.dy = dy;
-  const auto contact = contactgeom::solve_wheel_rail(pair, pose, kProbeForce);
-  if (contact.patches.empty()) return std::numeric_limits<double>::quiet_NaN();
-  const auto best = std::max_element(
-      contact.patches.begin(), contact.patches.end(),
-      [](const auto& a, const auto& b) { return a.normal_force < b.normal_force; });
-  return best->rolling_radius;
+  const contactgeom::WheelRailTouch touch = contactgeom::first_touch(pair, pose);
+  return touch.found ? touch.rolling_radius : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace

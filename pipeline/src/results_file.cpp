@@ -164,7 +164,8 @@ std::string ResultsFile::step_group(int step) {
   return name;
 }
 
-ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_text, bool overwrite) {
+ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_text, bool overwrite,
+                                const GroupRecord& load_collective) {
   if (fs::exists(path) && !overwrite) {
     throw InputError("output " + path.string() +
                      ": the file exists; choose another name or pass --overwrite to replace it");
@@ -175,6 +176,8 @@ ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_tex
     write_text(file, "/scene", std::string(scene_text), "the scene this run was made from (TOML)");
     H5::DataSet scene = file.openDataSet("/scene");
     write_int_attribute(scene, "format_version", kFormatVersion);
+    if (!load_collective.arrays.empty() || !load_collective.texts.empty())
+      write_group(file, "/load_collective", load_collective);
     H5::Group steps = file.createGroup("/steps");
     write_int_attribute(steps, "completed_steps", 0);
     file.close();

@@ -125,6 +125,17 @@ void add_summaries(GroupRecord& g, const StateSummaries& s) {
       false);
   add("patches", s.patches, "1", "[state, wheel] number of contact patches", false);
   add("dy", s.dy, "m", "[state, wheel] lateral shift of the wheel, + towards its flange", false);
+  g.arrays.push_back({"states/roll", s.roll, {s.states}, "rad",
+                      "[state] wheelset roll, + when the left wheel goes down"});
+  add("vertical_force", s.vertical_force, "N", "[state, wheel] vertical force of the contact",
+      false);
+  add("lateral_force", s.lateral_force, "N",
+      "[state, wheel] lateral force of the contact, + pushing the wheel to the track centre",
+      false);
+  add("lateral_fit", s.lateral_fit, "1",
+      "[state, wheel] prescribed lateral force: 0 not given, 1 matched, 2 position kept, 3 "
+      "flange just unloaded, 4 not matched",
+      false);
   add("normal_force", s.normal_force, "N", "[state, wheel, patch] normal force", true);
   add("a", s.a, "m", "[state, wheel, patch] SDEC semi-axis along x (Eq. 13)", true);
   add("b", s.b, "m", "[state, wheel, patch] SDEC semi-axis along y (Eq. 13)", true);
@@ -154,6 +165,45 @@ void add_maps(GroupRecord& g, const TgammaMaps& m, std::size_t states) {
       {"tgamma/x", m.x, shape, "m", "cell centre along x (rolling) relative to O"});
   g.arrays.push_back(
       {"tgamma/y", m.y, shape, "m", "cell centre along y relative to O, + towards the flange"});
+}
+
+// The states as the run resolved them (from the scene, a CSV or an HDF5 file).
+GroupRecord collective_record(const Scene& scene) {
+  const std::size_t n = scene.states.size();
+  std::vector<double> dy(n), yaw(n), ql(n), qr(n), yl(n), yr(n), v(n), radius(n), vlat(n), w(n),
+      line(n);
+  std::string labels;
+  for (std::size_t i = 0; i < n; ++i) {
+    const WheelsetStateSpec& s = scene.states[i];
+    dy[i] = s.dy;
+    yaw[i] = s.yaw;
+    ql[i] = s.load_left;
+    qr[i] = s.load_right;
+    yl[i] = s.lateral_force_left.value_or(kNaN);
+    yr[i] = s.lateral_force_right.value_or(kNaN);
+    v[i] = s.speed;
+    radius[i] = s.curve_radius;
+    vlat[i] = s.lateral_velocity;
+    w[i] = s.weight;
+    line[i] = s.line;
+    labels += s.label + '\n';
+  }
+  GroupRecord g;
+  g.arrays.push_back(vector("dy_m", dy, "m", "wheelset lateral shift, + to the left"));
+  g.arrays.push_back(vector("yaw_rad", yaw, "rad", "yaw angle"));
+  g.arrays.push_back(vector("load_left_N", ql, "N", "vertical force on the left wheel"));
+  g.arrays.push_back(vector("load_right_N", qr, "N", "vertical force on the right wheel"));
+  g.arrays.push_back(vector("lateral_force_left_N", yl, "N",
+                            "prescribed lateral force of the left wheel (NaN: not given)"));
+  g.arrays.push_back(vector("lateral_force_right_N", yr, "N",
+                            "prescribed lateral force of the right wheel (NaN: not given)"));
+  g.arrays.push_back(vector("speed_m_s", v, "m/s", "forward speed"));
+  g.arrays.push_back(vector("curve_radius_m", radius, "m", "0 tangent, + right-hand curve"));
+  g.arrays.push_back(vector("lateral_velocity_m_s", vlat, "m/s", "dy/dt, + to the left"));
+  g.arrays.push_back(vector("weight", w, "1", "share of the running distance (unnormalised)"));
+  g.arrays.push_back(vector("line", line, "1", "line of the state in its scene or file"));
+  g.texts.push_back({"label", labels, "the states' labels, one per line"});
+  return g;
 }
 
 std::string now_iso8601() {
@@ -311,7 +361,8 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
   const CollectiveEvaluator evaluator(scene);
   LoopStart start{0, 0.0, new_profiles(scene)};
   for (const WornProfile& w : start.worn) evaluator.pair(w.build());
-  ResultsFile file = ResultsFile::create(output, scene_text, options.overwrite);
+  ResultsFile file =
+      ResultsFile::create(output, scene_text, options.overwrite, collective_record(scene));
   file.write_run_info(run_info(scene_directory, builtin_scene, 0.0, 0, -1));
   return loop(scene, evaluator, file, std::move(start), scene_directory, builtin_scene, options);
 }

@@ -12,6 +12,7 @@
 #include "support/reference_profiles.hpp"
 #include "wheelwear/contactgeom/kinematics.hpp"
 #include "wheelwear/input_error.hpp"
+#include "wheelwear/profiles/profile.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 
@@ -173,6 +174,79 @@ TEST(WheelRailInput, RejectsBadInputAndReportsNoContact) {
   const WheelRailContact c = solve_wheel_rail(pair, far, 55e3);
   EXPECT_EQ(c.status, WheelRailStatus::no_contact);
   EXPECT_FALSE(c.message.empty());
+}
+
+// A rolled wheel against the same wheel rotated explicitly: its profile resampled every 50 um,
+// each point turned about the taping point, and a new curve through them, solved unrolled. The
+// new curve interpolates the turned one to ~1e-10 m, which moves O on the flat tread gap by
+// ~0.1 um (1 mm per um of gap, see bounds_for): O within 1 um. The turned pair takes its
+// rolling radius from the turned heights, r0 + z' - z_tape, which is off the material point's
+// distance from the axle by sin(roll) y' (0.1 mm at y' = 30 mm, 2e-4 of r0); the longitudinal
+// gap curvature 1/(2R) follows, and with it the patch length: area within 2e-4, approach within
+// 1e-8 m, forces within 1e-5. The rolled wheel's radius is the material one,
+// r0 + cos(roll) (z' - z_tape) - sin(roll) y' in the turned profile's (y', z').
+TEST(WheelRailRoll, RolledWheelMatchesAnExplicitlyRotatedProfile) {
+  const WheelRailPair pair(profiles::s1002(), profiles::rail_60e1());
+  const double roll = -3e-3;
+  const double z_tape = pair.wheel.surface_at(0.0)->z;
+  profiles::PointList points = pair.wheel.resample(50e-6);
+  for (auto& p : points) {
+    const double y = p.x(), z = p.y() - z_tape;
+    p = profiles::Point(std::cos(roll) * y - std::sin(roll) * z,
+                        std::sin(roll) * y + std::cos(roll) * z + z_tape);
+  }
+  profiles::CurveOptions curve = pair.wheel.curve_options();
+  curve.smoothing_length = 0.0;
+  WheelRailPair turned(profiles::Profile(points, pair.wheel.info(), curve), pair.rail);
+  turned.flange_back_y = pair.flange_back_y;  // the wheelset places the taping point
+  turned.wheel_radius = pair.wheel_radius;
+  for (double dy : {0.0, 3e-3, 6e-3}) {
+    WheelsetPose rolled;
+    rolled.dy = dy;
+    rolled.roll = roll;
+    WheelsetPose plain;
+    plain.dy = dy;
+    const WheelRailContact a = solve_wheel_rail(pair, rolled, 55e3);
+    const WheelRailContact b = solve_wheel_rail(turned, plain, 55e3);
+    ASSERT_EQ(a.status, WheelRailStatus::ok) << dy;
+    ASSERT_EQ(b.status, WheelRailStatus::ok) << dy;
+    ASSERT_EQ(a.patches.size(), b.patches.size()) << dy;
+    EXPECT_NEAR(a.lateral_force, b.lateral_force, 1e-5 * 55e3) << dy;
+    EXPECT_NEAR(a.approach, b.approach, 1e-8) << dy;
+    for (std::size_t k = 0; k < a.patches.size(); ++k) {
+      const WheelRailPatch &pa = a.patches[k], &pb = b.patches[k];
+      EXPECT_NEAR(pa.y_rail, pb.y_rail, 1e-6) << dy;
+      EXPECT_NEAR(pa.normal_force / pb.normal_force, 1.0, 1e-5) << dy;
+      EXPECT_NEAR(pa.measures.area / pb.measures.area, 1.0, 2e-4) << dy;
+      const double y_turned = -pb.y_wheel;
+      const double z_turned = turned.wheel.surface_at(y_turned)->z;
+      const double radius =
+          pair.wheel_radius + std::cos(roll) * (z_turned - z_tape) - std::sin(roll) * y_turned;
+      EXPECT_NEAR(pa.rolling_radius, radius, 1e-8) << dy;
+    }
+  }
+}
+
+// Moving the wheel profile down by 0.5 mm moves its first touch by exactly that: the gap is
+// measured in the profiles' own heights.
+TEST(WheelRailTouch, GapFollowsTheWheelsHeight) {
+  const WheelRailPair pair(profiles::s1002(), profiles::rail_60e1());
+  WheelRailPair lower = pair;
+  lower.wheel = pair.wheel.translated(0.0, 0.5e-3);
+  WheelsetPose pose;
+  pose.dy = 2e-3;
+  const WheelRailTouch a = first_touch(pair, pose);
+  const WheelRailTouch b = first_touch(lower, pose);
+  ASSERT_TRUE(a.found && b.found);
+  // The translated curve carries the same points to round-off (1e-16 m).
+  EXPECT_NEAR(b.gap, a.gap - 0.5e-3, 1e-12);
+  EXPECT_NEAR(b.y_rail, a.y_rail, 1e-9);
+  EXPECT_NEAR(b.rolling_radius, a.rolling_radius, 1e-12);
+  // The loaded contact's O is where the surfaces first touched, to the samples' parabola.
+  const WheelRailContact c = solve_wheel_rail(pair, pose, 55e3);
+  ASSERT_EQ(c.patches.size(), 1u);
+  EXPECT_NEAR(c.patches[0].y_rail, a.y_rail, 0.05e-3);
+  EXPECT_NEAR(c.patches[0].contact_angle, a.contact_angle, 1e-3);
 }
 
 }  // namespace

@@ -53,9 +53,9 @@ TEST(CreepCommand, TargetErrorChoosesAndReportsTheGrid) {
   const auto result =
       run_wheelwear(kCase + " --method fastsim-sdec --scheme second-order --target-error 1e-3");
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const wear::GridChoice choice = wear::choose_grid(
-      wear::FastsimMethod::sdec, wear::FastsimScheme::second_order,
-      wear::TractionBound::parabolic, 1e-3);
+  const wear::GridChoice choice =
+      wear::choose_grid(wear::FastsimMethod::sdec, wear::FastsimScheme::second_order,
+                        wear::TractionBound::parabolic, 1e-3);
   EXPECT_EQ(json_number(result.out, "nx"), choice.nx);
   EXPECT_EQ(json_number(result.out, "ny"), choice.ny);
   EXPECT_EQ(json_number(result.out, "target_error"), 1e-3);

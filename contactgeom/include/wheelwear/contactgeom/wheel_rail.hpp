@@ -36,19 +36,31 @@ struct WheelRailPair {
 /// Where the wheelset is, for this wheel.
 struct WheelsetPose {
   double dy = 0.0;  ///< lateral shift from the centred position, + towards this wheel's flange [m]
-  double roll = 0.0;  ///< roll of the wheel profile about its taping point [rad], small
-  double yaw = 0.0;   ///< yaw angle [rad]; enters the creepages, not the patch shape
+  /// Roll of the wheel profile about its taping point [rad], |roll| < 0.1: + turns the profile's
+  /// +y (field side) down (+z), z' - z_tape = sin(roll) y + cos(roll) (z - z_tape). The rolling
+  /// radius of a material point, its distance from the axle, does not change.
+  double roll = 0.0;
+  double yaw = 0.0;  ///< yaw angle [rad]; enters the creepages, not the patch shape
 };
 
 /// Numerical options of the wheel/rail contact.
 struct WheelRailOptions {
-  double strip_width = 0.1e-3;      ///< lateral sampling of the gap [m] (patch strips are this wide
-                                    ///< divided by cos(contact angle))
-  double scan_spacing = 1e-3;       ///< coarse scan that finds where contact is possible [m]
-  double scan_margin = 2e-3;        ///< gaps more than this above the minimum cannot touch [m]
+  double strip_width = 0.1e-3;  ///< lateral sampling of the gap [m] (patch strips are this wide
+                                ///< divided by cos(contact angle))
+  double scan_spacing = 1e-3;   ///< coarse scan that finds where contact is possible [m]
+  /// Gaps more than this above the minimum cannot touch [m]. The gap is sampled first where it
+  /// lies within min(0.3 mm, this) of its minimum and again to this margin when the approach
+  /// comes within 0.1 mm of that.
+  double scan_margin = 2e-3;
   double load_tolerance = 1e-9;     ///< stop when |Fz/Fz_target - 1| is below this
   double max_contact_angle = 1.35;  ///< steeper contact is reported as flange climb [rad]
-  KpOptions kp;                     ///< Kik-Piotrowski options (virtual penetration 0.55)
+  /// Prescribed lateral force (solve_wheel_rail_lateral): stop when |Fy/Fz - target/Fz| is
+  /// below this.
+  double lateral_tolerance = 1e-6;
+  /// Patches with a contact angle above this are flange contact [rad] (solve_wheel_rail_lateral):
+  /// S1002 on 60E1 touches its tread below 0.13 rad and its flange root above 0.28 rad.
+  double flange_angle = 0.2;
+  KpOptions kp;  ///< Kik-Piotrowski options (virtual penetration 0.55)
   void validate() const;
 };
 
@@ -59,11 +71,13 @@ struct WheelRailPatch {
   Sdec sdec;                 ///< Eq. 13-14 regularisation
   HertzSolution hertz;       ///< Hertz ellipse from the curvatures at O, same normal force
   bool hertz_valid = false;  ///< false where the lateral relative curvature is not positive
-  double y_wheel = 0.0;      ///< O on the wheel profile, from its origin, + towards the flange [m]
+  double y_wheel = 0.0;      ///< O on the (unrolled) wheel profile, from its origin, + towards the
+                             ///< flange [m]
   double y_rail = 0.0;   ///< O on the rail profile, from its origin, + towards the gauge side [m]
   double s_wheel = 0.0;  ///< arc length of O on the wheel profile [m]
   double contact_angle = 0.0;   ///< angle of the contact plane to the track plane [rad]
-  double rolling_radius = 0.0;  ///< wheel radius at O [m]
+  double rolling_radius = 0.0;  ///< wheel radius at O: its material point's distance from the
+                                ///< axle [m], which a roll does not change
   double normal_force = 0.0;    ///< [N]
   double pmax = 0.0;            ///< [Pa]
 };
@@ -93,6 +107,24 @@ struct WheelRailContact {
 /// Solves the normal contact of the wheel under a prescribed vertical force Fz [N] > 0.
 WheelRailContact solve_wheel_rail(const WheelRailPair& pair, const WheelsetPose& pose,
                                   double vertical_force, const WheelRailOptions& options = {});
+
+/// Where the undeformed surfaces of a wheel and its rail first touch: the minimum of the vertical
+/// gap z_rail - z_wheel over the rail-frame lateral coordinate (both profiles in their own z,
+/// the wheel rolled about its taping point), sampled every options.strip_width and refined by a
+/// parabola through the lowest sample and its neighbours.
+struct WheelRailTouch {
+  bool found = false;           ///< false where the profiles do not overlap laterally
+  double gap = 0.0;             ///< minimum vertical gap [m]: how far the wheel moves down (+z)
+                                ///< from the profiles' common datum to touch its rail
+  double y_rail = 0.0;          ///< touch point on the rail profile, + towards the gauge side [m]
+  double y_wheel = 0.0;         ///< touch point on the wheel profile, + towards the flange [m]
+  double contact_angle = 0.0;   ///< as WheelRailPatch::contact_angle [rad]
+  double rolling_radius = 0.0;  ///< wheel radius at the touch point [m]
+};
+
+/// The first touch of the undeformed surfaces at `pose` (no load); throws InputError on bad input.
+WheelRailTouch first_touch(const WheelRailPair& pair, const WheelsetPose& pose,
+                           const WheelRailOptions& options = {});
 
 /// The name of a status ("ok", "no contact", ...).
 const char* status_name(WheelRailStatus status);

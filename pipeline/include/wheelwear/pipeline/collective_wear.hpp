@@ -25,6 +25,10 @@ struct StateSummaries {
   std::vector<double> status;      ///< [state][wheel]: code of contactgeom::WheelRailStatus
   std::vector<double> patches;     ///< [state][wheel]: number of patches
   std::vector<double> dy;          ///< [state][wheel]: this wheel's lateral shift solved at [m]
+  std::vector<double> roll;        ///< [state]: wheelset roll [rad] (contactgeom::WheelsetContact)
+  std::vector<double> vertical_force;  ///< [state][wheel]: sum of N cos(angle) [N]
+  std::vector<double> lateral_force;   ///< [state][wheel]: sum of N sin(angle) [N]
+  std::vector<double> lateral_fit;     ///< [state][wheel]: code of contactgeom::LateralFit
   std::vector<double> normal_force, a, b, psi, y_wheel, contact_angle, vx, vy, phi, Fx, Fy,
       frictional_work, worn_area;  ///< [state][wheel][slot]: N, m, m, -, m, rad, -, -, 1/m, N, N,
                                    ///< N (J/m), m^2/m
@@ -56,7 +60,9 @@ struct CollectiveWear {
 class CollectiveEvaluator {
  public:
   /// Resolves the scene's rail profile and wear law; throws InputError on a bad scene.
-  explicit CollectiveEvaluator(const Scene& scene);
+  /// `reuse_geometry` solves the contact of states with the same position and loads once (the
+  /// results are identical either way; off only to measure what the reuse saves).
+  explicit CollectiveEvaluator(const Scene& scene, bool reuse_geometry = true);
 
   /// Evaluates the collective on `wheels` (one profile worn by both wheels, or left and right).
   /// Every worn profile must have the taping line at y = 0 (as profiles from
@@ -73,6 +79,7 @@ class CollectiveEvaluator {
   std::shared_ptr<const profiles::Profile> rail_;
   wear::WearLaw law_;
   contactgeom::WheelRailOptions options_;
+  bool reuse_geometry_ = true;
 };
 
 }  // namespace wheelwear::pipeline

@@ -9,7 +9,8 @@
 namespace wheelwear::pipeline {
 
 /// The rolling radius difference r_left - r_right [m] at wheelset shifts `dy` [m] (+ to the
-/// left), from the first-touch contact points of both wheels (rigid rails, no roll).
+/// left), from the first-touch points of both wheels' undeformed surfaces (rigid rails; the
+/// wheelset's roll, below 1e-3 rad here, is left out).
 struct RollingRadiusDifference {
   std::vector<double> dy;       ///< [m], increasing
   std::vector<double> delta_r;  ///< [m]; NaN where a wheel has no contact

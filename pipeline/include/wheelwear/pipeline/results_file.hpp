@@ -7,6 +7,7 @@
 ///
 /// Layout (every dataset carries string attributes `units` and `description`):
 ///   /scene            the scene text (TOML), attribute `format_version`
+///   /load_collective  the wheelset states of the run, one dataset per quantity
 ///   /steps            attribute `completed_steps`
 ///   /steps/NNNNNN/... the arrays of step NNNNNN (six digits)
 ///   /run_info/...     timings and host information, the only place they appear
@@ -45,10 +46,11 @@ struct GroupRecord {
 /// Durable, step-by-step writer and reader of a results file.
 class ResultsFile {
  public:
-  /// Creates FILE with the scene text and no steps. Throws InputError if FILE exists and
-  /// `overwrite` is false; the existing file is then left untouched.
+  /// Creates FILE with the scene text, the group /load_collective (the states as the run
+  /// resolved them) and no steps. Throws InputError if FILE exists and `overwrite` is false;
+  /// the existing file is then left untouched.
   static ResultsFile create(const std::filesystem::path& path, std::string_view scene_text,
-                            bool overwrite);
+                            bool overwrite, const GroupRecord& load_collective = {});
   /// Opens an existing results file to continue it (resume): a stray FILE.partial of a killed
   /// run is discarded. Throws InputError when the file is missing or is not a results file.
   static ResultsFile open(const std::filesystem::path& path);

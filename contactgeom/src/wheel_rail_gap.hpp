@@ -1,0 +1,113 @@
+#pragma once
+// The undeformed vertical gap between a wheel and its rail at one wheelset pose, sampled where
+// contact is possible (internal to the wheel/rail contact; wheel_rail.hpp documents the frames).
+
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "surface_walk.hpp"
+#include "wheelwear/contactgeom/wheel_rail.hpp"
+
+namespace wheelwear::contactgeom::detail {
+
+// The gap sampled on uniform lateral windows of the rail frame where contact is possible.
+struct GapSamples {
+  double dy = 0.0;              // sample spacing [m]
+  std::vector<double> y;        // rail-frame lateral coordinate [m]
+  std::vector<double> h;        // vertical gap z_rail - z_wheel [m]
+  std::vector<double> z_wheel;  // unrolled height of the wheel's material point (radius) [m]
+  std::vector<int> window;      // index of the window a sample belongs to
+  double h_min = std::numeric_limits<double>::infinity();
+  std::vector<std::size_t> end_samples;  // samples that lie at the end of a profile
+};
+
+// The gap every scan_spacing from lo (+inf where either profile is missing).
+struct CoarseScan {
+  double lo = 0.0, hi = 0.0;  // lateral overlap of the profiles, rail frame [m]
+  std::vector<double> h;      // gap at lo + i scan_spacing [m]
+  double h_min = std::numeric_limits<double>::infinity();
+};
+
+// The wheel's material point seen at one rail-frame lateral coordinate.
+struct WheelPoint {
+  double z_rolled = 0.0;  // height of the (rolled) surface in the rail frame [m]
+  double z = 0.0;         // height of the material point in the unrolled wheel profile [m]
+  double y = 0.0;         // lateral coordinate of the material point in the wheel profile [m]
+  double s = 0.0;         // its arc length on the wheel profile [m]
+};
+
+// Where a rail profile sits in the track: the costly step of placing a wheel on its rail, kept
+// for the last rails seen (compared by their curves) rather than computed for every pose.
+struct RailDatum {
+  double gauge_y = 0.0;  // the gauge point's y (profiles::gauge_point at the gauge depth) [m]
+  double top_z = 0.0;    // the top of rail's z (profiles::top_of_rail) [m]
+};
+RailDatum rail_datum(const WheelRailPair& pair);
+// rail_datum(pair).gauge_y [m].
+double rail_gauge_y(const WheelRailPair& pair);
+
+// The wheel placed on its rail at one pose. The wheel profile is not rebuilt for a roll: the
+// surface point seen at a rail-frame y is found on the unrolled profile by Newton's method on
+// the rotation about the taping point (0, z_tape), y' = cos(roll) y - sin(roll) (z(y) - z_tape),
+// z' = sin(roll) y + cos(roll) (z(y) - z_tape) + z_tape, to 1e-13 m.
+class WheelRailGap {
+ public:
+  WheelRailGap(const WheelRailPair& pair, const WheelsetPose& pose, const WheelRailOptions& options,
+               double gauge_y);
+
+  double shift() const { return shift_; }    // rail-frame y of the wheel profile's y = 0 [m]
+  double z_tape() const { return z_tape_; }  // wheel profile height at its taping line [m]
+  const WheelRailPair& pair() const { return pair_; }
+
+  // The wheel's material point whose rolled surface lies at rail-frame y; nullopt off the profile.
+  std::optional<WheelPoint> wheel_at(double y) const;
+  // Vertical gap at rail-frame y and the wheel point there; nullopt outside either profile.
+  std::optional<std::pair<double, WheelPoint>> gap(double y) const;
+  // The coarse scan: the gap every options.scan_spacing over the lateral overlap (coarse_gap).
+  void scan(CoarseScan& coarse) const;
+  // Samples the gap every strip_width in the windows where the coarse scan lies within `margin`
+  // of its minimum (each window reaches one coarse point beyond, where the gap is above it).
+  // minima_only: only around the coarse scan's local minima within the margin, one coarse
+  // point either side (enough to find the gap's minimum, not a contact's extent).
+  void sample(const CoarseScan& coarse, double margin, GapSamples& g,
+              bool minima_only = false) const;
+  // The gap at increasing rail-frame y, walked along both curves (surface_walk.hpp), with the
+  // lookups of gap() where a walk cannot go on. Same values as gap() to 1e-15 m once
+  // close_walks() has checked the walked stretches.
+  std::optional<std::pair<double, WheelPoint>> walked_gap(double y) const;
+  // Checks the open walked stretches by a lookup at their ends; false when one does not stand
+  // (then the values walked since the last check are recomputed with gap()).
+  bool close_walks() const;
+  // Contact angle at rail-frame y: the rail surface's slope, + where it falls towards -y
+  // (the gauge side), as on the gauge corner and flange contact [rad].
+  double contact_angle(double y) const;
+  // Rolling radius of the wheel's material point with unrolled height z [m]: its distance from
+  // the axle, which a roll about the taping point does not change.
+  double rolling_radius(double z) const { return pair_.wheel_radius + z - z_tape_; }
+
+ private:
+  const WheelRailPair& pair_;
+  const WheelRailOptions& options_;
+  double shift_ = 0.0;
+  double z_tape_ = 0.0;
+  double cos_roll_ = 1.0;
+  double sin_roll_ = 0.0;
+  // The gap for the coarse scan, which only chooses the sampled windows: with a roll, to
+  // first order in the mapping onto the unrolled wheel (within 4e-7 m).
+  std::optional<double> coarse_gap(double y) const;
+  void close_rail_walk() const;
+  void close_wheel_walk() const;
+  mutable SurfaceWalk rail_walk_, wheel_walk_;
+  mutable bool walk_failed_ = false;
+};
+
+// The gap minimum of samples [first, last], refined by a parabola through its neighbours.
+struct GapMinimum {
+  double y = 0.0;  // rail-frame lateral coordinate [m]
+  double h = 0.0;  // gap [m]
+};
+GapMinimum refined_minimum(const GapSamples& g, std::size_t first, std::size_t last);
+
+}  // namespace wheelwear::contactgeom::detail

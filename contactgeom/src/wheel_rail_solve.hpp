@@ -1,0 +1,21 @@
+#pragma once
+// The wheel/rail contact with the rail's gauge point computed beforehand and the input already
+// validated: for callers that evaluate many poses of one pair (wheelset.cpp).
+
+#include "wheelwear/contactgeom/wheel_rail.hpp"
+
+namespace wheelwear::contactgeom::detail {
+
+// solve_wheel_rail with gauge_y = rail_gauge_y(pair) [m]; the input is not validated again.
+WheelRailContact solve_wheel_rail_at(const WheelRailPair& pair, const WheelsetPose& pose,
+                                     double vertical_force, const WheelRailOptions& options,
+                                     double gauge_y);
+
+// first_touch with gauge_y = rail_gauge_y(pair) [m]; the input is not validated again.
+WheelRailTouch first_touch_at(const WheelRailPair& pair, const WheelsetPose& pose,
+                              const WheelRailOptions& options, double gauge_y);
+
+// Throws InputError unless dy, roll and yaw are finite and |roll| < 0.1 rad.
+void validate_pose(const WheelsetPose& pose);
+
+}  // namespace wheelwear::contactgeom::detail
