@@ -20,12 +20,11 @@ namespace {
 constexpr double kBin = 0.1e-3;  // wear grid on the wheel's arc length [m]
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// One wheel of one state, in that wheel's own frame.
+// One wheel of one state, in that wheel's own frame: what its creepages and wear need beyond
+// the wheelset's contact.
 struct WheelCase {
-  int profile = 0;  // index of the worn profile
-  contactgeom::WheelsetPose pose;
-  double vertical_force = 0.0;
-  std::optional<double> lateral_force;
+  int profile = 0;   // index of the worn profile
+  double yaw = 0.0;  // this wheel's yaw [rad]
   contactgeom::WheelsetMotion motion;
   std::optional<wear::Creepages> creepages;
   double weight = 0.0;  // share of the running distance of this wheel's profile
@@ -106,7 +105,6 @@ CollectiveWear CollectiveEvaluator::evaluate(
                                  : "shared wheels need one profile");
   std::vector<contactgeom::WheelRailPair> pairs;
   for (const profiles::Profile* wheel : wheels) pairs.push_back(pair(*wheel));
-  // The right wheel's pair: its own profile when the wheels evolve separately.
 
   // Each state stands for weight/total of the distance; in a shared profile each wheel for half.
   const std::size_t n_states = scene_.states.size();
@@ -119,10 +117,7 @@ CollectiveWear CollectiveEvaluator::evaluate(
       const double sign = side == 0 ? 1.0 : -1.0;  // the right wheel is the mirror image
       WheelCase& c = cases[2 * i + static_cast<std::size_t>(side)];
       c.profile = scene_.separate_wheels ? side : 0;
-      c.pose.dy = sign * s.dy;
-      c.pose.yaw = sign * s.yaw;
-      c.vertical_force = side == 0 ? s.load_left : s.load_right;
-      c.lateral_force = side == 0 ? s.lateral_force_left : s.lateral_force_right;
+      c.yaw = sign * s.yaw;
       c.motion.speed = s.speed;
       c.motion.lateral_velocity = sign * s.lateral_velocity;
       // A right-hand curve (R > 0) puts the left wheel on the outer rail, ahead.
@@ -166,7 +161,7 @@ CollectiveWear CollectiveEvaluator::evaluate(
   auto pose_of = [&](std::size_t k) {
     const auto& c = contacts[geometry_of[k / 2]];
     contactgeom::WheelsetPose pose = k % 2 == 0 ? c.left_pose : c.right_pose;
-    pose.yaw = cases[k].pose.yaw;
+    pose.yaw = cases[k].yaw;
     return pose;
   };
 
