@@ -395,16 +395,21 @@ void validate_pose(const WheelsetPose& pose) {
   require(std::abs(pose.roll) < 0.1, "roll", pose.roll, "the roll angle must be small (< 0.1 rad)");
 }
 
+void validate_loaded_contact(const WheelRailPair& pair, const WheelsetPose& pose,
+                             double vertical_force, const WheelRailOptions& options) {
+  pair.validate();
+  options.validate();
+  validate_pose(pose);
+  require_finite("load", vertical_force);
+  require(vertical_force > 0.0, "load", vertical_force,
+          "the vertical wheel load must be positive (newtons)");
+}
+
 }  // namespace detail
 
 WheelRailContact solve_wheel_rail(const WheelRailPair& pair, const WheelsetPose& pose,
                                   double vertical_force, const WheelRailOptions& options) {
-  pair.validate();
-  options.validate();
-  detail::validate_pose(pose);
-  require_finite("load", vertical_force);
-  require(vertical_force > 0.0, "load", vertical_force,
-          "the vertical wheel load must be positive (newtons)");
+  detail::validate_loaded_contact(pair, pose, vertical_force, options);
   return detail::solve_wheel_rail_at(pair, pose, vertical_force, options,
                                      detail::rail_gauge_y(pair));
 }

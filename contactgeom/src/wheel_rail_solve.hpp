@@ -18,4 +18,9 @@ WheelRailTouch first_touch_at(const WheelRailPair& pair, const WheelsetPose& pos
 // Throws InputError unless dy, roll and yaw are finite and |roll| < 0.1 rad.
 void validate_pose(const WheelsetPose& pose);
 
+// Validates what a contact solve under a vertical force takes: the pair, the options, the pose
+// and the force (finite, > 0).
+void validate_loaded_contact(const WheelRailPair& pair, const WheelsetPose& pose,
+                             double vertical_force, const WheelRailOptions& options);
+
 }  // namespace wheelwear::contactgeom::detail

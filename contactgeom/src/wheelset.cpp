@@ -241,12 +241,7 @@ const char* lateral_fit_name(LateralFit fit) {
 WheelRailLateral solve_wheel_rail_lateral(const WheelRailPair& pair, const WheelsetPose& pose,
                                           double vertical_force, double lateral_force,
                                           const WheelRailOptions& options) {
-  pair.validate();
-  options.validate();
-  detail::validate_pose(pose);
-  require_finite("load", vertical_force);
-  require(vertical_force > 0.0, "load", vertical_force,
-          "the vertical wheel load must be positive (newtons)");
+  detail::validate_loaded_contact(pair, pose, vertical_force, options);
   require_finite("lateral_force", lateral_force);
   return lateral_at(pair, pose, vertical_force, lateral_force, options, detail::rail_gauge_y(pair),
                     0.0);
@@ -377,28 +372,27 @@ WheelsetContact solve_wheelset(const WheelsetOnTrack& track, const WheelsetState
     return out;
   }
   out.centre_height = centre;
-  if (state.lateral_force_left) {
-    out.left_pose = lateral_left.pose;
-    out.left_shift = lateral_left.shift;
-    out.left = std::move(lateral_left.contact);
-    out.left_fit = lateral_left.fit;
-    if (!lateral_left.message.empty()) out.message += "left: " + lateral_left.message + "; ";
-  } else {
-    out.left = detail::solve_wheel_rail_at(track.left, out.left_pose, state.vertical_force_left,
-                                           options, at.gauge_left);
-    ++out.contact_solves;
-  }
-  if (state.lateral_force_right) {
-    out.right_pose = lateral_right.pose;
-    out.right_shift = lateral_right.shift;
-    out.right = std::move(lateral_right.contact);
-    out.right_fit = lateral_right.fit;
-    if (!lateral_right.message.empty()) out.message += "right: " + lateral_right.message + "; ";
-  } else {
-    out.right = detail::solve_wheel_rail_at(track.right, out.right_pose, state.vertical_force_right,
-                                            options, at.gauge_right);
-    ++out.contact_solves;
-  }
+  // Each wheel: the contact its lateral-force solve found, or the one at its rigid position.
+  auto finish = [&](bool given, WheelRailLateral& lateral, const WheelRailPair& pair,
+                    double vertical_force, double gauge_y, const char* side, WheelsetPose& pose,
+                    double& shift, WheelRailContact& contact, LateralFit& fit) {
+    if (given) {
+      pose = lateral.pose;
+      shift = lateral.shift;
+      contact = std::move(lateral.contact);
+      fit = lateral.fit;
+      if (!lateral.message.empty()) out.message += side + (": " + lateral.message) + "; ";
+    } else {
+      contact = detail::solve_wheel_rail_at(pair, pose, vertical_force, options, gauge_y);
+      ++out.contact_solves;
+    }
+  };
+  finish(state.lateral_force_left.has_value(), lateral_left, track.left,
+         state.vertical_force_left, at.gauge_left, "left", out.left_pose, out.left_shift, out.left,
+         out.left_fit);
+  finish(state.lateral_force_right.has_value(), lateral_right, track.right,
+         state.vertical_force_right, at.gauge_right, "right", out.right_pose, out.right_shift,
+         out.right, out.right_fit);
   if (!alternation_converged) {
     out.roll_converged = false;
     out.message += "roll and lateral positions did not settle in 12 rounds; ";
