@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "wheelwear/input_error.hpp"
 #include "wheelwear/pipeline/json_writer.hpp"
+#include "wheelwear/wear/creep_table.hpp"
 #include "wheelwear/wear/fastsim.hpp"
 #include "wheelwear/wear/grid_choice.hpp"
 #include "wheelwear/wear/linear_theory.hpp"
@@ -37,12 +38,21 @@ void run_creep(const CreepArgs& args) {
   wear::CreepForces forces;
   int cells = 0, slip_cells = 0;
   const bool linear = args.method == "linear-sdec" || args.method == "she-sdec";
+  const bool tabled = args.method == "table" || args.method == "best";
   std::optional<wear::GridChoice> chosen;
-  if (linear && args.target_error) {
+  // For table and best: which method gave the forces ("table" or "fastsim-sdec"), and why the
+  // table could not.
+  std::string source, table_outside;
+  if ((linear || args.method == "table") && args.target_error) {
     std::ostringstream message;
     message << "--target-error " << *args.target_error << ": " << args.method
             << " has no grid; use --target-error with a FASTSIM method";
     throw InputError(message.str());
+  }
+  bool use_table = args.method == "table";
+  if (args.method == "best") {
+    use_table = wear::creep_table_covers(args.sdec, args.creepages, args.load, args.material,
+                                         &table_outside);
   }
   if (linear) {
     args.sdec.validate();
@@ -50,8 +60,13 @@ void run_creep(const CreepArgs& args) {
     forces = args.method == "linear-sdec"
                  ? wear::linear_sdec_forces(args.sdec, args.creepages, args.material)
                  : wear::she_sdec_forces(args.sdec, args.creepages, args.material, args.load);
+  } else if (use_table) {
+    forces = wear::creep_table_forces(args.sdec, args.creepages, args.load, args.material);
+    source = "table";
   } else {
-    const auto method = wear::parse_fastsim_method(args.method);
+    const std::string fastsim_name = tabled ? std::string("fastsim-sdec") : args.method;
+    if (tabled) source = fastsim_name;
+    const auto method = wear::parse_fastsim_method(fastsim_name);
     if (!method) throw InputError("--method " + args.method + ": unknown method");
     wear::FastsimOptions options = args.options;
     options.bound = args.bound == "semi-elliptic" ? wear::TractionBound::semi_elliptic
@@ -73,6 +88,7 @@ void run_creep(const CreepArgs& args) {
     cells = solution.cells;
     slip_cells = solution.slip_cells;
   }
+  const bool has_cells = !linear && !use_table;
   const double mu_n = args.load.mu * args.load.N;
   const std::string warnings = forces.flags.describe();
   if (args.json) {
@@ -83,7 +99,9 @@ void run_creep(const CreepArgs& args) {
         .add("Fx_muN", forces.Fx / mu_n)
         .add("Fy_muN", forces.Fy / mu_n);
     if (forces.has_Mz) out.add("Mz", forces.Mz);
-    if (!linear) out.add("cells", cells).add("slip_cells", slip_cells);
+    if (has_cells) out.add("cells", cells).add("slip_cells", slip_cells);
+    if (tabled) out.add("source", source);
+    if (!table_outside.empty()) out.add("table_outside", table_outside);
     if (chosen) {
       out.add("target_error", *args.target_error)
           .add("nx", chosen->nx)
@@ -98,7 +116,9 @@ void run_creep(const CreepArgs& args) {
   std::printf("Fx       %14.6g N   (Fx/muN = %+.6f)\n", forces.Fx, forces.Fx / mu_n);
   std::printf("Fy       %14.6g N   (Fy/muN = %+.6f)\n", forces.Fy, forces.Fy / mu_n);
   if (forces.has_Mz) std::printf("Mz       %14.6g N m (about O)\n", forces.Mz);
-  if (!linear) std::printf("slip     %d of %d cells\n", slip_cells, cells);
+  if (has_cells) std::printf("slip     %d of %d cells\n", slip_cells, cells);
+  if (tabled) std::printf("source   %s\n", source.c_str());
+  if (!table_outside.empty()) std::printf("outside  %s\n", table_outside.c_str());
   if (chosen) {
     std::printf("grid     %d x %d cells for --target-error %g (model error %.3g of muN)\n",
                 chosen->nx, chosen->ny, *args.target_error, chosen->predicted_error);
@@ -122,9 +142,12 @@ void add_creep_command(CLI::App& app) {
       "    --vx 0 --vy 0 --phi 1 --N 37830 --G 80e9 --nu 0.25 --mu 0.35 --json");
   cmd->add_option("--method", args->method,
                   "fastsim-sdec (default), fastsim-eql, fastsim-eqe, fastsim-eqe-shifted,\n"
-                  "fastsim-elliptic, linear-sdec or she-sdec (Shen-Hedrick-Elkins)")
+                  "fastsim-elliptic, linear-sdec, she-sdec (Shen-Hedrick-Elkins),\n"
+                  "table (interpolated in the built-in book of exact-theory tables; an error\n"
+                  "outside its range) or best (the table inside its range, fastsim-sdec\n"
+                  "outside; the JSON's \"source\" says which)")
       ->check(CLI::IsMember({"fastsim-sdec", "fastsim-eql", "fastsim-eqe", "fastsim-eqe-shifted",
-                             "fastsim-elliptic", "linear-sdec", "she-sdec"}));
+                             "fastsim-elliptic", "linear-sdec", "she-sdec", "table", "best"}));
   cmd->add_option("--a", args->sdec.a, "semi-length along x [m]")->required();
   cmd->add_option("--b", args->sdec.b, "semi-width along y [m]")->required();
   cmd->add_option("--psi", args->sdec.psi, "shape number, |psi| < 1 [-]")->capture_default_str();

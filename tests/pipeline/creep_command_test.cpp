@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "support/run_command.hpp"
+#include "wheelwear/wear/creep_table.hpp"
 #include "wheelwear/wear/fastsim.hpp"
 #include "wheelwear/wear/grid_choice.hpp"
 #include "wheelwear/wear/linear_theory.hpp"
@@ -35,7 +36,7 @@ TEST(CreepCommand, PrintsTheLibrarysForcesAsJson) {
 
 TEST(CreepCommand, EveryMethodAnswersWithTheContractKeys) {
   for (const char* method : {"fastsim-sdec", "fastsim-eql", "fastsim-eqe", "fastsim-eqe-shifted",
-                             "fastsim-elliptic", "linear-sdec", "she-sdec"}) {
+                             "fastsim-elliptic", "linear-sdec", "she-sdec", "table", "best"}) {
     const auto result = run_wheelwear(kCase + " --method " + method);
     ASSERT_EQ(result.exit_code, 0) << method << ": " << result.err;
     for (const char* key : {"Fx", "Fy", "Fx_muN", "Fy_muN"})
@@ -96,6 +97,9 @@ TEST(CreepCommand, RejectsBadInputWithAMessage) {
       {"creep --a 4e-3 --b 4e-3 --N 1e4 --target-error 0", "target_error = 0"},
       {"creep --a 4e-3 --b 4e-3 --N 1e4 --target-error 1e-7", "raise the target"},
       {"creep --a 4e-3 --b 4e-3 --N 1e4 --target-error 1e-3 --method she-sdec", "has no grid"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --target-error 1e-3 --method table", "has no grid"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --psi 0.9 --vx 1e-4 --method table", "psi = 0.9"},
+      {"creep --a 4e-3 --b 4e-3 --N 1e4 --nu 0.4 --vx 1e-4 --method table", "nu = 0.4"},
   };
   for (const Case& c : cases) {
     const auto result = run_wheelwear(c.arguments);
@@ -104,6 +108,40 @@ TEST(CreepCommand, RejectsBadInputWithAMessage) {
         << c.arguments << " printed: " << result.err;
     EXPECT_TRUE(result.out.empty()) << c.arguments;
   }
+}
+
+// --method table prints the library's interpolated forces; --method best takes the table
+// inside its range and FASTSIM-SDEC (with the given grid) outside, and says which in "source".
+TEST(CreepCommand, TableAndBestReportTheirSource) {
+  const auto table = run_wheelwear(kCase + " --method table");
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  const wear::CreepForces f =
+      wear::creep_table_forces({4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25});
+  EXPECT_EQ(json_number(table.out, "Fx"), f.Fx);
+  EXPECT_EQ(json_number(table.out, "Fy"), f.Fy);
+  EXPECT_NE(table.out.find("\"source\": \"table\""), std::string::npos) << table.out;
+  EXPECT_FALSE(json_number(table.out, "cells").has_value());
+
+  const auto best = run_wheelwear(kCase + " --method best");
+  ASSERT_EQ(best.exit_code, 0) << best.err;
+  EXPECT_EQ(json_number(best.out, "Fx"), f.Fx);
+  EXPECT_NE(best.out.find("\"source\": \"table\""), std::string::npos) << best.out;
+
+  // psi = 0.9 lies outside the table (|psi| <= 0.8): FASTSIM-SDEC on the 30 x 20 grid.
+  const auto outside = run_wheelwear(
+      "creep --a 4.25e-3 --b 4.25e-3 --psi 0.9 --phi 1.0 --N 37830 --mu 0.35 --json "
+      "--method best --nx 30 --ny 20");
+  ASSERT_EQ(outside.exit_code, 0) << outside.err;
+  wear::FastsimOptions options;
+  options.nx = 30;
+  options.ny = 20;
+  const wear::CreepForces g = wear::fastsim(wear::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.9},
+                                            {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options)
+                                  .forces;
+  EXPECT_EQ(json_number(outside.out, "Fx"), g.Fx);
+  EXPECT_NE(outside.out.find("\"source\": \"fastsim-sdec\""), std::string::npos) << outside.out;
+  EXPECT_NE(outside.out.find("psi = 0.9"), std::string::npos) << outside.out;
+  EXPECT_TRUE(json_number(outside.out, "slip_cells").has_value());
 }
 
 }  // namespace

@@ -26,7 +26,6 @@ std::string CoefficientFlags::describe() const {
   };
   if (kalker_extrapolated) add("a/b outside Kalker's table (0.1...10): asymptotic C11, C22, C23");
   if (sdec_held) add("a/b outside Table 1 (0.1...10): SDEC coefficients of the end row");
-  if (sdec_nu_approximated) add("nu != 0.25: K13, B11, B22, B23 scaled by C11(nu)/C11(0.25)");
   return text;
 }
 

@@ -30,9 +30,8 @@ struct ContactLoad {
 struct CoefficientFlags {
   bool kalker_extrapolated = false;   ///< a/b outside 0.1 ... 10: Kalker's asymptotes were used
   bool sdec_held = false;             ///< a/b outside 0.1 ... 10: Table 1's end row was held
-  bool sdec_nu_approximated = false;  ///< nu != 0.25: K13 and B's scaled by C11(nu)/C11(0.25)
 
-  bool any() const { return kalker_extrapolated || sdec_held || sdec_nu_approximated; }
+  bool any() const { return kalker_extrapolated || sdec_held; }
   /// Human-readable list of the raised flags, empty when none is.
   std::string describe() const;
 };

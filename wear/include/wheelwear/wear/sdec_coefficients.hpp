@@ -23,14 +23,16 @@ struct SdecCoefficients {
   CoefficientFlags flags;
 };
 
-/// Table row for ellipticity a/b and Poisson's ratio nu.
+/// Table row for ellipticity a/b and Poisson's ratio nu in [0, 0.5].
 ///
-/// K13 and the B's exist only for nu = 0.25 (Table 1), interpolated in a/b (a/b <= 1) or b/a
-/// (a/b >= 1) like Kalker's table; outside 0.1 ... 10 the end row is held (flagged). For other nu
-/// each of them is scaled with the ratio of its companion Kalker coefficient at nu and at 0.25
-/// (K13 and B11 with C11, B22 with C22, B23 with C23), an approximation that keeps the SDEC
-/// correction proportional to the elliptic stiffness it modifies (flagged). C11, C22, C23 are
-/// always Kalker's (kalker_coefficients), as in the paper.
+/// K13 and the B's are Table 1 of Liu, Fu & Bruni 2022 (nu = 0.25), interpolated in a/b
+/// (a/b <= 1) or b/a (a/b >= 1) like Kalker's table; outside 0.1 ... 10 the end row is held
+/// (flagged). For other nu, Table 1 is carried to nu with the change the exact theory gives
+/// between 0.25 and nu (K13 by ratio, the B's by difference), from the coefficients generated
+/// for nu = 0, 0.25, 0.28, 0.3, 0.5 by bench/sdec_table_generator.cpp (data/
+/// sdec_coefficients.csv: Kalker's exact theory, no slip, Table 1's least-squares fit over
+/// psi = 0.2 ... 0.8) and a natural cubic spline in nu between them. C11, C22, C23 are always
+/// Kalker's (kalker_coefficients), as in the paper.
 SdecTableRow sdec_table_row(double a_over_b, double nu, CoefficientFlags* flags = nullptr);
 
 /// C11s, C13s, C22s, C23s of Eq. 12 for the region `sdec` and Poisson's ratio `nu`.
