@@ -19,7 +19,7 @@ struct StateField {
 };
 
 /// Sets `field` on `state`; throws InputError naming `where` when the name is unknown or the
-/// value impossible. Returns false for an empty optional column (no value).
+/// value impossible.
 void set_state_field(WheelsetStateSpec& state, const StateField& field, const std::string& where);
 
 /// Checks a complete state (loads given, creepages complete); `where` names it in messages.

@@ -1,5 +1,6 @@
 #include "wheelwear/pipeline/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -363,7 +364,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   for (const auto& state : s.states) total += state.weight;
   if (!(total > 0.0))
     throw InputError("scene: load_collective: the weights sum to 0; give some state a weight > 0");
-  if (s.max_depth_step <= 0.0 || s.step_distance > s.distance) s.step_distance = s.distance;
+  s.step_distance = std::min(s.step_distance, s.distance);  // one step need not exceed the run
   return s;
 }
 
