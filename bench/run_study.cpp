@@ -13,15 +13,14 @@
 // T gamma maps in the results file.
 
 #include <tbb/global_control.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
-
-#include <chrono>
 
 #include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/profile_source.hpp"
@@ -42,12 +41,11 @@ struct Measurement {
 Measurement measure(const pipeline::Scene& scene, int threads) {
   const tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                                   static_cast<std::size_t>(threads));
-  const fs::path out = fs::temp_directory_path() / ("wheelwear_run_study_" +
-                                                    std::to_string(::getpid()) + ".h5");
+  const fs::path out =
+      fs::temp_directory_path() / ("wheelwear_run_study_" + std::to_string(::getpid()) + ".h5");
   Measurement m;
   m.threads = threads;
-  m.summary = pipeline::run_scene(scene, pipeline::default_scene_text(), {}, true, out,
-                                  {true, {}});
+  m.summary = pipeline::run_scene(scene, pipeline::default_scene_text(), {}, true, out, {true, {}});
   const auto file = pipeline::ResultsFile::read(out);
   m.last_profile = file.read_step_array(file.completed_steps() - 1, "wheel/z");
   fs::remove(out);
@@ -107,8 +105,8 @@ void savings(const pipeline::Scene& base, const std::string& csv) {
   const double plain = run_seconds(two_steps);
   two_steps.tgamma_maps = true;
   const double maps = run_seconds(two_steps);
-  std::printf("T gamma maps in the results file (2-step run): %.2f s without, %.2f s with\n",
-              plain, maps);
+  std::printf("T gamma maps in the results file (2-step run): %.2f s without, %.2f s with\n", plain,
+              maps);
   out << "tgamma_maps,off," << plain << ",2-step run of the default scene\n";
   out << "tgamma_maps,on," << maps << ",2-step run of the default scene\n";
 }

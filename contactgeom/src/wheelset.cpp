@@ -387,9 +387,8 @@ WheelsetContact solve_wheelset(const WheelsetOnTrack& track, const WheelsetState
       ++out.contact_solves;
     }
   };
-  finish(state.lateral_force_left.has_value(), lateral_left, track.left,
-         state.vertical_force_left, at.gauge_left, "left", out.left_pose, out.left_shift, out.left,
-         out.left_fit);
+  finish(state.lateral_force_left.has_value(), lateral_left, track.left, state.vertical_force_left,
+         at.gauge_left, "left", out.left_pose, out.left_shift, out.left, out.left_fit);
   finish(state.lateral_force_right.has_value(), lateral_right, track.right,
          state.vertical_force_right, at.gauge_right, "right", out.right_pose, out.right_shift,
          out.right, out.right_fit);

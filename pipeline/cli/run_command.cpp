@@ -47,18 +47,16 @@ void show_progress(const pipeline::RunProgress& p) {
   const double done = p.total_distance > 0.0 ? p.distance / p.total_distance : 1.0;
   const int width = 24;
   const int filled = static_cast<int>(done * width + 0.5);
-  const std::string bar =
-      std::string(static_cast<std::size_t>(filled), '#') +
-      std::string(static_cast<std::size_t>(width - filled), '.');
+  const std::string bar = std::string(static_cast<std::size_t>(filled), '#') +
+                          std::string(static_cast<std::size_t>(width - filled), '.');
   // ETA from the distance rate so far; the step lengths vary, the distance is what remains.
   const double eta = done > 0.0 ? p.elapsed * (1.0 - done) / done : 0.0;
-  std::fprintf(stderr, "%s[%s] step %d  %.1f / %.1f km  %.0f states/s  ETA %s%s%s",
-               tty ? "\r" : "", bar.c_str(), p.step, p.distance / 1e3, p.total_distance / 1e3,
+  std::fprintf(stderr, "%s[%s] step %d  %.1f / %.1f km  %.0f states/s  ETA %s%s%s", tty ? "\r" : "",
+               bar.c_str(), p.step, p.distance / 1e3, p.total_distance / 1e3,
                p.evaluations_per_second, done >= 1.0 ? "0 s" : duration(eta).c_str(),
-               p.failed_contacts > 0 ? ("  (" + std::to_string(p.failed_contacts) +
-                                        " contacts skipped)")
-                                           .c_str()
-                                     : "",
+               p.failed_contacts > 0
+                   ? ("  (" + std::to_string(p.failed_contacts) + " contacts skipped)").c_str()
+                   : "",
                tty ? "   " : "\n");
   if (tty && done >= 1.0) std::fputc('\n', stderr);
   std::fflush(stderr);
@@ -67,9 +65,8 @@ void show_progress(const pipeline::RunProgress& p) {
 void report(const RunArgs& args, const std::string& output, const pipeline::RunSummary& s) {
   const pipeline::ResultsFile file = pipeline::ResultsFile::read(output);
   const int last = file.completed_steps() - 1;
-  const std::string wheel = file.has(pipeline::ResultsFile::step_group(last) + "/wheel")
-                                ? "wheel"
-                                : "wheel_left";
+  const std::string wheel =
+      file.has(pipeline::ResultsFile::step_group(last) + "/wheel") ? "wheel" : "wheel_left";
   auto at = [&](int step, const std::string& name) {
     return file.read_step_array(step, name).at(0);
   };
@@ -129,8 +126,8 @@ void run(const RunArgs& args) {
   }
   std::unique_ptr<tbb::global_control> threads;
   if (args.threads > 0) {
-    threads = std::make_unique<tbb::global_control>(
-        tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(args.threads));
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    static_cast<std::size_t>(args.threads));
   }
   pipeline::RunOptions options;
   options.overwrite = args.overwrite;
@@ -144,8 +141,7 @@ void run(const RunArgs& args) {
     report(args, args.resume, pipeline::resume_run(args.resume, options));
     return;
   }
-  if (args.output.empty())
-    throw InputError("-o: give the results file to write, e.g. -o run.h5");
+  if (args.output.empty()) throw InputError("-o: give the results file to write, e.g. -o run.h5");
   pipeline::RunSummary summary;
   if (args.scene.empty()) {
     summary = pipeline::run_scene(pipeline::default_scene(), pipeline::default_scene_text(), {},

@@ -44,9 +44,9 @@ struct KeyLess {
   bool operator()(const GeometryKey& a, const GeometryKey& b) const {
     auto as_pair = [](double v) { return std::pair{!std::isnan(v), std::isnan(v) ? 0.0 : v}; };
     return std::tuple{std::get<0>(a), std::get<1>(a), std::get<2>(a), as_pair(std::get<3>(a)),
-                      as_pair(std::get<4>(a))} <
-           std::tuple{std::get<0>(b), std::get<1>(b), std::get<2>(b), as_pair(std::get<3>(b)),
-                      as_pair(std::get<4>(b))};
+                      as_pair(std::get<4>(a))} < std::tuple{std::get<0>(b), std::get<1>(b),
+                                                            std::get<2>(b), as_pair(std::get<3>(b)),
+                                                            as_pair(std::get<4>(b))};
   }
 };
 
@@ -183,9 +183,9 @@ CollectiveWear CollectiveEvaluator::evaluate(
     sum.vertical_force.assign(2 * n_states, kNaN);
     sum.lateral_force.assign(2 * n_states, kNaN);
     sum.lateral_fit.assign(2 * n_states, kNaN);
-    for (auto* v : {&sum.normal_force, &sum.a, &sum.b, &sum.psi, &sum.y_wheel, &sum.contact_angle,
-                    &sum.vx, &sum.vy, &sum.phi, &sum.Fx, &sum.Fy, &sum.frictional_work,
-                    &sum.worn_area})
+    for (auto* v :
+         {&sum.normal_force, &sum.a, &sum.b, &sum.psi, &sum.y_wheel, &sum.contact_angle, &sum.vx,
+          &sum.vy, &sum.phi, &sum.Fx, &sum.Fy, &sum.frictional_work, &sum.worn_area})
       v->assign(2 * n_states * kPatchSlots, kNaN);
   }
   const int nx = scene_.grid_nx, ny = scene_.grid_ny;
@@ -204,7 +204,8 @@ CollectiveWear CollectiveEvaluator::evaluate(
   fastsim_options.scheme = scene_.scheme;
   fastsim_options.cell_fields = true;  // the wear laws need every cell's work and slip
   // Only the fields the wear needs, unless T gamma maps with their cell positions are written.
-  fastsim_options.field_set = scene_.tgamma_maps ? wear::CellFieldSet::all : wear::CellFieldSet::wear;
+  fastsim_options.field_set =
+      scene_.tgamma_maps ? wear::CellFieldSet::all : wear::CellFieldSet::wear;
 
   std::vector<WheelResult> results(cases.size());
   tbb::parallel_for(std::size_t{0}, cases.size(), [&](std::size_t k) {
@@ -231,10 +232,9 @@ CollectiveWear CollectiveEvaluator::evaluate(
       if (patch.hertz_valid) hertz = contactgeom::Sdec{patch.hertz.a, patch.hertz.b, 0.0};
       if (scene_.model == wear::ContactModel::hertz && !hertz) continue;
       const wear::ModelPatch region = wear::model_patch(scene_.model, patch.sdec, hertz);
-      const wear::Creepages creep =
-          c.creepages ? *c.creepages
-                      : contactgeom::kinematic_creepages(patch, pose, c.motion,
-                                                         scene_.wheel_radius);
+      const wear::Creepages creep = c.creepages ? *c.creepages
+                                                : contactgeom::kinematic_creepages(
+                                                      patch, pose, c.motion, scene_.wheel_radius);
       wear::fastsim(region.method, region.region, creep, {patch.normal_force, scene_.friction},
                     material, fastsim_options, solution);
       // The bins the patch can reach on the wheel: its width around O, both ways.
@@ -243,7 +243,8 @@ CollectiveWear CollectiveEvaluator::evaluate(
       const double hi = std::min(wheels[p]->length(), patch.s_wheel + reach);
       LocalWear local;
       local.first = static_cast<std::size_t>(std::floor(lo / kBin));
-      const std::size_t last = std::min(bins[p] - 1, static_cast<std::size_t>(std::ceil(hi / kBin)));
+      const std::size_t last =
+          std::min(bins[p] - 1, static_cast<std::size_t>(std::ceil(hi / kBin)));
       wear::WearDistribution part = wear::WearDistribution::zeros(
           static_cast<double>(local.first) * kBin, kBin, last - local.first + 1);
       wear::accumulate_wear(*solution.fields, c.motion.speed, law_,

@@ -15,10 +15,10 @@ namespace wheelwear::pipeline::detail {
 namespace {
 
 // Limits that catch unit mistakes (mm for m, kN for N) as much as impossible values.
-constexpr double kMaxShift = 0.05;       // [m]: beyond it no wheel is on its rail
-constexpr double kMaxYaw = 0.1;          // [rad]
-constexpr double kMaxLoad = 1e6;         // [N] on one wheel
-constexpr double kMaxSpeed = 150.0;      // [m/s]
+constexpr double kMaxShift = 0.05;        // [m]: beyond it no wheel is on its rail
+constexpr double kMaxYaw = 0.1;           // [rad]
+constexpr double kMaxLoad = 1e6;          // [N] on one wheel
+constexpr double kMaxSpeed = 150.0;       // [m/s]
 constexpr double kMaxLateralSpeed = 5.0;  // [m/s]
 constexpr double kMinCurveRadius = 50.0;  // [m]
 
@@ -38,8 +38,8 @@ std::optional<wear::Creepages>& creepages(WheelsetStateSpec& s, bool left) {
 
 const std::vector<Column>& columns() {
   static const std::vector<Column> table = {
-      {"dy_m", "lateral shift, + to the left [m]", [](auto& s, double v) { s.dy = v; },
-       -kMaxShift, kMaxShift},
+      {"dy_m", "lateral shift, + to the left [m]", [](auto& s, double v) { s.dy = v; }, -kMaxShift,
+       kMaxShift},
       {"yaw_rad", "yaw angle [rad]", [](auto& s, double v) { s.yaw = v; }, -kMaxYaw, kMaxYaw},
       {"load_left_N", "vertical force on the left wheel [N]",
        [](auto& s, double v) { s.load_left = v; }, 1.0, kMaxLoad},
@@ -51,8 +51,7 @@ const std::vector<Column>& columns() {
        [](auto& s, double v) { s.lateral_force_left = v; }, -kMaxLoad, kMaxLoad},
       {"lateral_force_right_N", "lateral force of the right wheel on its rail [N]",
        [](auto& s, double v) { s.lateral_force_right = v; }, -kMaxLoad, kMaxLoad},
-      {"speed_m_s", "forward speed [m/s]", [](auto& s, double v) { s.speed = v; }, 1e-3,
-       kMaxSpeed},
+      {"speed_m_s", "forward speed [m/s]", [](auto& s, double v) { s.speed = v; }, 1e-3, kMaxSpeed},
       {"curve_radius_m", "curve radius, 0 on tangent track, + right-hand [m]",
        [](auto& s, double v) { s.curve_radius = v; }, -1e12, 1e12},
       {"lateral_velocity_m_s", "dy/dt, + to the left [m/s]",
@@ -69,13 +68,15 @@ const std::vector<Column>& columns() {
        [](auto& s, double v) { creepages(s, false)->vy = v; }, -1.0, 1.0},
       {"spin_right_1_m", "spin creepage of the right wheel [1/m]",
        [](auto& s, double v) { creepages(s, false)->phi = v; }, -100.0, 100.0},
-      {"weight", "share of the running distance [-]", [](auto& s, double v) { s.weight = v; },
-       0.0, 1e12},
+      {"weight", "share of the running distance [-]", [](auto& s, double v) { s.weight = v; }, 0.0,
+       1e12},
   };
   return table;
 }
 
-bool is_label(std::string_view name) { return name == "label" || name == "section"; }
+bool is_label(std::string_view name) {
+  return name == "label" || name == "section";
+}
 
 std::string format_value(double v) {
   std::ostringstream out;
@@ -154,8 +155,8 @@ std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
     std::size_t start = 0;
     while (true) {
       const std::size_t comma = row.find(',', start);
-      cells.emplace_back(
-          profiles::trim(row.substr(start, comma == std::string_view::npos ? comma : comma - start)));
+      cells.emplace_back(profiles::trim(
+          row.substr(start, comma == std::string_view::npos ? comma : comma - start)));
       if (comma == std::string_view::npos) break;
       start = comma + 1;
     }

@@ -1,11 +1,12 @@
 #include "wheelwear/pipeline/scene.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "load_collective.hpp"
 #include "wheelwear/input_error.hpp"
@@ -53,8 +54,8 @@ int integer(const toml::node& node, const std::string& key, int lo, int hi,
   const auto value = node.value_exact<int64_t>();
   if (!value || *value < lo || *value > hi) {
     throw InputError(where(node.source(), key) + ": expected a whole number in [" +
-                     std::to_string(lo) + ", " + std::to_string(hi) + "] (" +
-                     std::string(meaning) + ")");
+                     std::to_string(lo) + ", " + std::to_string(hi) + "] (" + std::string(meaning) +
+                     ")");
   }
   return static_cast<int>(*value);
 }
@@ -369,8 +370,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
 }
 
 Scene load_scene(const fs::path& path) {
-  if (!fs::is_regular_file(path))
-    throw InputError("scene " + path.string() + ": no such file");
+  if (!fs::is_regular_file(path)) throw InputError("scene " + path.string() + ": no such file");
   const std::string text = profiles::read_text_file(path);
   try {
     return parse_scene(text, path.parent_path());

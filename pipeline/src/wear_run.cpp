@@ -99,8 +99,8 @@ wear::WearDistribution smoothed(const wear::WearDistribution& rate, double lengt
 
 // The step's depth as a function of the profile's lateral coordinate (what apply_wear takes):
 // bins where y does not increase (a vertical flange back) carry no wear and are left out.
-profiles::WearDepth depth_on_y(const profiles::Profile& profile,
-                               const wear::WearDistribution& rate, double distance) {
+profiles::WearDepth depth_on_y(const profiles::Profile& profile, const wear::WearDistribution& rate,
+                               double distance) {
   profiles::WearDepth depth;
   for (std::size_t k = 0; k < rate.depth.size(); ++k) {
     const double y = profile.position(rate.s(k)).x();
@@ -116,8 +116,8 @@ void add_summaries(GroupRecord& g, const StateSummaries& s) {
   const std::vector<std::size_t> per_patch = {s.states, 2, static_cast<std::size_t>(kPatchSlots)};
   auto add = [&](const char* name, const std::vector<double>& v, const char* units,
                  const char* what, bool patch) {
-    g.arrays.push_back({std::string("states/") + name, v, patch ? per_patch : per_wheel, units,
-                        what});
+    g.arrays.push_back(
+        {std::string("states/") + name, v, patch ? per_patch : per_wheel, units, what});
   };
   add("status", s.status, "1",
       "[state, wheel (left, right)] contact status: 0 ok, 1 no contact, 2 flange climb, 3 not "
@@ -125,7 +125,10 @@ void add_summaries(GroupRecord& g, const StateSummaries& s) {
       false);
   add("patches", s.patches, "1", "[state, wheel] number of contact patches", false);
   add("dy", s.dy, "m", "[state, wheel] lateral shift of the wheel, + towards its flange", false);
-  g.arrays.push_back({"states/roll", s.roll, {s.states}, "rad",
+  g.arrays.push_back({"states/roll",
+                      s.roll,
+                      {s.states},
+                      "rad",
                       "[state] wheelset roll, + when the left wheel goes down"});
   add("vertical_force", s.vertical_force, "N", "[state, wheel] vertical force of the contact",
       false);
@@ -161,8 +164,7 @@ void add_maps(GroupRecord& g, const TgammaMaps& m, std::size_t states) {
   g.arrays.push_back({"tgamma/work", m.work, shape, "J/m^2/m",
                       "[state, wheel, patch, strip, cell] frictional work density T gamma per "
                       "metre rolled"});
-  g.arrays.push_back(
-      {"tgamma/x", m.x, shape, "m", "cell centre along x (rolling) relative to O"});
+  g.arrays.push_back({"tgamma/x", m.x, shape, "m", "cell centre along x (rolling) relative to O"});
   g.arrays.push_back(
       {"tgamma/y", m.y, shape, "m", "cell centre along y relative to O, + towards the flange"});
 }
@@ -303,15 +305,18 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
         s[k] = rate.s(k);
         ys[k] = wheels[p].position(s[k]).x();
       }
-      g.arrays.push_back(vector(n + "/wear_rate/s", s, "m", "bin centre, arc length on the profile"));
+      g.arrays.push_back(
+          vector(n + "/wear_rate/s", s, "m", "bin centre, arc length on the profile"));
       g.arrays.push_back(vector(n + "/wear_rate/y", ys, "m", "bin centre, lateral position"));
-      g.arrays.push_back(vector(n + "/wear_rate/depth", rate.depth, "m/m",
-                                "worn depth per metre running, weighted over the collective (unsmoothed)"));
+      g.arrays.push_back(
+          vector(n + "/wear_rate/depth", rate.depth, "m/m",
+                 "worn depth per metre running, weighted over the collective (unsmoothed)"));
       increments.push_back(depth_on_y(wheels[p], smooth_rate[p], step_distance));
       g.arrays.push_back(vector(n + "/wear_step/y", increments.back().y, "m",
                                 "lateral positions of the step's wear depth"));
-      g.arrays.push_back(vector(n + "/wear_step/depth", increments.back().depth, "m",
-                                "wear depth of the step (smoothed wear rate times the step distance)"));
+      g.arrays.push_back(
+          vector(n + "/wear_step/depth", increments.back().depth, "m",
+                 "wear depth of the step (smoothed wear rate times the step distance)"));
     }
     const contactgeom::WheelRailPair left = evaluator.pair(wheels.front());
     const contactgeom::WheelRailPair right = evaluator.pair(wheels.back());

@@ -72,9 +72,8 @@ TEST(WheelRailStress, NoisyProfilesAcrossTheFlangeAtAnyLoad) {
   }
   // Most positions on noisy profiles still solve; the rest report a status, not a failure.
   EXPECT_GT(solved, 180) << "statuses: ok " << statuses[0] << ", no contact " << statuses[1]
-                         << ", flange climb " << statuses[2] << ", not converged "
-                         << statuses[3] << ", load jump " << statuses[4] << ", profile end "
-                         << statuses[5];
+                         << ", flange climb " << statuses[2] << ", not converged " << statuses[3]
+                         << ", load jump " << statuses[4] << ", profile end " << statuses[5];
 }
 
 TEST(WheelRailStress, WheelsetOnNoisyProfilesStaysFinite) {

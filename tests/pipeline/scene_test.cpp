@@ -106,8 +106,7 @@ TEST_F(SceneTest, CollectiveFromHdf5AsAMultibodyExportWritesIt) {
     H5::H5File h5(file.string(), H5F_ACC_TRUNC);
     auto column = [&](const char* name, std::vector<double> values) {
       const hsize_t n = values.size();
-      H5::DataSet set =
-          h5.createDataSet(name, H5::PredType::NATIVE_DOUBLE, H5::DataSpace(1, &n));
+      H5::DataSet set = h5.createDataSet(name, H5::PredType::NATIVE_DOUBLE, H5::DataSpace(1, &n));
       set.write(values.data(), H5::PredType::NATIVE_DOUBLE);
     };
     column("dy_m", {0.001, 0.007});
@@ -191,8 +190,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "unknown contact model"},
         BadScene{"Syntax", "[run\n", "scene line 1"},
         BadScene{"NoStates", "[run]\ndistance_m = 10\n", "no [load_collective]"},
-        BadScene{"StateWithoutLoad",
-                 "[[load_collective.state]]\ndy_m = 0.001\nspeed_m_s = 20\n",
+        BadScene{"StateWithoutLoad", "[[load_collective.state]]\ndy_m = 0.001\nspeed_m_s = 20\n",
                  "wheel loads are missing"},
         BadScene{"ShiftInMillimetres",
                  "[[load_collective.state]]\ndy_m = 5\naxle_load_N = 1e5\nspeed_m_s = 20\n",
@@ -226,8 +224,8 @@ TEST_F(SceneTest, BadSceneLeavesNoFileAndKeepsAnExistingOne) {
   EXPECT_FALSE(fs::exists(dir_ / "out.h5.partial"));
 
   write("out.h5", "earlier results");
-  result = testing::run_wheelwear("run " + scene.string() + " -o " + out.string() +
-                                  " -q --overwrite");
+  result =
+      testing::run_wheelwear("run " + scene.string() + " -o " + out.string() + " -q --overwrite");
   EXPECT_EQ(result.exit_code, 2);
   std::ifstream in(out);
   std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

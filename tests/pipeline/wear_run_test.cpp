@@ -12,8 +12,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -73,10 +73,18 @@ class WearRunTest : public ::testing::Test {
 
 // Every array of every step that a run records, for exact comparisons.
 std::vector<std::string> step_arrays(const ResultsFile& file) {
-  std::vector<std::string> names = {"distance", "step_distance", "equivalent_conicity",
-                                    "delta_r/value", "wheel/y", "wheel/z", "wheel/Sh",
-                                    "wheel/Sd", "wheel/qR", "wheel/wear_rate/depth",
-                                    "wheel/wear_step/y", "wheel/wear_step/depth"};
+  std::vector<std::string> names = {"distance",
+                                    "step_distance",
+                                    "equivalent_conicity",
+                                    "delta_r/value",
+                                    "wheel/y",
+                                    "wheel/z",
+                                    "wheel/Sh",
+                                    "wheel/Sd",
+                                    "wheel/qR",
+                                    "wheel/wear_rate/depth",
+                                    "wheel/wear_step/y",
+                                    "wheel/wear_step/depth"};
   for (const char* s : {"status", "dy", "normal_force", "a", "b", "psi", "y_wheel", "vx", "vy",
                         "phi", "Fx", "Fy", "frictional_work", "worn_area"})
     names.push_back(std::string("states/") + s);
@@ -108,8 +116,8 @@ TEST_F(WearRunTest, OneAndTwoThreadsGiveIdenticalFiles) {
   ASSERT_EQ(testing::run_wheelwear(base + (dir_ / "t2.h5").string() + " --threads 2").exit_code, 0);
   expect_identical(dir_ / "t1.h5", dir_ / "t2.h5");
   // HDF5's own comparison finds no difference outside /run_info (timings, host) either.
-  const std::string h5diff = "h5diff --exclude-path /run_info " + (dir_ / "t1.h5").string() +
-                             " " + (dir_ / "t2.h5").string() + " > /dev/null";
+  const std::string h5diff = "h5diff --exclude-path /run_info " + (dir_ / "t1.h5").string() + " " +
+                             (dir_ / "t2.h5").string() + " > /dev/null";
   EXPECT_EQ(std::system(h5diff.c_str()), 0);
 }
 
@@ -134,16 +142,20 @@ TEST_F(WearRunTest, KilledRunResumesToIdenticalResults) {
   // Enough steps that the run is still going when it is killed after its second step.
   const fs::path scene = write("s.toml", small_scene(400e3, 10e3, 1e-3));
   const fs::path reference = dir_ / "reference.h5", killed = dir_ / "killed.h5";
-  ASSERT_EQ(testing::run_wheelwear("run " + scene.string() + " -q -o " + reference.string())
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      testing::run_wheelwear("run " + scene.string() + " -q -o " + reference.string()).exit_code,
+      0);
   const int total = ResultsFile::read(reference).completed_steps();
   ASSERT_EQ(total, 41);
 
   const std::string exe = WHEELWEAR_EXE, out = killed.string(), scene_path = scene.string();
-  std::vector<char*> argv = {const_cast<char*>(exe.c_str()), const_cast<char*>("run"),
-                             const_cast<char*>(scene_path.c_str()), const_cast<char*>("-q"),
-                             const_cast<char*>("-o"), const_cast<char*>(out.c_str()), nullptr};
+  std::vector<char*> argv = {const_cast<char*>(exe.c_str()),
+                             const_cast<char*>("run"),
+                             const_cast<char*>(scene_path.c_str()),
+                             const_cast<char*>("-q"),
+                             const_cast<char*>("-o"),
+                             const_cast<char*>(out.c_str()),
+                             nullptr};
   pid_t pid = 0;
   ASSERT_EQ(::posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv.data(), environ), 0);
   // Wait until two steps are published, then kill the process without warning.
@@ -210,7 +222,8 @@ TEST_F(WearRunTest, WornAreaEqualsAccumulatedWearAndGrowsMonotonically) {
     // The step's worn cross-section: the applied depth integrated along the profile.
     const auto y = file.read_step_array(step, "wheel/wear_step/y");
     const auto depth = file.read_step_array(step, "wheel/wear_step/depth");
-    const auto yk = file.read_step_array(step, "wheel/y"), zk = file.read_step_array(step, "wheel/z");
+    const auto yk = file.read_step_array(step, "wheel/y"),
+               zk = file.read_step_array(step, "wheel/z");
     const profiles::Profile before(points(yk, zk), {"step", profiles::Body::wheel});
     for (std::size_t i = 0; i + 1 < y.size(); ++i) {
       // Arc length between the two lateral positions on the profile the depth was applied to.
@@ -218,7 +231,8 @@ TEST_F(WearRunTest, WornAreaEqualsAccumulatedWearAndGrowsMonotonically) {
       accumulated += 0.5 * (depth[i] + depth[i + 1]) * ds;
     }
     const int next = step + 1;
-    const auto y1 = file.read_step_array(next, "wheel/y"), z1 = file.read_step_array(next, "wheel/z");
+    const auto y1 = file.read_step_array(next, "wheel/y"),
+               z1 = file.read_step_array(next, "wheel/z");
     const double area = area_between(file.read_step_array(0, "wheel/y"),
                                      file.read_step_array(0, "wheel/z"), y1, z1);
     EXPECT_GT(area, previous_area) << "step " << next;
@@ -252,7 +266,8 @@ TEST_F(WearRunTest, SeparateWheelsOfAMirroredCollectiveWearAlike) {
   const ResultsFile fs_ = ResultsFile::read(separate), fh = ResultsFile::read(shared);
   ASSERT_EQ(fs_.completed_steps(), 3);
   for (int step = 0; step < 3; ++step) {
-    EXPECT_EQ(fs_.read_step_array(step, "wheel_left/z"), fs_.read_step_array(step, "wheel_right/z"));
+    EXPECT_EQ(fs_.read_step_array(step, "wheel_left/z"),
+              fs_.read_step_array(step, "wheel_right/z"));
     const auto left = fs_.read_step_array(step, "wheel_left/wear_rate/depth");
     const auto one = fh.read_step_array(step, "wheel/wear_rate/depth");
     ASSERT_EQ(left.size(), one.size());
@@ -273,12 +288,12 @@ double raggedness(const std::vector<double>& depth) {
 // Integral of |z_a - z_b| over the worn width (y from -40 to 50 mm) [m^2]: how far apart two
 // profiles are, without the cancellation a signed area would allow.
 double distance_between(const ResultsFile& a, const ResultsFile& b, int step_a, int step_b) {
-  const profiles::Profile pa(points(a.read_step_array(step_a, "wheel/y"),
-                                    a.read_step_array(step_a, "wheel/z")),
-                             {"a", profiles::Body::wheel});
-  const profiles::Profile pb(points(b.read_step_array(step_b, "wheel/y"),
-                                    b.read_step_array(step_b, "wheel/z")),
-                             {"b", profiles::Body::wheel});
+  const profiles::Profile pa(
+      points(a.read_step_array(step_a, "wheel/y"), a.read_step_array(step_a, "wheel/z")),
+      {"a", profiles::Body::wheel});
+  const profiles::Profile pb(
+      points(b.read_step_array(step_b, "wheel/y"), b.read_step_array(step_b, "wheel/z")),
+      {"b", profiles::Body::wheel});
   double sum = 0.0;
   const double dy = 0.05e-3;
   for (double y = -0.040; y <= 0.050; y += dy) sum += std::abs(*pa.z_at(y) - *pb.z_at(y)) * dy;
@@ -306,7 +321,8 @@ TEST_F(WearRunTest, LargeStepsConvergeToSmallSteps) {
   const ResultsFile c = ResultsFile::read(coarse), m = ResultsFile::read(medium),
                     f = ResultsFile::read(fine);
   EXPECT_LT(3 * c.completed_steps(), f.completed_steps());
-  const int lc = c.completed_steps() - 1, lm = m.completed_steps() - 1, lf = f.completed_steps() - 1;
+  const int lc = c.completed_steps() - 1, lm = m.completed_steps() - 1,
+            lf = f.completed_steps() - 1;
   const double worn = distance_between(f, f, lf, 0);
   const double error_coarse = distance_between(c, f, lc, lf);
   const double error_medium = distance_between(m, f, lm, lf);
@@ -351,16 +367,16 @@ TEST_F(WearRunTest, SmallSceneMatchesGoldenResults) {
     golden.precision(17);
     golden << "step,dataset,index,value,tolerance\n";
     for (int step = 0; step < file.completed_steps(); ++step) {
-      for (const char* name : {"distance", "step_distance", "equivalent_conicity", "wheel/Sd",
-                               "wheel/qR", "wheel/z", "wheel/wear_rate/depth",
-                               "states/normal_force", "states/Fy", "states/worn_area"}) {
+      for (const char* name :
+           {"distance", "step_distance", "equivalent_conicity", "wheel/Sd", "wheel/qR", "wheel/z",
+            "wheel/wear_rate/depth", "states/normal_force", "states/Fy", "states/worn_area"}) {
         const auto v = file.read_step_array(step, name);
         std::size_t best = 0;
         for (std::size_t i = 0; i < v.size(); ++i)
           if (!std::isnan(v[i]) && (std::isnan(v[best]) || std::abs(v[i]) > std::abs(v[best])))
             best = i;
-        const bool length = std::string(name).find("wheel/") == 0 &&
-                            std::string(name) != "wheel/wear_rate/depth";
+        const bool length =
+            std::string(name).find("wheel/") == 0 && std::string(name) != "wheel/wear_rate/depth";
         golden << step << ',' << name << ',' << best << ',' << v[best] << ','
                << (length ? 1e-9 : 1e-6 * std::abs(v[best]) + 1e-300) << '\n';
       }

@@ -17,8 +17,8 @@
 namespace wheelwear::wear {
 namespace {
 
-using testing::CsvTable;
 using testing::benchmark_pair;
+using testing::CsvTable;
 using testing::test_data;
 
 // Lateral centroid and peak of a distribution of frictional power over lateral positions.

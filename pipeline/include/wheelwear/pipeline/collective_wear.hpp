@@ -22,10 +22,10 @@ inline constexpr int kPatchSlots = 3;
 /// are row-major [state][wheel][slot]; slots without a patch hold NaN.
 struct StateSummaries {
   std::size_t states = 0;
-  std::vector<double> status;      ///< [state][wheel]: code of contactgeom::WheelRailStatus
-  std::vector<double> patches;     ///< [state][wheel]: number of patches
-  std::vector<double> dy;          ///< [state][wheel]: this wheel's lateral shift solved at [m]
-  std::vector<double> roll;        ///< [state]: wheelset roll [rad] (contactgeom::WheelsetContact)
+  std::vector<double> status;   ///< [state][wheel]: code of contactgeom::WheelRailStatus
+  std::vector<double> patches;  ///< [state][wheel]: number of patches
+  std::vector<double> dy;       ///< [state][wheel]: this wheel's lateral shift solved at [m]
+  std::vector<double> roll;     ///< [state]: wheelset roll [rad] (contactgeom::WheelsetContact)
   std::vector<double> vertical_force;  ///< [state][wheel]: sum of N cos(angle) [N]
   std::vector<double> lateral_force;   ///< [state][wheel]: sum of N sin(angle) [N]
   std::vector<double> lateral_fit;     ///< [state][wheel]: code of contactgeom::LateralFit

@@ -20,15 +20,15 @@ namespace wheelwear::pipeline {
 /// contactgeom::WheelsetState (+ towards the left wheel's flange); a curve of positive radius
 /// turns right, so that the left wheel runs on the outer rail.
 struct WheelsetStateSpec {
-  std::string label;                   ///< free text (e.g. the track section)
-  double dy = 0.0;                     ///< lateral shift [m], + to the left
-  double yaw = 0.0;                    ///< yaw angle [rad], + turns the left wheel's flange ahead
-  double load_left = 0.0;              ///< vertical force on the left wheel [N], > 0
-  double load_right = 0.0;             ///< vertical force on the right wheel [N], > 0
+  std::string label;        ///< free text (e.g. the track section)
+  double dy = 0.0;          ///< lateral shift [m], + to the left
+  double yaw = 0.0;         ///< yaw angle [rad], + turns the left wheel's flange ahead
+  double load_left = 0.0;   ///< vertical force on the left wheel [N], > 0
+  double load_right = 0.0;  ///< vertical force on the right wheel [N], > 0
   std::optional<double> lateral_force_left;   ///< lateral force on the left rail [N], + outwards
   std::optional<double> lateral_force_right;  ///< same for the right wheel [N]
   double speed = 0.0;                         ///< forward speed [m/s], > 0
-  double curve_radius = 0.0;  ///< [m]; 0 on tangent track, > 0 right-hand, < 0 left-hand
+  double curve_radius = 0.0;      ///< [m]; 0 on tangent track, > 0 right-hand, < 0 left-hand
   double lateral_velocity = 0.0;  ///< dy/dt [m/s], + to the left
   /// Creepages given directly (each wheel in its own frame, + y towards the gauge side); when
   /// absent they follow from the kinematics at every patch's O.
@@ -54,7 +54,7 @@ struct Scene {
   int grid_nx = 30;
   int grid_ny = 30;
   wear::FastsimScheme scheme = wear::FastsimScheme::kalker;
-  double strip_width = 0.2e-3;       ///< [m]
+  double strip_width = 0.2e-3;        ///< [m]
   double virtual_penetration = 0.55;  ///< Kik-Piotrowski epsilon [-]
   std::string wear_law = "usfd";      ///< usfd or archard
   std::string wear_law_table;         ///< resolved path of the user's table, empty: built-in

@@ -12,28 +12,28 @@ namespace wheelwear::pipeline {
 
 /// Where a run is, for progress reports.
 struct RunProgress {
-  int step = 0;                ///< index of the step just written (0: the new profile)
-  double distance = 0.0;       ///< running distance reached [m]
-  double total_distance = 0.0;  ///< the scene's distance [m]
-  std::size_t states = 0;      ///< states in the collective
-  double elapsed = 0.0;        ///< wall time of this process so far [s]
+  int step = 0;                         ///< index of the step just written (0: the new profile)
+  double distance = 0.0;                ///< running distance reached [m]
+  double total_distance = 0.0;          ///< the scene's distance [m]
+  std::size_t states = 0;               ///< states in the collective
+  double elapsed = 0.0;                 ///< wall time of this process so far [s]
   double evaluations_per_second = 0.0;  ///< wheelset states evaluated per second so far
-  int failed_contacts = 0;     ///< wheel contacts of this step that had no usable patch
+  int failed_contacts = 0;              ///< wheel contacts of this step that had no usable patch
 };
 
 /// How a run is driven.
 struct RunOptions {
-  bool overwrite = false;  ///< replace an existing output file
+  bool overwrite = false;                            ///< replace an existing output file
   std::function<void(const RunProgress&)> progress;  ///< called after every step
 };
 
 /// What a run did.
 struct RunSummary {
-  int steps = 0;                   ///< wear steps taken (file groups minus one)
-  double distance = 0.0;           ///< [m]
-  double worn_area = 0.0;          ///< worn cross-section of the (first) wheel profile [m^2]
-  double elapsed = 0.0;            ///< wall time of this process [s]
-  std::size_t evaluations = 0;     ///< wheelset states evaluated by this process
+  int steps = 0;                    ///< wear steps taken (file groups minus one)
+  double distance = 0.0;            ///< [m]
+  double worn_area = 0.0;           ///< worn cross-section of the (first) wheel profile [m^2]
+  double elapsed = 0.0;             ///< wall time of this process [s]
+  std::size_t evaluations = 0;      ///< wheelset states evaluated by this process
   std::size_t geometry_solves = 0;  ///< distinct wheel/rail contacts solved by this process
 };
 

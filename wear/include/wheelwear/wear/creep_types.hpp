@@ -28,8 +28,8 @@ struct ContactLoad {
 
 /// Flags that say a coefficient came from outside the range of its table.
 struct CoefficientFlags {
-  bool kalker_extrapolated = false;   ///< a/b outside 0.1 ... 10: Kalker's asymptotes were used
-  bool sdec_held = false;             ///< a/b outside 0.1 ... 10: Table 1's end row was held
+  bool kalker_extrapolated = false;  ///< a/b outside 0.1 ... 10: Kalker's asymptotes were used
+  bool sdec_held = false;            ///< a/b outside 0.1 ... 10: Table 1's end row was held
 
   bool any() const { return kalker_extrapolated || sdec_held; }
   /// Human-readable list of the raised flags, empty when none is.
