@@ -8,9 +8,15 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
+#include "wheelwear/contactgeom/undeformed_distance.hpp"
+#include "wheelwear/contactgeom/wheel_rail.hpp"
+#include "wheelwear/profiles/rail_60e1.hpp"
+#include "wheelwear/profiles/s1002.hpp"
 #include "wheelwear/wear/exact/steady_rolling.hpp"
+#include "wheelwear/wear/exact/wheel_rail_exact.hpp"
 
 namespace {
 
@@ -64,6 +70,72 @@ void BM_ExactSdecNoSlip(benchmark::State& state) {
 BENCHMARK(BM_ExactSdecNoSlip)
     ->Arg(40)
     ->Arg(80)
+    ->Unit(benchmark::kMillisecond)
+    ->ComputeStatistics("min", minimum);
+
+}  // namespace
+
+// Kalker's exact theory on a wheel/rail patch (wheel_rail_exact.hpp): S1002 on 60E1 1:40, the
+// wheelset 4 mm towards the field side (a tread patch, Fz = 55 kN), vx = 1e-3, phi = -0.1 1/m,
+// mu = 0.35, range(0) x range(0) elements over 1.3 times the Kik-Piotrowski patch. The time
+// holds the gap's sampling (one undeformed_distance per element), the normal problem twice
+// (once to check the grid) and the tangential problem; "Gap" times the sampling alone.
+namespace {
+
+struct WheelRailCase {
+  contactgeom::WheelRailPair pair{profiles::s1002(), profiles::rail_60e1()};
+  contactgeom::WheelsetPose pose;
+  contactgeom::WheelRailPatch patch;
+  WheelRailCase() {
+    pose.dy = -4e-3;
+    patch = contactgeom::solve_wheel_rail(pair, pose, 55e3).patches.at(0);
+  }
+};
+
+const WheelRailCase& wheel_rail_case() {
+  static const WheelRailCase c;
+  return c;
+}
+
+void BM_WheelRailExact(benchmark::State& state) {
+  const WheelRailCase& c = wheel_rail_case();
+  wear::WheelRailExactOptions options;
+  options.nx = options.ny = static_cast<int>(state.range(0));
+  wear::WheelRailExactSolution s;
+  for (auto _ : state) {
+    s = wear::wheel_rail_exact(c.pair, c.pose, c.patch, {1e-3, 0.0, -0.1}, 0.35, options);
+    benchmark::DoNotOptimize(s.rolling.forces);
+  }
+  state.counters["elements"] = static_cast<double>(options.nx * options.ny);
+  state.counters["contact_elements"] = s.rolling.contact_elements;
+  state.counters["normal_iterations"] = s.normal_iterations;
+  state.counters["sweeps"] = s.rolling.iterations;
+}
+BENCHMARK(BM_WheelRailExact)
+    ->Arg(40)
+    ->Arg(80)
+    ->Unit(benchmark::kMillisecond)
+    ->ComputeStatistics("min", minimum);
+
+void BM_WheelRailExactGap(benchmark::State& state) {
+  const WheelRailCase& c = wheel_rail_case();
+  wear::WheelRailExactOptions options;
+  options.nx = options.ny = static_cast<int>(state.range(0));
+  const wear::ElementGrid grid = wear::wheel_rail_exact_grid(c.patch, 0.0, options);
+  const double y_O = -c.patch.y_rail, cos_delta = std::cos(c.patch.contact_angle);
+  for (auto _ : state) {
+    double sum = 0.0;
+    for (int j = 0; j < grid.ny; ++j)
+      for (int i = 0; i < grid.nx; ++i)
+        sum +=
+            contactgeom::undeformed_distance(c.pair, c.pose, grid.x(i), y_O - grid.y(j) * cos_delta)
+                .value_or(0.0);
+    benchmark::DoNotOptimize(sum);
+  }
+  state.counters["elements"] = static_cast<double>(grid.size());
+}
+BENCHMARK(BM_WheelRailExactGap)
+    ->Arg(40)
     ->Unit(benchmark::kMillisecond)
     ->ComputeStatistics("min", minimum);
 
