@@ -1,34 +1,67 @@
 // Run time against error of every tangential method, on CONTACT's reference cases.
 //
-//   wheelwear_runtime_error_study [RESULTS_DIR] [--quick]
+//   wheelwear_runtime_error_study [RESULTS_DIR] [--quick] [--methods LIST]
 //
 // writes to RESULTS_DIR (default: the current directory)
 //
 // * runtime_error.csv: one row per method, scheme, grid and case set, with the time per call and
 //   the error against Kalker's exact theory (CONTACT) and against the method's own converged
 //   answer. Columns:
-//     method          the --method name of `wheelwear creep`
-//     scheme          kalker | second-order (FASTSIM marching); none for the grid-free methods
-//     bound           parabolic (Eq. 18 of Liu, Fu & Bruni 2022) | none
-//     n               the grid is n x n cells (nx = ny = n); 0 for the grid-free methods
+//     method          the --method name of `wheelwear creep`; exact: Kalker's exact theory
+//                     solved by the library (wear::exact_sdec, the SDEC pressure of Liu, Fu &
+//                     Bruni 2022, Eq. 4, prescribed as in CONTACT's reference runs), which
+//                     `wheelwear creep` does not offer; table: the built-in book of exact-theory
+//                     tables (wear::creep_table_forces)
+//     scheme          kalker | second-order (FASTSIM marching); none for the other methods
+//     bound           parabolic (Eq. 18 of Liu, Fu & Bruni 2022) | none (the non-FASTSIM
+//                     methods: exact applies Coulomb's |p| <= mu p_n itself)
+//     n               the grid is n x n cells (nx = ny = n; exact: elements over CONTACT's
+//                     potential contact area, 1.02 a by 1.02 b around O'); 0 for the grid-free
+//                     methods (linear-sdec, she-sdec, table)
 //     cells           n*n
 //     case_set        pure_spin: the 17 cases phi > 0 of tests/data/contact/b_pure_spin_mx80.csv
 //                     (g = 1, psi = 0.6 with phi = 0.2 ... 1.6 1/m, and phi = 1 1/m with
 //                     psi = -0.8 ... 0.8); linear: the 90 patches of a_linear_coeffs_mx80.csv
 //                     (g = 0.1 ... 10, psi = -0.8 ... 0.8), each with CONTACT's three unit
-//                     creepages (vx = 1e-6, vy = 1e-6, phi = 1e-6/c), 270 calls
-//     calls           solver calls in one pass over the set
+//                     creepages (vx = 1e-6, vy = 1e-6, phi = 1e-6/c), 270 calls. Both sets are
+//                     CONTACT's runs with G = 80 GPa, nu = 0.25 on 80 x 80 grids
+//     calls           solver calls in one pass over the set (table: the cases it covers)
 //     time_per_call_s the smallest, over 15 repetitions, of the mean time of one call in a
 //                     loop over the set repeated for at least 3 ms, in CPU time of the thread
-//                     (one thread; the solution object is reused, as a simulation loop would)
+//                     (one thread; the solution object is reused, as a simulation loop would);
+//                     fewer repetitions, at least 3, once they have taken 10 s (only the exact
+//                     theory's finer grids do)
 //     err_contact     pure_spin: largest |F - F_CONTACT|/(mu N) over the cases and over Fx, Fy;
 //                     linear: largest |F - F_CONTACT|/|F_CONTACT| (force vectors (Fx, Fy)) over
 //                     the patches and the three creepages
 //     err_converged   the same measure against the method's own converged answer (0 for the
-//                     grid-free methods)
+//                     grid-free methods; exact: see below)
 //     err_contact_fx, err_contact_fy
 //                     err_contact of each force component alone (same normaliser: mu N, or
 //                     |F_CONTACT| for the linear set)
+//     skipped         cases of the set left out of calls, time and errors because the method
+//                     does not cover them; only the table skips (creep_table_covers false: on
+//                     the linear set the patches with a/b or |psi| outside its range), 0 for
+//                     the other methods
+//
+//   exact runs on n = 10, 20, 30, 40, 60, 80 (--quick: 10, 20). At n = 80 it solves CONTACT's
+//   own discretisation, so its err_contact there measures how closely the library reproduces
+//   CONTACT, not the exact theory's grid error; on other grids err_contact also contains
+//   CONTACT's own 80 x 80 grid error (below 1 % for g = 0.1 ... 1/0.3, up to 1.2 % at
+//   b/a = 0.1: tests/data/contact/README.md, section 4). Its err_converged is against its own
+//   120 x 120 solution (--quick: 40 x 40), not a Richardson extrapolation: with
+//   piecewise-constant elements whose centres sample the patch boundary differently on every
+//   grid, the apparent order of convergence changes from grid to grid (measured on pure spin:
+//   the largest error falls by 9 % from n = 30 to 40 and by 45 % from 40 to 60; CONTACT's
+//   refinement check in that README moves coefficients in both directions), so the order p
+//   an extrapolation needs is not known. The 120 x 120 answer has its own grid error, so
+//   err_converged understates the error of the finer grids (most at n = 80).
+//
+//   The table is the one compiled into the library, generated with the exact solver on the
+//   grid creep_table_range().grid (printed on stderr, with its range); the reference cases'
+//   nu = 0.25 is the table's lowest tabulated nu, so its nu = 0.25 block is used alone,
+//   without interpolation or extrapolation in nu. Its err_contact therefore holds the table's
+//   interpolation error and the generating grid's error against CONTACT's 80 x 80 answer.
 //
 // * grid_error_fit.csv: err_converged on the pure-spin set for every n = 5 ... 200 and
 //   n = 250, 300, 400, 500, 600, 800, 1000, every FASTSIM method, both schemes and both traction
@@ -42,18 +75,28 @@
 //   scheme, bound, order (p), n_min, C, C_n100_200 (the same maximum over n = 100 ... 200
 //   only, for comparison) and n_at_max (where the maximum is).
 //
-// The converged answer is the Richardson extrapolation F(1600) + (F(1600) - F(800))/(2^p - 1)
-// of the same method and scheme; its own error is estimated by the difference from the
-// extrapolation of 400 and 800 and printed on stderr.
+// The converged answer of a FASTSIM method is the Richardson extrapolation
+// F(1600) + (F(1600) - F(800))/(2^p - 1) of the same method and scheme; its own error is
+// estimated by the difference from the extrapolation of 400 and 800 and printed on stderr.
 //
 // --quick uses fewer grids and converged grids of 200/400 (for a smoke run, not for the
 // results).
+//
+// --methods LIST (comma-separated method names, e.g. exact,table) runs only those methods and
+// merges: the rows of the other methods already in RESULTS_DIR's CSV files are read back and
+// kept (a column they lack, added since they were written, is filled with its default: 0 for
+// skipped), the listed methods' rows are replaced, and rows are written in the order of a full
+// run. grid_error_fit.csv and grid_error_constants.csv are rewritten only when the list names
+// a FASTSIM method (fastsim-sdec stands for both of its schemes). Do not merge --quick rows
+// into full results.
 //
 // Regenerate the committed results with
 //   cmake --build build --target wheelwear_runtime_error_study
 //   build/bench/wheelwear_runtime_error_study bench/results
 //   /usr/bin/python3 scripts/plot_runtime_error.py bench/results/runtime_error.csv
 //       bench/results/runtime_error.png
+// or refresh only some methods, e.g. after the creep table was regenerated, with
+//   build/bench/wheelwear_runtime_error_study bench/results --methods table
 
 #include <time.h>
 
@@ -66,10 +109,15 @@
 #include <functional>
 #include <iostream>
 #include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "support/csv_table.hpp"
+#include "wheelwear/wear/creep_table.hpp"
+#include "wheelwear/wear/exact/steady_rolling.hpp"
 #include "wheelwear/wear/fastsim.hpp"
 #include "wheelwear/wear/linear_theory.hpp"
 
@@ -153,15 +201,24 @@ double case_error(Measure measure, const Case& c, double fx, double fy, double f
   return std::hypot(fx - fx_ref, fy - fy_ref) / scale(measure, c);
 }
 
+/// How a method computes its forces.
+enum class Kind {
+  closed_form,  ///< linear-sdec, she-sdec: grid-free formulas
+  fastsim,      ///< a FASTSIM method on an n x n grid
+  exact,        ///< Kalker's exact theory on an n x n grid (wear::exact_sdec)
+  table,        ///< the built-in book of exact-theory tables (grid-free)
+};
+
 /// A tangential method with its discretisation; n = 0 for the grid-free ones.
 struct Solver {
   std::string method;
   std::string scheme;  // "kalker", "second-order", "none"
   std::string bound;   // "parabolic", "semi-elliptic", "none"
-  bool grid = true;
+  Kind kind = Kind::fastsim;
   wear::FastsimMethod fastsim_method = wear::FastsimMethod::sdec;
   wear::FastsimScheme fastsim_scheme = wear::FastsimScheme::kalker;
   wear::TractionBound traction_bound = wear::TractionBound::parabolic;
+  bool grid() const { return kind == Kind::fastsim || kind == Kind::exact; }
   // Order of convergence in n: Kalker's scheme is first order. The second-order scheme is
   // second order with the parabolic bound; with the semi-elliptic bound, whose slope is
   // unbounded at the leading and trailing edges, it reaches only 1.5 (measured: e(n) n^2 grows
@@ -183,26 +240,67 @@ struct Forces {
   double fx = 0, fy = 0;
 };
 
-/// Calls the solver on every case; `solution` is reused between calls.
-void solve_all(const Solver& s, int n, const CaseSet& set, std::vector<Forces>& out,
-               wear::TangentialSolution& solution) {
+/// Calls the solver on every case; `solution` is reused between calls (FASTSIM). Returns the
+/// number of exact-theory solves that stopped at max_iterations (their last iterate is used).
+int solve_all(const Solver& s, int n, const CaseSet& set, std::vector<Forces>& out,
+              wear::TangentialSolution& solution) {
   out.resize(set.cases.size());
   wear::FastsimOptions options;
   options.nx = options.ny = std::max(n, 1);
   options.scheme = s.fastsim_scheme;
   options.bound = s.traction_bound;
+  wear::ExactOptions exact_options;
+  exact_options.nx = exact_options.ny = std::max(n, 2);
+  int not_converged = 0;
   for (std::size_t k = 0; k < set.cases.size(); ++k) {
     const Case& c = set.cases[k];
-    if (!s.grid) {
-      const wear::CreepForces f = s.method == "linear-sdec"
-                                      ? wear::linear_sdec_forces(c.patch, c.creepages, kSteel)
+    switch (s.kind) {
+      case Kind::closed_form: {
+        const wear::CreepForces f =
+            s.method == "linear-sdec" ? wear::linear_sdec_forces(c.patch, c.creepages, kSteel)
                                       : wear::she_sdec_forces(c.patch, c.creepages, kSteel, c.load);
-      out[k] = {f.Fx, f.Fy};
-    } else {
-      wear::fastsim(s.fastsim_method, c.patch, c.creepages, c.load, kSteel, options, solution);
-      out[k] = {solution.forces.Fx, solution.forces.Fy};
+        out[k] = {f.Fx, f.Fy};
+        break;
+      }
+      case Kind::fastsim:
+        wear::fastsim(s.fastsim_method, c.patch, c.creepages, c.load, kSteel, options, solution);
+        out[k] = {solution.forces.Fx, solution.forces.Fy};
+        break;
+      case Kind::exact: {
+        const wear::ExactSolution e =
+            wear::exact_sdec(c.patch, c.creepages, c.load, kSteel, exact_options);
+        if (e.status != wear::ExactStatus::converged) ++not_converged;
+        out[k] = {e.forces.Fx, e.forces.Fy};
+        break;
+      }
+      case Kind::table: {
+        const wear::CreepForces f = wear::creep_table_forces(c.patch, c.creepages, c.load, kSteel);
+        out[k] = {f.Fx, f.Fy};
+        break;
+      }
     }
   }
+  return not_converged;
+}
+
+/// The cases of `set` the built-in creep table covers; `skipped` receives how many it does not.
+/// The reasons are printed on stderr, each once.
+CaseSet table_cases(const CaseSet& set, int& skipped) {
+  CaseSet covered{set.name, set.measure, {}};
+  std::set<std::string> reasons;
+  skipped = 0;
+  for (const Case& c : set.cases) {
+    std::string why;
+    if (wear::creep_table_covers(c.patch, c.creepages, c.load, kSteel, &why)) {
+      covered.cases.push_back(c);
+    } else {
+      ++skipped;
+      reasons.insert(why);
+    }
+  }
+  for (const std::string& why : reasons)
+    std::cerr << "table " << set.name << ": skipped: " << why << "\n";
+  return covered;
 }
 
 /// CPU time of the calling thread [s]: unlike wall time it does not count the time the thread
@@ -213,14 +311,19 @@ double thread_seconds() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-/// Smallest mean time per call over 15 repetitions of >= 3 ms each.
+/// Smallest mean time per call over 15 repetitions of >= 3 ms each, or over fewer (at least 3)
+/// once the repetitions have taken 10 s: one pass of the exact theory over the linear set on
+/// an 80 x 80 grid takes about 20 s.
 double time_per_call(const Solver& s, int n, const CaseSet& set) {
+  constexpr int kRepetitions = 15, kMinRepetitions = 3;
+  constexpr double kMinRepetitionSeconds = 3e-3, kBudgetSeconds = 10.0;
   std::vector<Forces> out;
   wear::TangentialSolution solution;
   solve_all(s, n, set, out, solution);  // warm-up: the grid storage is allocated here
-  double best = 1e300;
+  double best = 1e300, spent = 0;
   volatile double sink = 0;
-  for (int rep = 0; rep < 15; ++rep) {
+  for (int rep = 0; rep < kRepetitions; ++rep) {
+    if (rep >= kMinRepetitions && spent > kBudgetSeconds) break;
     long passes = 0;
     const double start = thread_seconds();
     double elapsed = 0;
@@ -229,13 +332,14 @@ double time_per_call(const Solver& s, int n, const CaseSet& set) {
       sink = sink + out.front().fx;
       ++passes;
       elapsed = thread_seconds() - start;
-    } while (elapsed < 3e-3);
+    } while (elapsed < kMinRepetitionSeconds);
+    spent += elapsed;
     best = std::min(best, elapsed / static_cast<double>(passes * set.cases.size()));
   }
   return best;
 }
 
-/// The converged answer of a grid solver: Richardson extrapolation of n_fine/2 and n_fine.
+/// The converged answer of a FASTSIM solver: Richardson extrapolation of n_fine/2 and n_fine.
 /// `spread` receives the largest difference (in the set's measure) from the extrapolation of
 /// n_fine/4 and n_fine/2.
 std::vector<Forces> converged(const Solver& s, const CaseSet& set, int n_fine, double& spread) {
@@ -287,30 +391,155 @@ std::vector<Solver> fastsim_solvers(wear::TractionBound bound, bool every_scheme
       const bool second = scheme == wear::FastsimScheme::second_order;
       if (second && !every_scheme && method != wear::FastsimMethod::sdec) continue;
       solvers.push_back({std::string(wear::method_name(method)), second ? "second-order" : "kalker",
-                         bound_name, true, method, scheme, bound});
+                         bound_name, Kind::fastsim, method, scheme, bound});
     }
   }
   return solvers;
 }
+
+/// The methods of Part 1 in the order of a full run (and of the CSV's rows).
+std::vector<Solver> plotted_solvers() {
+  std::vector<Solver> solvers = {
+      {"linear-sdec", "none", "none", Kind::closed_form},
+      {"she-sdec", "none", "none", Kind::closed_form},
+  };
+  for (const Solver& s : fastsim_solvers(wear::TractionBound::parabolic, false))
+    solvers.push_back(s);
+  solvers.push_back({"exact", "none", "none", Kind::exact});
+  solvers.push_back({"table", "none", "none", Kind::table});
+  return solvers;
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::stringstream stream(text);
+  std::string part;
+  while (std::getline(stream, part, separator)) {
+    if (!part.empty() && part.back() == '\r') part.pop_back();
+    parts.push_back(part);
+  }
+  return parts;
+}
+
+// Position of `value` in `order`; values not in it sort last.
+std::size_t rank(const std::vector<std::string>& order, const std::string& value) {
+  return static_cast<std::size_t>(std::find(order.begin(), order.end(), value) - order.begin());
+}
+
+/// A results CSV: its header and its rows as cells. With `merge`, the rows of an earlier file
+/// at the same path whose method is not rerun are read back first; columns are matched by
+/// name, and a column the earlier file lacks takes its entry in `defaults`.
+class ResultsFile {
+ public:
+  ResultsFile(std::filesystem::path path, const std::string& header, bool merge,
+              const std::set<std::string>& rerun,
+              const std::map<std::string, std::string>& defaults)
+      : path_(std::move(path)), header_(split(header, ',')) {
+    if (!merge || !std::filesystem::exists(path_)) return;
+    std::ifstream in(path_);
+    std::string line;
+    std::getline(in, line);
+    const std::vector<std::string> old_header = split(line, ',');
+    for (const std::string& name : old_header)
+      if (rank(header_, name) == header_.size())
+        throw std::runtime_error(path_.string() + ": column " + name +
+                                 " is not written by this study; rerun without --methods");
+    std::vector<std::size_t> source(header_.size());  // old column of each new one
+    for (std::size_t i = 0; i < header_.size(); ++i) {
+      source[i] = rank(old_header, header_[i]);
+      if (source[i] == old_header.size() && !defaults.contains(header_[i]))
+        throw std::runtime_error(path_.string() + ": column " + header_[i] +
+                                 " is missing; rerun without --methods");
+    }
+    while (std::getline(in, line)) {
+      const std::vector<std::string> old = split(line, ',');
+      if (old.size() != old_header.size())
+        throw std::runtime_error(path_.string() + ": row '" + line + "' has " +
+                                 std::to_string(old.size()) + " cells, the header " +
+                                 std::to_string(old_header.size()));
+      if (rerun.contains(old[rank(old_header, "method")])) continue;
+      std::vector<std::string> row(header_.size());
+      for (std::size_t i = 0; i < header_.size(); ++i)
+        row[i] = source[i] < old.size() ? old[source[i]] : defaults.at(header_[i]);
+      rows_.push_back(std::move(row));
+    }
+    std::cerr << path_.string() << ": kept " << rows_.size() << " rows of other methods\n";
+  }
+
+  void add(const std::string& line) {  // one row without its newline
+    rows_.push_back(split(line, ','));
+  }
+
+  /// Writes header and rows, stably sorted by the rank of each column of `order` in its list.
+  void write(const std::vector<std::pair<std::string, std::vector<std::string>>>& order) {
+    const auto key = [&](const std::vector<std::string>& row) {
+      std::vector<std::size_t> ranks;
+      for (const auto& [column, values] : order)
+        ranks.push_back(rank(values, row[column_(column)]));
+      return ranks;
+    };
+    std::stable_sort(rows_.begin(), rows_.end(),
+                     [&](const auto& p, const auto& q) { return key(p) < key(q); });
+    std::ofstream out(path_);
+    const auto write_cells = [&](const std::vector<std::string>& cells) {
+      for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << cells[i];
+      out << "\n";
+    };
+    write_cells(header_);
+    for (const auto& row : rows_) write_cells(row);
+    if (!out) throw std::runtime_error("cannot write " + path_.string());
+  }
+
+ private:
+  std::size_t column_(const std::string& name) const { return rank(header_, name); }
+  std::filesystem::path path_;
+  std::vector<std::string> header_;
+  std::vector<std::vector<std::string>> rows_;
+};
 
 }  // namespace
 
 int main(int argc, char** argv) {
   std::filesystem::path dir = ".";
   bool quick = false;
+  std::set<std::string> only;  // --methods; empty: every method
+  std::vector<std::string> known;
+  for (const Solver& s : plotted_solvers())
+    if (rank(known, s.method) == known.size()) known.push_back(s.method);
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--quick") {
       quick = true;
+    } else if (arg == "--methods" && i + 1 < argc) {
+      for (const std::string& name : split(argv[++i], ',')) {
+        if (rank(known, name) == known.size()) {
+          std::cerr << "--methods: unknown method '" << name << "'; known:";
+          for (const std::string& k : known) std::cerr << " " << k;
+          std::cerr << "\n";
+          return 2;
+        }
+        only.insert(name);
+      }
+    } else if (arg.rfind("--", 0) == 0) {
+      std::cerr << "unknown option " << arg
+                << "; usage: wheelwear_runtime_error_study [RESULTS_DIR] [--quick] "
+                   "[--methods LIST]\n";
+      return 2;
     } else {
       dir = arg;
     }
   }
+  const bool merge = !only.empty();
+  const auto selected = [&](const Solver& s) { return !merge || only.contains(s.method); };
   std::filesystem::create_directories(dir);
   const int n_fine = quick ? 400 : 1600;
   const std::vector<int> plot_grids =
       quick ? std::vector<int>{5, 10, 20, 40, 80}
             : std::vector<int>{5, 7, 10, 14, 20, 28, 40, 56, 80, 113, 160, 200};
+  // The exact theory's grids, and the finer grid its err_converged is measured against.
+  const std::vector<int> exact_grids =
+      quick ? std::vector<int>{10, 20} : std::vector<int>{10, 20, 30, 40, 60, 80};
+  const int n_exact_reference = quick ? 40 : 120;
   // Part 2's grids: every n up to 200, then sparser up to the largest grid grid_choice.hpp
   // allows (1000), against a converged answer from 1600 and 3200.
   std::vector<int> fit_grids;
@@ -320,54 +549,90 @@ int main(int argc, char** argv) {
   const int n_fit_fine = quick ? 400 : 3200;
 
   const std::vector<CaseSet> sets = {pure_spin_cases(), linear_cases()};
+  const std::vector<Solver> solvers = plotted_solvers();
 
-  // Part 1: the plotted methods, timed, on both case sets.
-  std::vector<Solver> solvers = {
-      {"linear-sdec", "none", "none", false},
-      {"she-sdec", "none", "none", false},
-  };
-  for (const Solver& s : fastsim_solvers(wear::TractionBound::parabolic, false))
-    solvers.push_back(s);
-
-  std::ofstream csv(dir / "runtime_error.csv");
-  csv << "method,scheme,bound,n,cells,case_set,calls,time_per_call_s,err_contact,err_converged,"
-         "err_contact_fx,err_contact_fy\n";
-  char line[512];
-  for (const CaseSet& set : sets) {
-    for (const Solver& s : solvers) {
-      std::vector<Forces> conv;
-      if (s.grid) {
-        double spread = 0;
-        conv = converged(s, set, n_fine, spread);
-        std::fprintf(stderr,
-                     "%-20s %-13s %-10s converged answer within %.2e (Richardson %d/%d vs %d/%d)\n",
-                     s.method.c_str(), s.scheme.c_str(), set.name.c_str(), spread, n_fine / 2,
-                     n_fine, n_fine / 4, n_fine / 2);
-      }
-      for (const int n : s.grid ? plot_grids : std::vector<int>{0}) {
-        std::vector<Forces> f;
-        wear::TangentialSolution solution;
-        solve_all(s, n, set, f, solution);
-        const Errors e = errors(set, f, s.grid ? &conv : nullptr);
-        const double t = time_per_call(s, n, set);
-        std::snprintf(line, sizeof line, "%s,%s,%s,%d,%d,%s,%zu,%.4g,%.6g,%.6g,%.6g,%.6g\n",
-                      s.method.c_str(), s.scheme.c_str(), s.bound.c_str(), n, n * n,
-                      set.name.c_str(), set.cases.size(), t, e.contact, e.converged, e.contact_fx,
-                      e.contact_fy);
-        csv << line;
-        std::cerr << line;
-      }
-    }
+  if (!merge || only.contains("table")) {
+    const wear::CreepTableRange range = wear::creep_table_range();
+    std::fprintf(stderr,
+                 "table: nu %g ... %g, a/b %g ... %g, |psi| <= %g, r <= %g, exact solver on "
+                 "%d x %d; the reference cases have nu = %g\n",
+                 range.nu_min, range.nu_max, range.a_over_b_min, range.a_over_b_max, range.psi_max,
+                 range.r_max, range.grid, range.grid, kSteel.nu);
   }
 
-  // Part 2: the error model of every FASTSIM method, scheme and bound (pure spin, untimed).
-  std::ofstream fit(dir / "grid_error_fit.csv");
-  std::ofstream constants(dir / "grid_error_constants.csv");
-  fit << "method,scheme,bound,n,err_converged\n";
-  constants << "method,scheme,bound,order,n_min,C,C_n100_200,n_at_max\n";
-  const CaseSet& spin = sets.front();
-  for (const auto bound : {wear::TractionBound::parabolic, wear::TractionBound::semi_elliptic}) {
-    for (const Solver& s : fastsim_solvers(bound, true)) {
+  // Part 1: the plotted methods, timed, on both case sets.
+  std::vector<std::string> set_order, method_order;
+  for (const CaseSet& set : sets) set_order.push_back(set.name);
+  for (const Solver& s : solvers) method_order.push_back(s.method);
+  const std::map<std::string, std::string> defaults = {{"skipped", "0"}};
+  try {
+    ResultsFile csv(dir / "runtime_error.csv",
+                    "method,scheme,bound,n,cells,case_set,calls,time_per_call_s,err_contact,"
+                    "err_converged,err_contact_fx,err_contact_fy,skipped",
+                    merge, only, defaults);
+    char line[512];
+    for (const CaseSet& full_set : sets) {
+      for (const Solver& s : solvers) {
+        if (!selected(s)) continue;
+        int skipped = 0;
+        const CaseSet set = s.kind == Kind::table ? table_cases(full_set, skipped) : full_set;
+        if (set.cases.empty()) {
+          std::cerr << s.method << " " << set.name << ": no case covered, no row\n";
+          continue;
+        }
+        std::vector<Forces> conv;
+        if (s.kind == Kind::fastsim) {
+          double spread = 0;
+          conv = converged(s, set, n_fine, spread);
+          std::fprintf(
+              stderr,
+              "%-20s %-13s %-10s converged answer within %.2e (Richardson %d/%d vs %d/%d)\n",
+              s.method.c_str(), s.scheme.c_str(), set.name.c_str(), spread, n_fine / 2, n_fine,
+              n_fine / 4, n_fine / 2);
+        } else if (s.kind == Kind::exact) {
+          wear::TangentialSolution unused;
+          const int failed = solve_all(s, n_exact_reference, set, conv, unused);
+          std::fprintf(stderr, "%-20s %-13s %-10s reference answer: %d x %d (%d not converged)\n",
+                       s.method.c_str(), s.scheme.c_str(), set.name.c_str(), n_exact_reference,
+                       n_exact_reference, failed);
+        }
+        const std::vector<int> grids =
+            s.kind == Kind::fastsim ? plot_grids
+                                    : (s.kind == Kind::exact ? exact_grids : std::vector<int>{0});
+        for (const int n : grids) {
+          std::vector<Forces> f;
+          wear::TangentialSolution solution;
+          const int failed = solve_all(s, n, set, f, solution);
+          if (failed > 0)
+            std::fprintf(stderr, "%s n = %d %s: %d solves not converged (last iterate used)\n",
+                         s.method.c_str(), n, set.name.c_str(), failed);
+          const Errors e = errors(set, f, s.grid() ? &conv : nullptr);
+          const double t = time_per_call(s, n, set);
+          std::snprintf(line, sizeof line, "%s,%s,%s,%d,%d,%s,%zu,%.4g,%.6g,%.6g,%.6g,%.6g,%d",
+                        s.method.c_str(), s.scheme.c_str(), s.bound.c_str(), n, n * n,
+                        set.name.c_str(), set.cases.size(), t, e.contact, e.converged, e.contact_fx,
+                        e.contact_fy, skipped);
+          csv.add(line);
+          std::cerr << line << "\n";
+        }
+      }
+    }
+    csv.write({{"case_set", set_order}, {"method", method_order}});
+
+    // Part 2: the error model of every FASTSIM method, scheme and bound (pure spin, untimed);
+    // with --methods only for the FASTSIM methods listed, and not at all when there is none.
+    std::vector<std::pair<wear::TractionBound, Solver>> fits;
+    for (const auto bound : {wear::TractionBound::parabolic, wear::TractionBound::semi_elliptic})
+      for (const Solver& s : fastsim_solvers(bound, true))
+        if (selected(s)) fits.emplace_back(bound, s);
+    if (fits.empty()) return 0;
+    ResultsFile fit(dir / "grid_error_fit.csv", "method,scheme,bound,n,err_converged", merge, only,
+                    defaults);
+    ResultsFile constants(dir / "grid_error_constants.csv",
+                          "method,scheme,bound,order,n_min,C,C_n100_200,n_at_max", merge, only,
+                          defaults);
+    const CaseSet& spin = sets.front();
+    for (const auto& [bound, s] : fits) {
       double spread = 0;
       const std::vector<Forces> conv = converged(s, spin, n_fit_fine, spread);
       std::fprintf(stderr, "fit %s %s %s: converged answer within %.2e\n", s.method.c_str(),
@@ -385,16 +650,22 @@ int main(int argc, char** argv) {
           n_at_max = n;
         }
         if (n >= 100 && n <= 200) c_fine = std::max(c_fine, scaled);
-        std::snprintf(line, sizeof line, "%s,%s,%s,%d,%.6g\n", s.method.c_str(), s.scheme.c_str(),
+        std::snprintf(line, sizeof line, "%s,%s,%s,%d,%.6g", s.method.c_str(), s.scheme.c_str(),
                       s.bound.c_str(), n, e);
-        fit << line;
+        fit.add(line);
       }
-      std::snprintf(line, sizeof line, "%s,%s,%s,%g,%d,%.4g,%.4g,%d\n", s.method.c_str(),
+      std::snprintf(line, sizeof line, "%s,%s,%s,%g,%d,%.4g,%.4g,%d", s.method.c_str(),
                     s.scheme.c_str(), s.bound.c_str(), s.order(), s.min_fit_n(), c_all, c_fine,
                     n_at_max);
-      constants << line;
-      std::cerr << "fit " << line;
+      constants.add(line);
+      std::cerr << "fit " << line << "\n";
     }
+    const std::vector<std::string> bound_order = {"parabolic", "semi-elliptic"};
+    fit.write({{"bound", bound_order}, {"method", method_order}});
+    constants.write({{"bound", bound_order}, {"method", method_order}});
+  } catch (const std::exception& error) {
+    std::cerr << "wheelwear_runtime_error_study: " << error.what() << "\n";
+    return 1;
   }
   return 0;
 }
