@@ -14,15 +14,18 @@
 //   forces change steeply with direction near chi = 0), written as r (magnitude) and the
 //   direction chi = r cos(theta), xi = r sin(theta) cos(beta), eta = r sin(theta) sin(beta), with
 //   xi >= 0 (beta in [-pi/2, pi/2]): reversing all creepages reverses the forces.
-// Stored: Fx/(mu N), Fy/(mu N) [g][psi][theta][beta][r], r = 0 included (zero forces).
+// Stored: Fx/(mu N), Fy/(mu N) and the spin moment about O, Mz/(mu N c),
+// [g][psi][theta][beta][r], r = 0 included (zero forces). Mz changes sign with Fy under both
+// symmetries.
 //
 // Usage: wheelwear_creep_table_generator [--n 30] [--threads 2] [--out data/creep_table.h5]
-//   [--nu 0.25,0.28] [--g 0.2,0.3,...] [--psi 0,0.2,...] [--theta-count 11] [--beta-count 13]
+//   [--nu 0.25,0.28] [--g 0.2,0.25,...] [--psi 0,0.2,...] [--theta-count 33] [--beta-count 19]
 //   [--r 0,0.25,...,6] [--spin-scale 3]
-// A finer table: more nodes (e.g. --theta-count 15 --beta-count 19, denser --g and --r) and a
-// finer solver grid (--n 40); the run time grows with their product (see the printed count).
-// The shipped table (the defaults): 2 x 77 220 nodes (about 61 000 solves per nu), 13 min on
-// two shared cores, 1.5 MB.
+// The defaults are the shipped table: 2 x 489 060 nodes (425 520 solves per nu), 35 min on two
+// cores, 16 MB. The nodes are where interpolating (creep_table.cpp) needs them to stay within
+// 1 % of mu N of fresh solves (tests/wear/creep_table_test.cpp): the forces turn fastest with
+// theta where the patch begins to slide fully, and with a/b below 0.3 and above 3. A finer
+// solver grid (--n 40) or more nodes cost in proportion (see the printed count).
 
 #include <hdf5.h>
 
@@ -113,10 +116,10 @@ int main(int argc, char** argv) {
   unsigned threads = 2;
   std::string out_path = "data/creep_table.h5";
   std::vector<double> nus = {0.25, 0.28};
-  std::vector<double> gs = {0.2, 0.3, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 5.0};
+  std::vector<double> gs = {0.2, 0.25, 0.3, 0.4, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 4.0, 5.0};
   std::vector<double> psis = {0.0, 0.2, 0.4, 0.6, 0.8};
-  int theta_count = 11, beta_count = 13;
-  std::vector<double> rs = {0.0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0};
+  int theta_count = 33, beta_count = 19;
+  std::vector<double> rs = {0.0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0};
   double spin_scale = 3.0;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
@@ -166,8 +169,9 @@ int main(int argc, char** argv) {
   }
   std::ostringstream description;
   description
-      << "Book of creep-force tables: Fx/(mu N), Fy/(mu N) on the body-1 (wheel) side, Kalker's "
-         "convention, from Kalker's exact theory of steady rolling (wheelwear wear/exact, "
+      << "Book of creep-force tables: Fx/(mu N), Fy/(mu N) and Mz/(mu N c) (c = sqrt(ab), about O) "
+         "on the body-1 (wheel) side, Kalker's convention, from Kalker's exact theory of steady "
+         "rolling (wheelwear wear/exact, "
          "exact_sdec) on SDEC patches with the prescribed pressure of Liu, Fu & Bruni 2022, "
          "Eq. 4, "
       << n << " x " << n
@@ -192,7 +196,7 @@ int main(int argc, char** argv) {
       c22[k] = kc.c22;
       c23[k] = kc.c23;
     }
-    std::vector<double> fx(total, 0.0), fy(total, 0.0);
+    std::vector<double> fx(total, 0.0), fy(total, 0.0), mz(total, 0.0);
     std::atomic<std::size_t> next{0};
     std::atomic<int> unconverged{0};
     const auto start = std::chrono::steady_clock::now();
@@ -230,6 +234,7 @@ int main(int argc, char** argv) {
           if (s.status != wear::ExactStatus::converged) ++unconverged;
           fx[i] = s.forces.Fx / mu_n;
           fy[i] = s.forces.Fy / mu_n;
+          mz[i] = s.forces.Mz / (mu_n * c);
         }
       });
     }
@@ -242,6 +247,7 @@ int main(int argc, char** argv) {
       if ((it == 0 || it + 1 == thetas.size()) && ib != 0) {
         fx[i] = fx[i - ib * rs.size()];
         fy[i] = fy[i - ib * rs.size()];
+        mz[i] = mz[i - ib * rs.size()];
       }
     }
     const double seconds =
@@ -264,6 +270,8 @@ int main(int argc, char** argv) {
                                        rs.size()};
     write(group, "Fx_muN", fx, dims, "1", "Fx/(mu N) [a_over_b][psi][theta][beta][r]");
     write(group, "Fy_muN", fy, dims, "1", "Fy/(mu N) [a_over_b][psi][theta][beta][r]");
+    write(group, "Mz_muNc", mz, dims, "1",
+          "Mz/(mu N c), spin moment about O, c = sqrt(ab) [a_over_b][psi][theta][beta][r]");
     H5Gclose(group);
     std::cout << name << ": " << total << " nodes on " << n << " x " << n << " grids in " << seconds
               << " s (" << threads << " threads), " << unconverged << " not converged" << std::endl;

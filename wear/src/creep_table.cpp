@@ -5,7 +5,6 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
-#include <vector>
 
 #include "creep_table_data.hpp"
 #include "wheelwear/input_error.hpp"
@@ -46,13 +45,14 @@ struct Normalisation {
 };
 
 Normalisation normalisation(const CreepTableBlock& b, double g) {
-  const double lg = std::log(g);
-  int k = 0;
-  while (k + 2 < b.n_g && g > b.a_over_b[k + 1]) ++k;
-  const double l0 = std::log(b.a_over_b[k]), l1 = std::log(b.a_over_b[k + 1]);
-  const double t = std::clamp((lg - l0) / (l1 - l0), 0.0, 1.0);
-  return {(1 - t) * b.c11[k] + t * b.c11[k + 1], (1 - t) * b.c22[k] + t * b.c22[k + 1],
-          (1 - t) * b.c23[k] + t * b.c23[k + 1]};
+  const Stencil s = stencil(b.log_a_over_b, b.n_g, std::log(g));
+  Normalisation n{0.0, 0.0, 0.0};
+  for (int i = 0; i < s.count; ++i) {
+    n.c11 += s.w[i] * b.c11[s.start + i];
+    n.c22 += s.w[i] * b.c22[s.start + i];
+    n.c23 += s.w[i] * b.c23[s.start + i];
+  }
+  return n;
 }
 
 struct Normalised {
@@ -144,35 +144,33 @@ std::string check(const contactgeom::Sdec& sdec, const Creepages& v, const Conta
   return {};
 }
 
-// Fx/(mu N), Fy/(mu N) of one block.
-std::array<double, 2> evaluate(const CreepTableBlock& b, const contactgeom::Sdec& sdec,
+// Fx/(mu N), Fy/(mu N) and Mz/(mu N c) of one block (Mz 0 when the block has none).
+std::array<double, 3> evaluate(const CreepTableBlock& b, const contactgeom::Sdec& sdec,
                                const Creepages& v, const ContactLoad& load,
                                const Material& material) {
   Normalised n = normalise(b, sdec, v, load, material);
   double psi = sdec.psi, sign_x = 1.0, sign_y = 1.0;
-  if (psi < 0) {  // mirror y -> -y: eta, chi and Fy change sign
+  if (psi < 0) {  // mirror y -> -y: eta, chi, Fy and Mz change sign
     psi = -psi;
     n.eta = -n.eta;
     n.chi = -n.chi;
     sign_y = -sign_y;
   }
-  if (n.xi < 0) {  // reversed creepages reverse the forces
+  if (n.xi < 0) {  // reversed creepages reverse the forces and the moment
     n = {-n.xi, -n.eta, -n.chi};
     sign_x = -sign_x;
     sign_y = -sign_y;
   }
   const double r = n.r();
-  if (r == 0.0) return {0.0, 0.0};
+  if (r == 0.0) return {0.0, 0.0, 0.0};
   const double theta = std::acos(std::clamp(n.chi / r, -1.0, 1.0));
   const double beta = std::atan2(n.eta, n.xi);  // xi >= 0: in [-pi/2, pi/2]
-  std::vector<double> log_g(static_cast<std::size_t>(b.n_g));
-  for (int i = 0; i < b.n_g; ++i) log_g[static_cast<std::size_t>(i)] = std::log(b.a_over_b[i]);
-  const Stencil sg = stencil(log_g.data(), b.n_g, std::log(sdec.ellipticity()));
+  const Stencil sg = stencil(b.log_a_over_b, b.n_g, std::log(sdec.ellipticity()));
   const Stencil sp = stencil(b.psi, b.n_psi, psi);
   const Stencil st = stencil(b.theta, b.n_theta, theta);
   const Stencil sb = stencil(b.beta, b.n_beta, beta);
   const Stencil sr = stencil(b.r, b.n_r, r);
-  double fx = 0.0, fy = 0.0;
+  double fx = 0.0, fy = 0.0, mz = 0.0;
   for (int ig = 0; ig < sg.count; ++ig) {
     for (int ip = 0; ip < sp.count; ++ip) {
       const double wgp = sg.w[ig] * sp.w[ip];
@@ -186,16 +184,28 @@ std::array<double, 2> evaluate(const CreepTableBlock& b, const contactgeom::Sdec
                 sb.start + ib) *
                b.n_r) +
               sr.start;
+          // The r-stencil's weighted sum first: one weight per node of the other four axes.
+          const float* node = b.values + 3 * base;
+          double sx = 0.0, sy = 0.0, sm = 0.0;
           for (int ir = 0; ir < sr.count; ++ir) {
-            const double w = w4 * sr.w[ir];
-            fx += w * b.fx[base + ir];
-            fy += w * b.fy[base + ir];
+            sx += sr.w[ir] * node[3 * ir];
+            sy += sr.w[ir] * node[3 * ir + 1];
+            sm += sr.w[ir] * node[3 * ir + 2];
           }
+          fx += w4 * sx;
+          fy += w4 * sy;
+          mz += w4 * sm;
         }
       }
     }
   }
-  return {sign_x * fx, sign_y * fy};
+  return {sign_x * fx, sign_y * fy, sign_y * mz};
+}
+
+bool has_moment() {
+  for (int i = 0; i < detail::kCreepTableBlockCount; ++i)
+    if (!detail::kCreepTableBlocks[i].has_mz) return false;
+  return detail::kCreepTableBlockCount > 0;
 }
 
 }  // namespace
@@ -238,15 +248,17 @@ CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& c
   NuBlocks nb;
   const std::string why = check(sdec, creepages, load, material, &nb);
   if (!why.empty()) throw InputError(why);
-  std::array<double, 2> f = evaluate(*nb.lower, sdec, creepages, load, material);
+  std::array<double, 3> f = evaluate(*nb.lower, sdec, creepages, load, material);
   if (nb.upper && nb.t > 0.0) {
-    const std::array<double, 2> u = evaluate(*nb.upper, sdec, creepages, load, material);
-    f = {(1 - nb.t) * f[0] + nb.t * u[0], (1 - nb.t) * f[1] + nb.t * u[1]};
+    const std::array<double, 3> u = evaluate(*nb.upper, sdec, creepages, load, material);
+    for (std::size_t k = 0; k < f.size(); ++k) f[k] = (1 - nb.t) * f[k] + nb.t * u[k];
   }
   const double mu_n = load.mu * load.N;
   CreepForces forces;
   forces.Fx = f[0] * mu_n;
   forces.Fy = f[1] * mu_n;
+  forces.has_Mz = has_moment();
+  if (forces.has_Mz) forces.Mz = f[2] * mu_n * sdec.c();
   return forces;
 }
 

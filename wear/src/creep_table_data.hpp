@@ -4,7 +4,7 @@
 
 namespace wheelwear::wear::detail {
 
-/// One Poisson's ratio of the table. Values are indexed [g][psi][theta][beta][r] (r fastest).
+/// One Poisson's ratio of the table. Nodes are indexed [g][psi][theta][beta][r] (r fastest).
 struct CreepTableBlock {
   double nu;          ///< Poisson's ratio [-]
   int grid;           ///< elements per side of the exact solver's grid
@@ -18,8 +18,11 @@ struct CreepTableBlock {
   const double* c11;       ///< n_g normalisation coefficients (Kalker's C11 at a/b, nu) [-]
   const double* c22;       ///< n_g (Kalker's C22) [-]
   const double* c23;       ///< n_g (Kalker's C23) [-]
-  const double* fx;        ///< Fx / (mu N) [-]
-  const double* fy;        ///< Fy / (mu N) [-]
+  /// Per node (r fastest) three values: Fx/(mu N), Fy/(mu N), Mz/(mu N c) (c = sqrt(ab), Mz
+  /// about O) [-], in single precision (6e-8 relative, far below the interpolation's error).
+  const float* values;
+  bool has_mz;                 ///< false for a table written without Mz (its values are 0)
+  const double* log_a_over_b;  ///< n_g values log(a/b) (the interpolation's axis)
 };
 
 extern const CreepTableBlock* const kCreepTableBlocks;  ///< the blocks, increasing nu

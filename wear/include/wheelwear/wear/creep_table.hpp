@@ -43,14 +43,15 @@ bool creep_table_covers(const contactgeom::Sdec& sdec, const Creepages& creepage
                         const ContactLoad& load, const Material& material,
                         std::string* why = nullptr);
 
-/// Total creep forces Fx, Fy [N] on the wheel (Kalker's convention: they oppose the
-/// creepages) of the SDEC patch `sdec` with creepages at O, from the built-in table of exact-
-/// theory solutions: local cubic (four-node Lagrange) interpolation in log(a/b), psi, the
-/// direction (theta, beta) and the magnitude r of the normalised creepage, and linear in nu
-/// between the tabulated ratios. psi < 0 uses the mirror image (vy, phi, Fy change sign) and
-/// creepages with vx < 0 the reversed ones (forces change sign). Mz is not tabulated
-/// (has_Mz = false). Throws InputError naming the parameter when the input is invalid or
-/// outside the table's range (creep_table_range): use FASTSIM-SDEC there.
+/// Total creep forces Fx, Fy [N] and the spin moment Mz about O [N m] on the wheel (Kalker's
+/// convention: they oppose the creepages) of the SDEC patch `sdec` with creepages at O, from the
+/// built-in table of exact- theory solutions: local cubic (four-node Lagrange) interpolation in
+/// log(a/b), psi, the direction (theta, beta) and the magnitude r of the normalised creepage, and
+/// linear in nu between the tabulated ratios. psi < 0 uses the mirror image (vy, phi, Fy change
+/// sign) and creepages with vx < 0 the reversed ones (forces change sign). Mz is tabulated as
+/// Mz/(mu N c) (has_Mz = true; false for a table written without it). Throws InputError naming the
+/// parameter when the input is invalid or outside the table's range (creep_table_range): use
+/// FASTSIM-SDEC there.
 CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& creepages,
                                const ContactLoad& load, const Material& material);
 
