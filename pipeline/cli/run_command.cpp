@@ -87,7 +87,9 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
         .add("elapsed", s.elapsed)
         .add("evaluations", static_cast<double>(s.evaluations))
         .add("states_steps_per_second", rate)
-        .add("geometry_solves", static_cast<double>(s.geometry_solves));
+        .add("geometry_solves", static_cast<double>(s.geometry_solves))
+        .add("patches", static_cast<double>(s.patches))
+        .add("table_patches", static_cast<double>(s.table_patches));
     std::cout << o.str() << '\n';
     return;
   }
@@ -104,6 +106,10 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
               at(last, "equivalent_conicity"));
   std::printf("  %zu state evaluations in %.1f s (%.0f states/s, %zu contact geometries)\n",
               s.evaluations, s.elapsed, rate, s.geometry_solves);
+  if (s.table_patches > 0) {
+    std::printf("  %zu of %zu patches with totals from the book of tables (best)\n",
+                s.table_patches, s.patches);
+  }
   std::printf("plots: scripts/plot_run.py %s\n", output.c_str());
 }
 

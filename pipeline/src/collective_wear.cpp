@@ -12,6 +12,9 @@
 #include "wheelwear/input_error.hpp"
 #include "wheelwear/pipeline/profile_source.hpp"
 #include "wheelwear/wear/contact_model.hpp"
+#include "wheelwear/wear/exact/exact_fields.hpp"
+#include "wheelwear/wear/exact/steady_rolling.hpp"
+#include "wheelwear/wear/table_correction.hpp"
 
 namespace wheelwear::pipeline {
 
@@ -58,6 +61,7 @@ struct LocalWear {
 
 struct WheelResult {
   std::vector<LocalWear> wear;
+  std::size_t table_patches = 0;  // patches whose totals came from the book of tables
 };
 
 bool usable(contactgeom::WheelRailStatus status) {
@@ -183,9 +187,9 @@ CollectiveWear CollectiveEvaluator::evaluate(
     sum.vertical_force.assign(2 * n_states, kNaN);
     sum.lateral_force.assign(2 * n_states, kNaN);
     sum.lateral_fit.assign(2 * n_states, kNaN);
-    for (auto* v :
-         {&sum.normal_force, &sum.a, &sum.b, &sum.psi, &sum.y_wheel, &sum.contact_angle, &sum.vx,
-          &sum.vy, &sum.phi, &sum.Fx, &sum.Fy, &sum.frictional_work, &sum.worn_area})
+    for (auto* v : {&sum.normal_force, &sum.a, &sum.b, &sum.psi, &sum.y_wheel, &sum.contact_angle,
+                    &sum.vx, &sum.vy, &sum.phi, &sum.Fx, &sum.Fy, &sum.frictional_work,
+                    &sum.worn_area, &sum.from_table})
       v->assign(2 * n_states * kPatchSlots, kNaN);
   }
   const int nx = scene_.grid_nx, ny = scene_.grid_ny;
@@ -206,6 +210,10 @@ CollectiveWear CollectiveEvaluator::evaluate(
   // Only the fields the wear needs, unless T gamma maps with their cell positions are written.
   fastsim_options.field_set =
       scene_.tgamma_maps ? wear::CellFieldSet::all : wear::CellFieldSet::wear;
+
+  wear::ExactOptions exact_options;
+  exact_options.nx = nx;
+  exact_options.ny = ny;
 
   std::vector<WheelResult> results(cases.size());
   tbb::parallel_for(std::size_t{0}, cases.size(), [&](std::size_t k) {
@@ -235,8 +243,18 @@ CollectiveWear CollectiveEvaluator::evaluate(
       const wear::Creepages creep = c.creepages ? *c.creepages
                                                 : contactgeom::kinematic_creepages(
                                                       patch, pose, c.motion, scene_.wheel_radius);
-      wear::fastsim(region.method, region.region, creep, {patch.normal_force, scene_.friction},
-                    material, fastsim_options, solution);
+      const wear::ContactLoad load{patch.normal_force, scene_.friction};
+      if (scene_.tangential == TangentialMethod::exact) {
+        solution = wear::exact_tangential_solution(
+            wear::exact_sdec(region.region, creep, load, material, exact_options), creep);
+      } else {
+        wear::fastsim(region.method, region.region, creep, load, material, fastsim_options,
+                      solution);
+      }
+      const bool from_table =
+          scene_.tangential == TangentialMethod::best &&
+          wear::correct_with_creep_table(region.region, creep, load, material, solution);
+      if (from_table) ++results[k].table_patches;
       // The bins the patch can reach on the wheel: its width around O, both ways.
       const double reach = 2.0 * std::max(region.region.b, patch.sdec.b) + 2.0 * kBin;
       const double lo = std::max(0.0, patch.s_wheel - reach);
@@ -267,6 +285,7 @@ CollectiveWear CollectiveEvaluator::evaluate(
         double area = 0.0;
         for (double d : local.depth) area += d * kBin;
         sum.worn_area[at] = area;
+        sum.from_table[at] = from_table ? 1.0 : 0.0;
       }
       if (out.maps) {
         const std::size_t at = (k * kPatchSlots + slot) * cells;
@@ -287,6 +306,8 @@ CollectiveWear CollectiveEvaluator::evaluate(
       out.failed_weight += c.weight * (scene_.separate_wheels ? 0.5 : 1.0);
       continue;
     }
+    out.patches += results[k].wear.size();
+    out.table_patches += results[k].table_patches;
     std::vector<double>& rate = out.rate[static_cast<std::size_t>(c.profile)].depth;
     for (const LocalWear& local : results[k].wear)
       for (std::size_t b = 0; b < local.depth.size(); ++b)

@@ -170,6 +170,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   Scene s;
   bool inclination_given = false;
   std::optional<int> collective_line;
+  int tangential_line = 0;
   std::string law_table;
 
   auto section = [&](const std::string& name, std::map<std::string, KeyHandler> handlers) {
@@ -263,6 +264,21 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                                   "\": unknown FASTSIM scheme; use kalker or second-order");
                }
              }},
+            {"tangential_method",
+             [&](const auto& n, const auto& k) {
+               const std::string name = text(n, k);
+               if (name == "fastsim") {
+                 s.tangential = TangentialMethod::fastsim;
+               } else if (name == "best") {
+                 s.tangential = TangentialMethod::best;
+               } else if (name == "exact") {
+                 s.tangential = TangentialMethod::exact;
+               } else {
+                 throw InputError(where(n.source(), k) + " = \"" + name +
+                                  "\": unknown tangential method; use fastsim, best or exact");
+               }
+               tangential_line = static_cast<int>(n.source().begin.line);
+             }},
             {"strip_width_m",
              [&](const auto& n, const auto& k) {
                s.strip_width = number(n, k, 1e-5, 2e-3, "the strip width in m");
@@ -354,6 +370,14 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   read_table(root, "", top);
 
   if (!inclination_given) s.rail_inclination.reset();
+  if (s.tangential != TangentialMethod::fastsim && s.model != wear::ContactModel::sdec) {
+    const char* name = s.tangential == TangentialMethod::best ? "best" : "exact";
+    throw InputError("scene line " + std::to_string(tangential_line) +
+                     ": contact.tangential_method = \"" + name +
+                     "\" needs contact.model = \"sdec\" (it solves the SDEC patch); use "
+                     "tangential_method = \"fastsim\" with model = \"" +
+                     std::string(wear::model_name(s.model)) + "\"");
+  }
   s.wear_law_table = law_table;
   if (s.states.empty()) {
     throw InputError(collective_line ? "scene line " + std::to_string(*collective_line) +

@@ -155,6 +155,10 @@ void add_summaries(GroupRecord& g, const StateSummaries& s) {
       "[state, wheel, patch] frictional work per metre rolled", true);
   add("worn_area", s.worn_area, "m^2/m",
       "[state, wheel, patch] worn cross-section per metre running of this contact", true);
+  add("from_table", s.from_table, "1",
+      "[state, wheel, patch] 1: Fx, Fy and the frictional work from the book of tables of "
+      "Kalker's exact theory (tangential_method = best), 0: from FASTSIM",
+      true);
 }
 
 void add_maps(GroupRecord& g, const TgammaMaps& m, std::size_t states) {
@@ -276,6 +280,11 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
                               "wheel contacts without a usable patch (skipped)"));
     g.arrays.push_back(scalar("failed_weight", cw.failed_weight, "1",
                               "share of the running distance of the skipped contacts"));
+    g.arrays.push_back(
+        scalar("patches", static_cast<double>(cw.patches), "1", "contact patches solved"));
+    g.arrays.push_back(scalar("table_patches", static_cast<double>(cw.table_patches), "1",
+                              "of them, with totals from the book of tables "
+                              "(tangential_method = best)"));
     std::vector<profiles::WearDepth> increments;
     for (std::size_t p = 0; p < worn.size(); ++p) {
       const std::string& n = worn[p].name;
@@ -332,6 +341,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
 
     summary.steps = step;
     summary.distance = distance;
+    summary.patches += cw.patches;
+    summary.table_patches += cw.table_patches;
     if (options.progress) {
       RunProgress p;
       p.step = step;

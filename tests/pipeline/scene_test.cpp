@@ -158,6 +158,16 @@ struct BadScene {
   const char* message;
 };
 
+TEST_F(SceneTest, TangentialMethodIsFastsimUnlessAnotherIsAsked) {
+  EXPECT_EQ(parse_scene(kState, dir_).tangential, TangentialMethod::fastsim);
+  for (const auto& [name, method] :
+       {std::pair{"best", TangentialMethod::best}, {"exact", TangentialMethod::exact}}) {
+    const std::string text =
+        "[contact]\nmodel = \"sdec\"\ntangential_method = \"" + std::string(name) + "\"\n" + kState;
+    EXPECT_EQ(parse_scene(text, dir_).tangential, method) << name;
+  }
+}
+
 class BadSceneTest : public SceneTest, public ::testing::WithParamInterface<BadScene> {};
 
 TEST_P(BadSceneTest, IsRejectedNamingTheKeyAndLine) {
@@ -188,6 +198,13 @@ INSTANTIATE_TEST_SUITE_P(
                  "no such file"},
         BadScene{"UnknownModel", "[contact]\nmodel = \"ellipse\"\n" + std::string(kState),
                  "unknown contact model"},
+        BadScene{"UnknownTangentialMethod",
+                 "[contact]\ntangential_method = \"kalker\"\n" + std::string(kState),
+                 "contact.tangential_method = \"kalker\": unknown tangential method"},
+        BadScene{"BestNeedsSdec",
+                 "[contact]\nmodel = \"eqe\"\ntangential_method = \"best\"\n" + std::string(kState),
+                 "scene line 3: contact.tangential_method = \"best\" needs contact.model = "
+                 "\"sdec\""},
         BadScene{"Syntax", "[run\n", "scene line 1"},
         BadScene{"NoStates", "[run]\ndistance_m = 10\n", "no [load_collective]"},
         BadScene{"StateWithoutLoad", "[[load_collective.state]]\ndy_m = 0.001\nspeed_m_s = 20\n",

@@ -23,6 +23,9 @@
 #include "wheelwear/input_error.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/profiles/profile.hpp"
+#include "wheelwear/wear/creep_table.hpp"
+#include "wheelwear/wear/exact/steady_rolling.hpp"
+#include "wheelwear/wear/table_correction.hpp"
 
 extern char** environ;
 
@@ -247,6 +250,86 @@ TEST_F(WearRunTest, WornAreaEqualsAccumulatedWearAndGrowsMonotonically) {
     // dropped, and the polygon closes over re-interpolated ends: 1 % covers these.
     EXPECT_NEAR(area, accumulated, 0.01 * accumulated) << "step " << next;
   }
+}
+
+// tangential_method = "best": where the book of tables covers a patch its recorded totals are
+// the table's for the recorded patch and creepages (recomputed here from the file), and its
+// frictional work is their rigid-slip work; FASTSIM's stand only where the table does not reach.
+TEST_F(WearRunTest, BestTakesTotalsFromTheTableWhereItReaches) {
+  if (wear::creep_table_range().grid == 0) GTEST_SKIP() << "library built without the table";
+  std::string text = small_scene(10e3, 10e3, 1e-3);
+  text.insert(text.find("[contact]\n") + 10, "tangential_method = \"best\"\n");
+  const fs::path out = dir_ / "best.h5";
+  const RunSummary summary = run(text, out);
+  const ResultsFile file = ResultsFile::read(out);
+  auto column = [&](const std::string& name) { return file.read_step_array(0, "states/" + name); };
+  const auto from_table = column("from_table"), a = column("a"), b = column("b"),
+             psi = column("psi"), n = column("normal_force"), vx = column("vx"), vy = column("vy"),
+             phi = column("phi"), fx = column("Fx"), fy = column("Fy"),
+             work = column("frictional_work");
+  const Scene scene = parse_scene(text, dir_);
+  const wear::Material material{scene.youngs_modulus / (2.0 * (1.0 + scene.poisson)),
+                                scene.poisson};
+  std::size_t tabled = 0, patches = 0;
+  for (std::size_t i = 0; i < from_table.size(); ++i) {
+    if (std::isnan(from_table[i])) continue;
+    ++patches;
+    const contactgeom::Sdec sdec{a[i], b[i], psi[i]};
+    const wear::Creepages v{vx[i], vy[i], phi[i]};
+    const wear::ContactLoad load{n[i], scene.friction};
+    const bool covered = wear::creep_table_covers(sdec, v, load, material);
+    EXPECT_EQ(from_table[i] == 1.0, covered) << "patch " << i;
+    if (!covered) continue;
+    ++tabled;
+    const wear::CreepForces t = wear::creep_table_forces(sdec, v, load, material);
+    const double scale = 1e-9 * load.mu * load.N;
+    EXPECT_NEAR(fx[i], t.Fx, scale) << "patch " << i;
+    EXPECT_NEAR(fy[i], t.Fy, scale) << "patch " << i;
+    EXPECT_NEAR(work[i], std::max(0.0, wear::rigid_slip_work(t, v)), 1e-9 * (work[i] + 1e-9));
+  }
+  EXPECT_GT(tabled, patches / 2) << "the scene's patches should mostly lie in the table";
+  EXPECT_EQ(file.read_step_array(0, "table_patches")[0], static_cast<double>(tabled));
+  double over_steps = 0.0;  // the summary counts every evaluation, one per step
+  for (int step = 0; step < file.completed_steps(); ++step)
+    over_steps += file.read_step_array(step, "table_patches")[0];
+  EXPECT_EQ(static_cast<double>(summary.table_patches), over_steps);
+}
+
+// tangential_method = "exact": every patch's recorded totals are those of a fresh exact solve
+// of the recorded patch and creepages on the scene's grid, and its frictional work their
+// rigid-slip work (exact_fields.hpp).
+TEST_F(WearRunTest, ExactSolvesEveryPatchWithTheExactTheory) {
+  std::string text = small_scene(10e3, 10e3, 1e-3);
+  text.insert(text.find("[contact]\n") + 10, "tangential_method = \"exact\"\n");
+  const fs::path out = dir_ / "exact.h5";
+  run(text, out);
+  const ResultsFile file = ResultsFile::read(out);
+  auto column = [&](const std::string& name) { return file.read_step_array(0, "states/" + name); };
+  const auto a = column("a"), b = column("b"), psi = column("psi"), n = column("normal_force"),
+             vx = column("vx"), vy = column("vy"), phi = column("phi"), fx = column("Fx"),
+             fy = column("Fy"), work = column("frictional_work"), area = column("worn_area");
+  const Scene scene = parse_scene(text, dir_);
+  const wear::Material material{scene.youngs_modulus / (2.0 * (1.0 + scene.poisson)),
+                                scene.poisson};
+  wear::ExactOptions options;
+  options.nx = scene.grid_nx;
+  options.ny = scene.grid_ny;
+  int patches = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::isnan(a[i])) continue;
+    ++patches;
+    const wear::Creepages v{vx[i], vy[i], phi[i]};
+    const wear::ContactLoad load{n[i], scene.friction};
+    const wear::ExactSolution e =
+        wear::exact_sdec({a[i], b[i], psi[i]}, v, load, material, options);
+    const double scale = 1e-9 * load.mu * load.N;
+    EXPECT_NEAR(fx[i], e.forces.Fx, scale) << "patch " << i;
+    EXPECT_NEAR(fy[i], e.forces.Fy, scale) << "patch " << i;
+    EXPECT_NEAR(work[i], std::max(0.0, wear::rigid_slip_work(e.forces, v)),
+                1e-9 * (work[i] + 1e-9));
+    EXPECT_GT(area[i], 0.0) << "patch " << i;
+  }
+  EXPECT_GE(patches, 8);
 }
 
 TEST_F(WearRunTest, SeparateWheelsOfAMirroredCollectiveWearAlike) {

@@ -32,6 +32,9 @@ struct StateSummaries {
   std::vector<double> normal_force, a, b, psi, y_wheel, contact_angle, vx, vy, phi, Fx, Fy,
       frictional_work, worn_area;  ///< [state][wheel][slot]: N, m, m, -, m, rad, -, -, 1/m, N, N,
                                    ///< N (J/m), m^2/m
+  /// [state][wheel][slot]: 1 where the totals came from the book of tables (tangential_method
+  /// "best"), 0 where from FASTSIM.
+  std::vector<double> from_table;
 };
 
 /// T gamma maps: per state, wheel and slot the nx*ny cells of FASTSIM's grid (strip by strip),
@@ -53,6 +56,8 @@ struct CollectiveWear {
   int failed_contacts = 0;          ///< wheel contacts without usable patches (skipped)
   double failed_weight = 0.0;       ///< their share of the running distance (of the two wheels)
   std::size_t geometry_solves = 0;  ///< distinct wheel/rail contacts solved (after reuse)
+  std::size_t patches = 0;          ///< patches solved
+  std::size_t table_patches = 0;    ///< of them, with totals from the book of tables ("best")
 };
 
 /// The fixed part of a run: rail, track, models, law, collective. Evaluations are

@@ -37,6 +37,18 @@ struct WheelsetStateSpec {
   int line = 0;         ///< line in the scene or the collective file (for messages)
 };
 
+/// How the tangential problem of each patch is solved.
+enum class TangentialMethod {
+  fastsim,  ///< FASTSIM with the contact model's region and flexibilities
+  /// Inside the book of tables each SDEC patch's forces, spin moment and frictional work are
+  /// Kalker's exact theory's, spread over the patch as FASTSIM-SDEC spreads them
+  /// (wear/table_correction.hpp); FASTSIM-SDEC alone outside the table. Needs model sdec.
+  best,
+  /// Kalker's exact theory on the SDEC patch (exact_sdec on grid_nx x grid_ny elements,
+  /// wear/exact/exact_fields.hpp): the reference, at milliseconds per patch. Needs model sdec.
+  exact,
+};
+
 /// Everything a run needs. Defaults are those of the built-in scene.
 struct Scene {
   std::string title;
@@ -54,6 +66,7 @@ struct Scene {
   int grid_nx = 30;
   int grid_ny = 30;
   wear::FastsimScheme scheme = wear::FastsimScheme::kalker;
+  TangentialMethod tangential = TangentialMethod::fastsim;
   double strip_width = 0.2e-3;        ///< [m]
   double virtual_penetration = 0.55;  ///< Kik-Piotrowski epsilon [-]
   std::string wear_law = "usfd";      ///< usfd or archard

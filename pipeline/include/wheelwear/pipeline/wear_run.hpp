@@ -35,6 +35,8 @@ struct RunSummary {
   double elapsed = 0.0;             ///< wall time of this process [s]
   std::size_t evaluations = 0;      ///< wheelset states evaluated by this process
   std::size_t geometry_solves = 0;  ///< distinct wheel/rail contacts solved by this process
+  std::size_t patches = 0;          ///< contact patches solved by this process
+  std::size_t table_patches = 0;    ///< of them, with totals from the book of tables ("best")
 };
 
 /// Runs `scene` from its new profile and writes `output` (see README, "Results file").
