@@ -30,22 +30,6 @@ struct ContactArgs {
   double exact_margin = 1.3;                // --tangential exact: grid over the patch
 };
 
-// Elements per side of --exact-grid (as `wheelwear creep --exact-grid`).
-constexpr int kMinExactGrid = 8;
-constexpr int kMaxExactGrid = 400;
-
-const char* exact_status_name(wear::ExactStatus status) {
-  switch (status) {
-    case wear::ExactStatus::converged:
-      return "converged";
-    case wear::ExactStatus::not_converged:
-      return "not converged";
-    case wear::ExactStatus::no_contact:
-      return "no contact";
-  }
-  return "unknown";
-}
-
 // Kalker's exact theory on `p`, from the wheel/rail undeformed distance (wheel_rail_exact.hpp).
 wear::WheelRailExactSolution exact_patch(const contactgeom::WheelRailPair& pair,
                                          const contactgeom::WheelRailPatch& p,
@@ -99,7 +83,7 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
     if (args.tangential == "exact") {
       const wear::WheelRailExactSolution e = exact_patch(pair, p, args);
       const wear::ExactSolution& r = e.rolling;
-      o.add("exact_status", exact_status_name(r.status))
+      o.add("exact_status", wear::status_name(r.status))
           .add("exact_N", r.normal_force)
           .add("exact_Fx", r.forces.Fx)
           .add("exact_Fy", r.forces.Fy)
@@ -161,7 +145,7 @@ void run_contact(const ContactArgs& args) {
               "  exact theory (%d x %d elements, %s after %d iterations): N %.6g N, Fx %.6g N, "
               "Fy %.6g N, Mz %.6g N m\n"
               "    area %.4g mm2, %.1f %% adhesion, approach %.4g um\n",
-              r.grid.nx, r.grid.ny, exact_status_name(r.status), r.iterations, r.normal_force,
+              r.grid.nx, r.grid.ny, wear::status_name(r.status), r.iterations, r.normal_force,
               r.forces.Fx, r.forces.Fy, r.forces.Mz, e.contact_area * 1e6,
               100.0 * e.adhesion_fraction, e.approach * 1e6);
         }

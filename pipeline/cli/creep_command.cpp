@@ -42,24 +42,6 @@ struct CreepArgs {
   const CLI::Option* exact_grid_option = nullptr;
 };
 
-// Elements per side of --exact-grid: below 8 the patch's edge is a quarter of its width; 400 x
-// 400 takes tens of seconds.
-constexpr int kMinExactGrid = 8;
-constexpr int kMaxExactGrid = 400;
-
-// The exact solution's numerical outcome, as printed.
-const char* exact_status_name(wear::ExactStatus status) {
-  switch (status) {
-    case wear::ExactStatus::converged:
-      return "converged";
-    case wear::ExactStatus::not_converged:
-      return "not converged";
-    case wear::ExactStatus::no_contact:
-      return "no contact";
-  }
-  return "unknown";
-}
-
 // `--method exact`: Kalker's exact theory on the SDEC patch with its prescribed pressure
 // (exact_sdec), on exact_grid x exact_grid elements over 1.02 times the patch (CONTACT's SDEC
 // option). Refuses the options of the FASTSIM methods, which would be silently ignored.
@@ -177,7 +159,7 @@ void run_creep(const CreepArgs& args) {
     if (exact_solution) {
       const wear::ExactSolution& s = *exact_solution;
       out.add("exact_grid", args.exact_grid)
-          .add("status", exact_status_name(s.status))
+          .add("status", wear::status_name(s.status))
           .add("iterations", s.iterations)
           .add("adhesion_elements", s.adhesion_elements)
           .add("adhesion_fraction",
@@ -200,7 +182,7 @@ void run_creep(const CreepArgs& args) {
     const wear::ExactSolution& s = *exact_solution;
     std::printf("grid     %d x %d elements over 1.02 times the patch\n", args.exact_grid,
                 args.exact_grid);
-    std::printf("status   %s after %d iterations%s%s\n", exact_status_name(s.status), s.iterations,
+    std::printf("status   %s after %d iterations%s%s\n", wear::status_name(s.status), s.iterations,
                 s.message.empty() ? "" : ": ", s.message.c_str());
     std::printf("contact  %d elements: %d adhere (%.1f %%), %d slip\n", s.contact_elements,
                 s.adhesion_elements,

@@ -38,4 +38,16 @@ void ExactOptions::validate() const {
   require(max_iterations >= 1, "max_iterations", max_iterations, "must be at least 1");
 }
 
+const char* status_name(ExactStatus status) {
+  switch (status) {
+    case ExactStatus::converged:
+      return "converged";
+    case ExactStatus::not_converged:
+      return "not converged";
+    case ExactStatus::no_contact:
+      return "no contact";
+  }
+  return "unknown";
+}
+
 }  // namespace wheelwear::wear

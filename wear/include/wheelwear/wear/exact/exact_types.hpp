@@ -54,6 +54,9 @@ enum class ExactStatus {
   no_contact,     ///< no element carries pressure
 };
 
+/// "converged", "not converged" or "no contact" (as the command line prints it).
+const char* status_name(ExactStatus status);
+
 /// Per-element state of the tangential problem.
 enum class ElementState : std::uint8_t { exterior = 0, adhesion = 1, slip = 2 };
 
