@@ -39,7 +39,8 @@ Stencil stencil(const double* x, int n, double q) {
   return s;
 }
 
-// Linear interpolation of the block's normalisation coefficients in log(a/b).
+// The block's normalisation coefficients at a/b, by the same four-node stencils in log(a/b) as
+// the forces: a linear interpolation would kink the normalised forces at every node of a/b.
 struct Normalisation {
   double c11, c22, c23;
 };
