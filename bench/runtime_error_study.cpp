@@ -9,8 +9,8 @@
 //   answer. Columns:
 //     method          the --method name of `wheelwear creep`; exact: Kalker's exact theory
 //                     solved by the library (wear::exact_sdec, the SDEC pressure of Liu, Fu &
-//                     Bruni 2022, Eq. 4, prescribed as in CONTACT's reference runs), which
-//                     `wheelwear creep` does not offer; table: the built-in book of exact-theory
+//                     Bruni 2022, Eq. 4, prescribed as in CONTACT's reference runs; `wheelwear
+//                     creep --method exact`); table: the built-in book of exact-theory
 //                     tables (wear::creep_table_forces)
 //     scheme          kalker | second-order (FASTSIM marching); none for the other methods
 //     bound           parabolic (Eq. 18 of Liu, Fu & Bruni 2022) | none (the non-FASTSIM

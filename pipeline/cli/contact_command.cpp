@@ -25,9 +25,11 @@ struct ContactArgs {
   ContactInputs in;
   bool creep = false;
   bool json = false;
-  std::string tangential = "fastsim-sdec";  // or "exact": also Kalker's exact theory
-  int exact_grid = 40;                      // --tangential exact: elements per side
-  double exact_margin = 1.3;                // --tangential exact: grid over the patch
+  std::string tangential = "fastsim-sdec";         // or "exact": also Kalker's exact theory
+  int exact_grid = 40;                             // --tangential exact: elements per side
+  double exact_margin = 1.3;                       // --tangential exact: grid over the patch
+  const CLI::Option* exact_grid_option = nullptr;  // to refuse them without --tangential exact
+  const CLI::Option* exact_margin_option = nullptr;
 };
 
 // Kalker's exact theory on `p`, from the wheel/rail undeformed distance (wheel_rail_exact.hpp).
@@ -101,7 +103,13 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
 }
 
 void run_contact(const ContactArgs& args) {
-  if (args.tangential == "exact") check_exact_options(args);
+  if (args.tangential == "exact") {
+    check_exact_options(args);
+  } else {
+    for (const CLI::Option* given : {args.exact_grid_option, args.exact_margin_option})
+      if (given && given->count() > 0)
+        throw InputError(given->get_name() + ": applies only with --tangential exact");
+  }
   const SolvedContact solved = solve_contact(args.in);
   const contactgeom::WheelRailContact& contact = solved.contact;
 
@@ -190,13 +198,14 @@ void add_contact_command(CLI::App& app) {
       ->check(CLI::IsMember({"fastsim-sdec", "exact"}))
       ->needs(creep)
       ->capture_default_str();
-  cmd->add_option("--exact-grid", args->exact_grid,
-                  "--tangential exact: elements per side, 8 ... 400")
-      ->capture_default_str();
-  cmd->add_option("--exact-margin", args->exact_margin,
-                  "--tangential exact: the grid covers the Kik-Piotrowski patch times this,\n"
-                  "1 ... 5; raise it when the exact contact area reaches the grid's border")
-      ->capture_default_str();
+  args->exact_grid_option = cmd->add_option("--exact-grid", args->exact_grid,
+                                            "--tangential exact: elements per side, 8 ... 400")
+                                ->capture_default_str();
+  args->exact_margin_option =
+      cmd->add_option("--exact-margin", args->exact_margin,
+                      "--tangential exact: the grid covers the Kik-Piotrowski patch times this,\n"
+                      "1 ... 5; raise it when the exact contact area reaches the grid's border")
+          ->capture_default_str();
   cmd->add_flag("--json", args->json, "print one JSON object with a list of patches");
   cmd->callback([args] { run_contact(*args); });
 }

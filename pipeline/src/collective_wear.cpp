@@ -62,6 +62,7 @@ struct LocalWear {
 struct WheelResult {
   std::vector<LocalWear> wear;
   std::size_t table_patches = 0;  // patches whose totals came from the book of tables
+  std::size_t unconverged = 0;    // exact solves that stopped at max_iterations
 };
 
 bool usable(contactgeom::WheelRailStatus status) {
@@ -225,7 +226,7 @@ CollectiveWear CollectiveEvaluator::evaluate(
       const auto& both = contacts[geometry_of[k / 2]];
       sum.status[k] = static_cast<double>(contact.status);
       sum.dy[k] = pose.dy;
-      sum.roll[k / 2] = both.roll;
+      if (k % 2 == 0) sum.roll[k / 2] = both.roll;  // one writer per state
       sum.vertical_force[k] = contact.vertical_force;
       sum.lateral_force[k] = contact.lateral_force;
       sum.lateral_fit[k] = static_cast<double>(k % 2 == 0 ? both.left_fit : both.right_fit);
@@ -245,8 +246,10 @@ CollectiveWear CollectiveEvaluator::evaluate(
                                                       patch, pose, c.motion, scene_.wheel_radius);
       const wear::ContactLoad load{patch.normal_force, scene_.friction};
       if (scene_.tangential == TangentialMethod::exact) {
-        solution = wear::exact_tangential_solution(
-            wear::exact_sdec(region.region, creep, load, material, exact_options), creep);
+        const wear::ExactSolution exact =
+            wear::exact_sdec(region.region, creep, load, material, exact_options);
+        if (exact.status == wear::ExactStatus::not_converged) ++results[k].unconverged;
+        solution = wear::exact_tangential_solution(exact, creep);
       } else {
         wear::fastsim(region.method, region.region, creep, load, material, fastsim_options,
                       solution);
@@ -308,6 +311,7 @@ CollectiveWear CollectiveEvaluator::evaluate(
     }
     out.patches += results[k].wear.size();
     out.table_patches += results[k].table_patches;
+    out.unconverged_patches += results[k].unconverged;
     std::vector<double>& rate = out.rate[static_cast<std::size_t>(c.profile)].depth;
     for (const LocalWear& local : results[k].wear)
       for (std::size_t b = 0; b < local.depth.size(); ++b)

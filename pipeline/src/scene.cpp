@@ -378,6 +378,13 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                      "tangential_method = \"fastsim\" with model = \"" +
                      std::string(wear::model_name(s.model)) + "\"");
   }
+  if (s.tangential == TangentialMethod::exact && std::max(s.grid_nx, s.grid_ny) > 400) {
+    throw InputError("scene line " + std::to_string(tangential_line) +
+                     ": contact.tangential_method = \"exact\" solves grid_nx x grid_ny elements "
+                     "per patch; " +
+                     std::to_string(s.grid_nx) + " x " + std::to_string(s.grid_ny) +
+                     " is beyond 400 x 400 (seconds and gigabytes per patch): use at most 400");
+  }
   s.wear_law_table = law_table;
   if (s.states.empty()) {
     throw InputError(collective_line ? "scene line " + std::to_string(*collective_line) +

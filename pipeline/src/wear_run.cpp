@@ -157,7 +157,7 @@ void add_summaries(GroupRecord& g, const StateSummaries& s) {
       "[state, wheel, patch] worn cross-section per metre running of this contact", true);
   add("from_table", s.from_table, "1",
       "[state, wheel, patch] 1: Fx, Fy and the frictional work from the book of tables of "
-      "Kalker's exact theory (tangential_method = best), 0: from FASTSIM",
+      "Kalker's exact theory (tangential_method = best), 0: not from the table",
       true);
 }
 
@@ -285,6 +285,10 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     g.arrays.push_back(scalar("table_patches", static_cast<double>(cw.table_patches), "1",
                               "of them, with totals from the book of tables "
                               "(tangential_method = best)"));
+    g.arrays.push_back(scalar("unconverged_patches", static_cast<double>(cw.unconverged_patches),
+                              "1",
+                              "exact solves (tangential_method = exact) stopped at their "
+                              "iteration cap; their last iterate is used"));
     std::vector<profiles::WearDepth> increments;
     for (std::size_t p = 0; p < worn.size(); ++p) {
       const std::string& n = worn[p].name;

@@ -82,7 +82,7 @@ TEST(CreepExact, RefusesWhatDoesNotApply) {
   refused(kSpin + " --target-error 1e-3", "--target-error");
   refused(kSpin + " --nx 20", "--nx");
   refused(kSpin + " --scheme second-order", "--scheme");
-  refused(kSpin + " --N nan", "N");
+  refused(kSpin + " --N nan", "N = nan");
   std::string fastsim = kSpin;
   fastsim.replace(fastsim.find("exact"), 5, "fastsim-sdec");
   refused(fastsim + " --exact-grid 40", "--exact-grid");
@@ -100,8 +100,10 @@ TEST(ContactExact, AddsTheExactSolutionPerPatch) {
   const auto exact = run_wheelwear(args + " --tangential exact --exact-grid 36");
   ASSERT_EQ(fastsim.exit_code, 0) << fastsim.err;
   ASSERT_EQ(exact.exit_code, 0) << exact.err;
-  for (const char* key : {"Fx", "Fy", "Mz", "N", "area"})
+  for (const char* key : {"Fx", "Fy", "Mz", "N", "area"}) {
+    ASSERT_TRUE(json_number(fastsim.out, key).has_value()) << key;
     EXPECT_EQ(json_number(exact.out, key), json_number(fastsim.out, key)) << key;
+  }
   EXPECT_FALSE(json_number(fastsim.out, "exact_Fx").has_value());
 
   contactgeom::WheelsetPose pose;
@@ -136,6 +138,13 @@ TEST(ContactExact, RefusesBadExactOptions) {
   const auto r = run_wheelwear("contact --dy 0 --load 55000 --tangential exact");
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("--creep"), std::string::npos) << r.err;
+  // The exact method's options without it.
+  for (const char* option : {"--exact-grid 40", "--exact-margin 1.5"}) {
+    const auto ignored = run_wheelwear(args + " " + option);
+    EXPECT_NE(ignored.exit_code, 0) << option;
+    EXPECT_NE(ignored.err.find("applies only with --tangential exact"), std::string::npos)
+        << ignored.err;
+  }
   // The grid too snug for the exact area: the message says how to fix it.
   const auto snug = run_wheelwear(args + " --tangential exact --exact-margin 1");
   EXPECT_NE(snug.exit_code, 0);

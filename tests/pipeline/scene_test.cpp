@@ -201,6 +201,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"UnknownTangentialMethod",
                  "[contact]\ntangential_method = \"kalker\"\n" + std::string(kState),
                  "contact.tangential_method = \"kalker\": unknown tangential method"},
+        BadScene{"ExactGridTooFine",
+                 "[contact]\ngrid_nx = 500\ntangential_method = \"exact\"\n" + std::string(kState),
+                 "500 x 30 is beyond 400 x 400"},
         BadScene{"BestNeedsSdec",
                  "[contact]\nmodel = \"eqe\"\ntangential_method = \"best\"\n" + std::string(kState),
                  "scene line 3: contact.tangential_method = \"best\" needs contact.model = "

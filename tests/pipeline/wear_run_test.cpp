@@ -282,6 +282,8 @@ TEST_F(WearRunTest, BestTakesTotalsFromTheTableWhereItReaches) {
     if (!covered) continue;
     ++tabled;
     const wear::CreepForces t = wear::creep_table_forces(sdec, v, load, material);
+    // The same computation on the same inputs; 1e-9 allows only for the recorded inputs' and
+    // outputs' round trip through the file (exact in double) and for contraction differences.
     const double scale = 1e-9 * load.mu * load.N;
     EXPECT_NEAR(fx[i], t.Fx, scale) << "patch " << i;
     EXPECT_NEAR(fy[i], t.Fy, scale) << "patch " << i;
@@ -322,6 +324,7 @@ TEST_F(WearRunTest, ExactSolvesEveryPatchWithTheExactTheory) {
     const wear::ContactLoad load{n[i], scene.friction};
     const wear::ExactSolution e =
         wear::exact_sdec({a[i], b[i], psi[i]}, v, load, material, options);
+    // The run's solve repeated on the recorded inputs: equal but for rounding (1e-9 of mu N).
     const double scale = 1e-9 * load.mu * load.N;
     EXPECT_NEAR(fx[i], e.forces.Fx, scale) << "patch " << i;
     EXPECT_NEAR(fy[i], e.forces.Fy, scale) << "patch " << i;

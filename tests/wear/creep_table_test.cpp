@@ -95,10 +95,10 @@ TEST_F(CreepTable, ReproducesFreshSolvesAtItsNodes) {
 // Between the nodes: 100 points spread over the whole range (a fixed linear congruential
 // sequence; a/b log-uniform in 0.2 ... 5, psi in -0.8 ... 0.8, directions uniform on the
 // sphere, r in 0 ... r_max, nu in 0.25 ... 0.28), against fresh exact solves on the table's
-// grid. Bound: the goal, 1 % of mu N (and of mu N c for Mz); the shipped table (12 a/b x
-// 5 psi x 33 theta x 19 beta x 13 r, 30 x 30 elements) reaches worst 0.48 % and mean 0.08 % in
-// F, 0.65 % and 0.06 % in Mz on these points (1000 points of the same sequence: 0.72 % and
-// 0.08 % in F, 0.82 % and 0.05 % in Mz); the worst lie where the patch begins to slide fully.
+// grid. Bound: the table's design target, 1 % of mu N (and of mu N c for Mz); the shipped table (12
+// a/b x 5 psi x 33 theta x 19 beta x 13 r, 30 x 30 elements) reaches worst 0.48 % and mean 0.08 %
+// in F, 0.65 % and 0.06 % in Mz on these points (1000 points of the same sequence: 0.72 % and 0.08
+// % in F, 0.82 % and 0.05 % in Mz); the worst lie where the patch begins to slide fully.
 constexpr double kInterpolationError = 0.01;
 constexpr double kMeanInterpolationError = 0.002;
 constexpr double kMomentInterpolationError = 0.01;

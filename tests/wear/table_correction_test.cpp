@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "wheelwear/input_error.hpp"
 #include "wheelwear/wear/creep_table.hpp"
 #include "wheelwear/wear/exact/steady_rolling.hpp"
 
@@ -94,6 +95,13 @@ TEST(TableCorrection, CarriesFastsimToTheExactTheorysWork) {
                 best.frictional_work / exact, fast.frictional_work / exact);
     EXPECT_GT(std::abs(fast.frictional_work / exact - 1.0), 0.2) << "phi " << v.phi;
   }
+}
+
+TEST(TableCorrection, RigidSlipWorkRefusesSpinWithoutMoment) {
+  CreepForces forces;
+  forces.Fx = -100.0;
+  EXPECT_DOUBLE_EQ(rigid_slip_work(forces, {1e-3, 0.0, 0.0}), 0.1);
+  EXPECT_THROW(rigid_slip_work(forces, {1e-3, 0.0, 0.5}), InputError);
 }
 
 TEST(TableCorrection, LeavesPatchesOutsideTheTableToFastsim) {

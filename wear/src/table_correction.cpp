@@ -1,13 +1,18 @@
 #include "wheelwear/wear/table_correction.hpp"
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
+#include "wheelwear/input_error.hpp"
 #include "wheelwear/wear/creep_table.hpp"
 
 namespace wheelwear::wear {
 
 double rigid_slip_work(const CreepForces& forces, const Creepages& creepages) {
+  if (!forces.has_Mz && creepages.phi != 0.0)
+    throw InputError("rigid_slip_work: phi = " + std::to_string(creepages.phi) +
+                     " 1/m needs the spin moment Mz, which these forces lack");
   const double spin = forces.has_Mz ? forces.Mz * creepages.phi : 0.0;
   return -(forces.Fx * creepages.vx + forces.Fy * creepages.vy + spin);
 }

@@ -27,7 +27,8 @@ TangentialSolution exact_tangential_solution(const ExactSolution& exact,
   f.work.resize(n);
   f.slip_norm.resize(n);
   f.slip.resize(n);
-  const bool solved = exact.px.size() == n && exact.sx.size() == n && exact.pn.size() == n;
+  const bool solved = exact.px.size() == n && exact.py.size() == n && exact.sx.size() == n &&
+                      exact.sy.size() == n && exact.pn.size() == n && exact.state.size() == n;
   f.px = solved ? exact.px : std::vector<double>(n, 0.0);
   f.py = solved ? exact.py : std::vector<double>(n, 0.0);
   f.sx = solved ? exact.sx : std::vector<double>(n, 0.0);

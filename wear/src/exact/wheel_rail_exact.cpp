@@ -1,5 +1,6 @@
 #include "wheelwear/wear/exact/wheel_rail_exact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <numbers>
@@ -46,8 +47,10 @@ CrossSectionMinimum cross_section_minimum(const contactgeom::WheelRailPair& pair
   }
   const double curvature = *back - 2.0 * *centre + *front;
   if (!(curvature > 0.0)) return {0.0, *centre};
-  const double x = 0.5 * l * (*back - *front) / curvature;
-  return {x, *centre - 0.125 * (*front - *back) * (*front - *back) / curvature};
+  // Kept within the three samples: a nearly flat gap along x would put it far off the patch.
+  const double x = std::clamp(0.5 * l * (*back - *front) / curvature, -l, l);
+  const double t = x / l;  // the parabola through the three samples, at x
+  return {x, *centre + 0.5 * t * (*front - *back) + 0.5 * t * t * curvature};
 }
 
 // Throws InputError when the pressure reaches the grid's border or an element where a profile

@@ -33,7 +33,7 @@ struct StateSummaries {
       frictional_work, worn_area;  ///< [state][wheel][slot]: N, m, m, -, m, rad, -, -, 1/m, N, N,
                                    ///< N (J/m), m^2/m
   /// [state][wheel][slot]: 1 where the totals came from the book of tables (tangential_method
-  /// "best"), 0 where from FASTSIM.
+  /// "best"), 0 where not.
   std::vector<double> from_table;
 };
 
@@ -58,6 +58,8 @@ struct CollectiveWear {
   std::size_t geometry_solves = 0;  ///< distinct wheel/rail contacts solved (after reuse)
   std::size_t patches = 0;          ///< patches solved
   std::size_t table_patches = 0;    ///< of them, with totals from the book of tables ("best")
+  /// Exact solves ("exact") that stopped at their iteration cap; their last iterate is used.
+  std::size_t unconverged_patches = 0;
 };
 
 /// The fixed part of a run: rail, track, models, law, collective. Evaluations are

@@ -13,8 +13,8 @@ namespace wheelwear::wear {
 /// (Kalker's convention, on the wheel) and spin moment about O at creepages `creepages` at O:
 /// W = -(Fx vx + Fy vy + Mz phi). In the continuum theory the elastic part of the slip does no
 /// net work (its operator is antisymmetric), so the work of the slip, the integral of |p| |s|,
-/// equals the work of the rigid slip, which only the totals enter. Needs forces.has_Mz unless
-/// phi = 0.
+/// equals the work of the rigid slip, which only the totals enter. Throws InputError when phi
+/// is not 0 and the forces have no Mz.
 double rigid_slip_work(const CreepForces& forces, const Creepages& creepages);
 
 /// Where the built-in book of tables covers the patch (creep_table_covers) and tabulates Mz:
