@@ -26,7 +26,7 @@
 #include <thread>
 #include <vector>
 
-#include "wheelwear/wear/exact/steady_rolling.hpp"
+#include "wheelwear/wear/exact/sdec_fit.hpp"
 
 namespace {
 
@@ -42,50 +42,22 @@ struct Row {
   double c11 = 0, c22 = 0, c23 = 0;  // the grid's own psi = 0 coefficients (for the record)
 };
 
-struct Linear {
-  double c11, c22, c23, c13;
-};
-
-Linear sdec_linear(double a_over_b, double psi, double nu, int n) {
-  const double a = 4.25e-3, b = a / a_over_b, c = std::sqrt(a * b), creep = 1e-6;
-  const wear::Material material{80e9, nu};
-  const wear::ContactLoad load{1e4, 1e6};  // friction large enough that nothing slips
+void fit(Row& row, int n) {
   wear::ExactOptions options;
   options.nx = options.ny = n;
-  const contactgeom::Sdec patch{a, b, psi};
-  const auto fx = wear::exact_sdec(patch, {creep, 0, 0}, load, material, options);
-  const auto fy = wear::exact_sdec(patch, {0, creep, 0}, load, material, options);
-  const auto fs = wear::exact_sdec(patch, {0, 0, creep / c}, load, material, options);
-  for (const auto* s : {&fx, &fy, &fs}) {
-    if (s->status != wear::ExactStatus::converged || s->slip_elements != 0) {
-      std::cerr << "not converged or slipping at a/b " << a_over_b << " psi " << psi << ": "
-                << s->message << '\n';
-      std::exit(1);
-    }
+  const wear::SdecCoefficientFit f =
+      wear::fit_sdec_coefficients(row.a_over_b, {80e9, row.nu}, options, kPsi);
+  if (!f.clean) {
+    std::cerr << "not converged or slipping at a/b " << row.a_over_b << " nu " << row.nu << '\n';
+    std::exit(1);
   }
-  const double gc2 = material.G * c * c * creep;
-  return {-fx.forces.Fx / gc2, -fy.forces.Fy / gc2, -fs.forces.Fy / gc2, -fs.forces.Fx / gc2};
-}
-
-void fit(Row& row, int n) {
-  const Linear base = sdec_linear(row.a_over_b, 0.0, row.nu, n);
-  double k13 = 0, b11 = 0, b22 = 0, b23 = 0, s2 = 0, s4 = 0;
-  for (const double psi : kPsi) {
-    const Linear l = sdec_linear(row.a_over_b, psi, row.nu, n);
-    k13 -= l.c13 * psi;
-    b11 += (l.c11 - base.c11) * psi * psi;
-    b22 += (l.c22 - base.c22) * psi * psi;
-    b23 += (l.c23 - base.c23) * psi * psi;
-    s2 += psi * psi;
-    s4 += psi * psi * psi * psi;
-  }
-  row.k13 = k13 / s2;
-  row.b11 = b11 / s4;
-  row.b22 = b22 / s4;
-  row.b23 = b23 / s4;
-  row.c11 = base.c11;
-  row.c22 = base.c22;
-  row.c23 = base.c23;
+  row.k13 = f.k13;
+  row.b11 = f.b11;
+  row.b22 = f.b22;
+  row.b23 = f.b23;
+  row.c11 = f.at_zero.c11;
+  row.c22 = f.at_zero.c22;
+  row.c23 = f.at_zero.c23;
 }
 
 std::string fixed(double v, int digits) {
