@@ -115,6 +115,7 @@
 #include <string>
 #include <vector>
 
+#include "study_csv.hpp"
 #include "support/csv_table.hpp"
 #include "wheelwear/wear/creep_table.hpp"
 #include "wheelwear/wear/exact/steady_rolling.hpp"
@@ -122,6 +123,10 @@
 #include "wheelwear/wear/linear_theory.hpp"
 
 namespace {
+
+using wheelwear::bench::rank;
+using wheelwear::bench::split;
+using wheelwear::bench::StudyCsv;
 
 using namespace wheelwear;
 using wheelwear::testing::CsvTable;
@@ -410,93 +415,6 @@ std::vector<Solver> plotted_solvers() {
   return solvers;
 }
 
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::stringstream stream(text);
-  std::string part;
-  while (std::getline(stream, part, separator)) {
-    if (!part.empty() && part.back() == '\r') part.pop_back();
-    parts.push_back(part);
-  }
-  return parts;
-}
-
-// Position of `value` in `order`; values not in it sort last.
-std::size_t rank(const std::vector<std::string>& order, const std::string& value) {
-  return static_cast<std::size_t>(std::find(order.begin(), order.end(), value) - order.begin());
-}
-
-/// A results CSV: its header and its rows as cells. With `merge`, the rows of an earlier file
-/// at the same path whose method is not rerun are read back first; columns are matched by
-/// name, and a column the earlier file lacks takes its entry in `defaults`.
-class ResultsFile {
- public:
-  ResultsFile(std::filesystem::path path, const std::string& header, bool merge,
-              const std::set<std::string>& rerun,
-              const std::map<std::string, std::string>& defaults)
-      : path_(std::move(path)), header_(split(header, ',')) {
-    if (!merge || !std::filesystem::exists(path_)) return;
-    std::ifstream in(path_);
-    std::string line;
-    std::getline(in, line);
-    const std::vector<std::string> old_header = split(line, ',');
-    for (const std::string& name : old_header)
-      if (rank(header_, name) == header_.size())
-        throw std::runtime_error(path_.string() + ": column " + name +
-                                 " is not written by this study; rerun without --methods");
-    std::vector<std::size_t> source(header_.size());  // old column of each new one
-    for (std::size_t i = 0; i < header_.size(); ++i) {
-      source[i] = rank(old_header, header_[i]);
-      if (source[i] == old_header.size() && !defaults.contains(header_[i]))
-        throw std::runtime_error(path_.string() + ": column " + header_[i] +
-                                 " is missing; rerun without --methods");
-    }
-    while (std::getline(in, line)) {
-      const std::vector<std::string> old = split(line, ',');
-      if (old.size() != old_header.size())
-        throw std::runtime_error(path_.string() + ": row '" + line + "' has " +
-                                 std::to_string(old.size()) + " cells, the header " +
-                                 std::to_string(old_header.size()));
-      if (rerun.contains(old[rank(old_header, "method")])) continue;
-      std::vector<std::string> row(header_.size());
-      for (std::size_t i = 0; i < header_.size(); ++i)
-        row[i] = source[i] < old.size() ? old[source[i]] : defaults.at(header_[i]);
-      rows_.push_back(std::move(row));
-    }
-    std::cerr << path_.string() << ": kept " << rows_.size() << " rows of other methods\n";
-  }
-
-  void add(const std::string& line) {  // one row without its newline
-    rows_.push_back(split(line, ','));
-  }
-
-  /// Writes header and rows, stably sorted by the rank of each column of `order` in its list.
-  void write(const std::vector<std::pair<std::string, std::vector<std::string>>>& order) {
-    const auto key = [&](const std::vector<std::string>& row) {
-      std::vector<std::size_t> ranks;
-      for (const auto& [column, values] : order)
-        ranks.push_back(rank(values, row[column_(column)]));
-      return ranks;
-    };
-    std::stable_sort(rows_.begin(), rows_.end(),
-                     [&](const auto& p, const auto& q) { return key(p) < key(q); });
-    std::ofstream out(path_);
-    const auto write_cells = [&](const std::vector<std::string>& cells) {
-      for (std::size_t i = 0; i < cells.size(); ++i) out << (i ? "," : "") << cells[i];
-      out << "\n";
-    };
-    write_cells(header_);
-    for (const auto& row : rows_) write_cells(row);
-    if (!out) throw std::runtime_error("cannot write " + path_.string());
-  }
-
- private:
-  std::size_t column_(const std::string& name) const { return rank(header_, name); }
-  std::filesystem::path path_;
-  std::vector<std::string> header_;
-  std::vector<std::vector<std::string>> rows_;
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -566,10 +484,10 @@ int main(int argc, char** argv) {
   for (const Solver& s : solvers) method_order.push_back(s.method);
   const std::map<std::string, std::string> defaults = {{"skipped", "0"}};
   try {
-    ResultsFile csv(dir / "runtime_error.csv",
-                    "method,scheme,bound,n,cells,case_set,calls,time_per_call_s,err_contact,"
-                    "err_converged,err_contact_fx,err_contact_fy,skipped",
-                    merge, only, defaults);
+    StudyCsv csv(dir / "runtime_error.csv",
+                 "method,scheme,bound,n,cells,case_set,calls,time_per_call_s,err_contact,"
+                 "err_converged,err_contact_fx,err_contact_fy,skipped",
+                 merge, only, defaults);
     char line[512];
     for (const CaseSet& full_set : sets) {
       for (const Solver& s : solvers) {
@@ -626,11 +544,11 @@ int main(int argc, char** argv) {
       for (const Solver& s : fastsim_solvers(bound, true))
         if (selected(s)) fits.emplace_back(bound, s);
     if (fits.empty()) return 0;
-    ResultsFile fit(dir / "grid_error_fit.csv", "method,scheme,bound,n,err_converged", merge, only,
-                    defaults);
-    ResultsFile constants(dir / "grid_error_constants.csv",
-                          "method,scheme,bound,order,n_min,C,C_n100_200,n_at_max", merge, only,
-                          defaults);
+    StudyCsv fit(dir / "grid_error_fit.csv", "method,scheme,bound,n,err_converged", merge, only,
+                 defaults);
+    StudyCsv constants(dir / "grid_error_constants.csv",
+                       "method,scheme,bound,order,n_min,C,C_n100_200,n_at_max", merge, only,
+                       defaults);
     const CaseSet& spin = sets.front();
     for (const auto& [bound, s] : fits) {
       double spread = 0;
