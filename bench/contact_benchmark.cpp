@@ -20,10 +20,12 @@ const contactgeom::WheelRailPair& pair() {
   return p;
 }
 
-// One position per lateral shift (mm): tread (0, 4) and flange root (-? : +5.5 towards flange).
-void BM_ContactGeometry(benchmark::State& state) {
+// One wheel position at lateral shift range(0) (0.1 mm: tread at 0 and +-4 mm, flange root at
+// 5.5 mm) with the wheel rolled by `roll`.
+void contact_geometry(benchmark::State& state, double roll) {
   contactgeom::WheelsetPose pose;
   pose.dy = static_cast<double>(state.range(0)) * 1e-4;
+  pose.roll = roll;
   std::size_t patches = 0;
   for (auto _ : state) {
     const auto contact = contactgeom::solve_wheel_rail(pair(), pose, 55e3);
@@ -32,21 +34,16 @@ void BM_ContactGeometry(benchmark::State& state) {
   }
   state.counters["patches"] = static_cast<double>(patches);
 }
+
+void BM_ContactGeometry(benchmark::State& state) {
+  contact_geometry(state, 0.0);
+}
 BENCHMARK(BM_ContactGeometry)->Arg(0)->Arg(40)->Arg(-40)->Arg(55)->Unit(benchmark::kMicrosecond);
 
 // The same with the wheel rolled by -0.5 mrad (what a wheelset 3 mm off centre has): the gap
 // maps each rail point onto the unrolled wheel profile.
 void BM_ContactGeometryRolled(benchmark::State& state) {
-  contactgeom::WheelsetPose pose;
-  pose.dy = static_cast<double>(state.range(0)) * 1e-4;
-  pose.roll = -0.5e-3;
-  std::size_t patches = 0;
-  for (auto _ : state) {
-    const auto contact = contactgeom::solve_wheel_rail(pair(), pose, 55e3);
-    patches = contact.patches.size();
-    benchmark::DoNotOptimize(contact.vertical_force);
-  }
-  state.counters["patches"] = static_cast<double>(patches);
+  contact_geometry(state, -0.5e-3);
 }
 BENCHMARK(BM_ContactGeometryRolled)->Arg(0)->Arg(40)->Arg(55)->Unit(benchmark::kMicrosecond);
 

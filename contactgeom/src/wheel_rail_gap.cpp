@@ -237,28 +237,25 @@ void WheelRailGap::sample(const CoarseScan& coarse, double margin, GapSamples& g
     const bool low_end = i == 0, high_end = end == n - 1;
     ++window;
     const std::size_t first = g.h.size();
-    for (double y = from; y <= to; y += g.dy) {
-      const auto v = walked_gap(y);
-      if (!v) continue;
-      g.y.push_back(y);
-      g.h.push_back(v->first);
-      g.z_wheel.push_back(v->second.z);
-      g.window.push_back(window);
-    }
-    if (!close_walks()) {
-      // A walked stretch did not stand: this window again, point by point.
-      g.y.resize(first);
-      g.h.resize(first);
-      g.z_wheel.resize(first);
-      g.window.resize(first);
+    // The window's samples, each gap found by `gap_at` (walking from the last, or afresh).
+    const auto sample = [&](auto gap_at) {
       for (double y = from; y <= to; y += g.dy) {
-        const auto v = gap(y);
+        const auto v = gap_at(y);
         if (!v) continue;
         g.y.push_back(y);
         g.h.push_back(v->first);
         g.z_wheel.push_back(v->second.z);
         g.window.push_back(window);
       }
+    };
+    sample([&](double y) { return walked_gap(y); });
+    if (!close_walks()) {
+      // A walked stretch did not stand: this window again, point by point.
+      g.y.resize(first);
+      g.h.resize(first);
+      g.z_wheel.resize(first);
+      g.window.resize(first);
+      sample([&](double y) { return gap(y); });
     }
     for (std::size_t j = first; j < g.h.size(); ++j) g.h_min = std::min(g.h_min, g.h[j]);
     // A contact that reaches these samples is cut off by the end of a profile.
