@@ -1,4 +1,4 @@
-// The built-in book of creep-force tables (wear::creep_table_forces): time of one call, goal
+// The built-in book of creep-force tables (tangential::creep_table_forces): time of one call, goal
 // <= 2 us. The calls cycle through a fixed set of 200 inputs inside the table's range: a/b
 // from 0.3 to 4, psi of both signs, creepages in eight directions (longitudinal, lateral, spin
 // and mixtures, with both signs of vx) at normalised magnitudes r = |(xi, eta, chi)| from 0.05
@@ -13,31 +13,31 @@
 #include <cmath>
 #include <vector>
 
-#include "wheelwear/wear/creep_table.hpp"
+#include "wheelwear/tangential/creep_table.hpp"
 
 namespace {
 
 using namespace wheelwear;
 
-const wear::Material kSteel{80e9, 0.25};
+const tangential::Material kSteel{80e9, 0.25};
 
 struct TableInput {
   contactgeom::Sdec patch;
-  wear::Creepages creepages;
-  wear::ContactLoad load;
+  tangential::Creepages creepages;
+  tangential::ContactLoad load;
 };
 
 // The inputs, each direction scaled to its target magnitude r and the shapes clamped into the
 // table's range, so the set stays valid when the table is regenerated with another range.
 // Empty without a built-in table.
 std::vector<TableInput> table_inputs() {
-  const wear::CreepTableRange range = wear::creep_table_range();
+  const tangential::CreepTableRange range = tangential::creep_table_range();
   std::vector<TableInput> inputs;
   if (range.r_max <= 0.0) return inputs;
-  const wear::ContactLoad load{40e3, 0.35};
+  const tangential::ContactLoad load{40e3, 0.35};
   const double c = 5e-3;  // sqrt(ab) [m], a wheel-tread patch
   // Directions (vx [-], vy [-], phi [1/m]) before scaling; phi c is comparable with vx, vy.
-  const std::array<wear::Creepages, 8> directions = {{{1, 0, 0},
+  const std::array<tangential::Creepages, 8> directions = {{{1, 0, 0},
                                                       {0, 1, 0},
                                                       {0, 0, 1 / c},
                                                       {1, 1, 0},
@@ -52,10 +52,10 @@ std::vector<TableInput> table_inputs() {
     for (const double psi : {-0.7, -0.3, 0.0, 0.4, 0.75}) {
       const contactgeom::Sdec patch{c * std::sqrt(a_over_b), c / std::sqrt(a_over_b),
                                     std::clamp(psi, -range.psi_max, range.psi_max)};
-      for (const wear::Creepages& d : directions) {
+      for (const tangential::Creepages& d : directions) {
         const double target = std::min(magnitudes[k++ % magnitudes.size()], 0.9 * range.r_max);
         // r is linear in the creepages: scale the direction onto the target.
-        const double s = target / wear::creep_table_magnitude(patch, d, load, kSteel);
+        const double s = target / tangential::creep_table_magnitude(patch, d, load, kSteel);
         inputs.push_back({patch, {s * d.vx, s * d.vy, s * d.phi}, load});
       }
     }
@@ -76,7 +76,7 @@ void BM_CreepTable(benchmark::State& state) {
     return;
   }
   for (const TableInput& in : inputs) {
-    if (!wear::creep_table_covers(in.patch, in.creepages, in.load, kSteel)) {
+    if (!tangential::creep_table_covers(in.patch, in.creepages, in.load, kSteel)) {
       state.SkipWithError("an input is outside the creep table's range");
       return;
     }
@@ -85,7 +85,7 @@ void BM_CreepTable(benchmark::State& state) {
   for (auto _ : state) {
     const TableInput& in = inputs[k];
     k = k + 1 == inputs.size() ? 0 : k + 1;
-    benchmark::DoNotOptimize(wear::creep_table_forces(in.patch, in.creepages, in.load, kSteel));
+    benchmark::DoNotOptimize(tangential::creep_table_forces(in.patch, in.creepages, in.load, kSteel));
   }
   state.counters["inputs"] = static_cast<double>(inputs.size());
 }

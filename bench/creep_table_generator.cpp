@@ -41,8 +41,8 @@
 #include <thread>
 #include <vector>
 
-#include "wheelwear/wear/exact/steady_rolling.hpp"
-#include "wheelwear/wear/kalker_coefficients.hpp"
+#include "wheelwear/tangential/exact/steady_rolling.hpp"
+#include "wheelwear/tangential/kalker_coefficients.hpp"
 
 namespace {
 
@@ -191,7 +191,7 @@ int main(int argc, char** argv) {
     std::snprintf(name, sizeof name, "nu_%.2f", nu);
     std::vector<double> c11(gs.size()), c22(gs.size()), c23(gs.size());
     for (std::size_t k = 0; k < gs.size(); ++k) {
-      const wear::KalkerCoefficients kc = wear::kalker_coefficients(gs[k], nu);
+      const tangential::KalkerCoefficients kc = tangential::kalker_coefficients(gs[k], nu);
       c11[k] = kc.c11;
       c22[k] = kc.c22;
       c23[k] = kc.c23;
@@ -203,10 +203,10 @@ int main(int argc, char** argv) {
     std::vector<std::thread> pool;
     for (unsigned t = 0; t < threads; ++t) {
       pool.emplace_back([&] {
-        wear::ExactOptions options;
+        tangential::ExactOptions options;
         options.nx = options.ny = n;
-        const wear::Material material{80e9, nu};
-        const wear::ContactLoad load{1e4, 0.3};
+        const tangential::Material material{80e9, nu};
+        const tangential::ContactLoad load{1e4, 0.3};
         const double mu_n = load.mu * load.N;
         for (std::size_t i = next++; i < total; i = next++) {
           std::size_t rest = i;
@@ -228,10 +228,10 @@ int main(int argc, char** argv) {
           const double eta = r * std::sin(th) * std::sin(be);
           const double chi = r * std::cos(th);
           const double gc2 = material.G * c * c;
-          const wear::Creepages v{xi * mu_n / (gc2 * c11[ig]), eta * mu_n / (gc2 * c22[ig]),
+          const tangential::Creepages v{xi * mu_n / (gc2 * c11[ig]), eta * mu_n / (gc2 * c22[ig]),
                                   chi * mu_n / (spin_scale * gc2 * c * c23[ig])};
-          const auto s = wear::exact_sdec({a, b, psis[ip]}, v, load, material, options);
-          if (s.status != wear::ExactStatus::converged) ++unconverged;
+          const auto s = tangential::exact_sdec({a, b, psis[ip]}, v, load, material, options);
+          if (s.status != tangential::ExactStatus::converged) ++unconverged;
           fx[i] = s.forces.Fx / mu_n;
           fy[i] = s.forces.Fy / mu_n;
           mz[i] = s.forces.Mz / (mu_n * c);

@@ -15,22 +15,22 @@
 #include "wheelwear/contactgeom/wheel_rail.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
-#include "wheelwear/wear/exact/steady_rolling.hpp"
-#include "wheelwear/wear/exact/wheel_rail_exact.hpp"
+#include "wheelwear/tangential/exact/steady_rolling.hpp"
+#include "wheelwear/tangential/exact/wheel_rail_exact.hpp"
 
 namespace {
 
 using namespace wheelwear;
 
 const contactgeom::Sdec kPatch{4.25e-3, 4.25e-3, 0.6};
-const wear::Material kSteel{80e9, 0.25};
+const tangential::Material kSteel{80e9, 0.25};
 
-void run(benchmark::State& state, const wear::Creepages& v, const wear::ContactLoad& load) {
-  wear::ExactOptions options;
+void run(benchmark::State& state, const tangential::Creepages& v, const tangential::ContactLoad& load) {
+  tangential::ExactOptions options;
   options.nx = options.ny = static_cast<int>(state.range(0));
   int iterations = 0, contact = 0;
   for (auto _ : state) {
-    const wear::ExactSolution s = wear::exact_sdec(kPatch, v, load, kSteel, options);
+    const tangential::ExactSolution s = tangential::exact_sdec(kPatch, v, load, kSteel, options);
     benchmark::DoNotOptimize(s.forces);
     iterations = s.iterations;
     contact = s.contact_elements;
@@ -99,11 +99,11 @@ const WheelRailCase& wheel_rail_case() {
 
 void BM_WheelRailExact(benchmark::State& state) {
   const WheelRailCase& c = wheel_rail_case();
-  wear::WheelRailExactOptions options;
+  tangential::WheelRailExactOptions options;
   options.nx = options.ny = static_cast<int>(state.range(0));
-  wear::WheelRailExactSolution s;
+  tangential::WheelRailExactSolution s;
   for (auto _ : state) {
-    s = wear::wheel_rail_exact(c.pair, c.pose, c.patch, {1e-3, 0.0, -0.1}, 0.35, options);
+    s = tangential::wheel_rail_exact(c.pair, c.pose, c.patch, {1e-3, 0.0, -0.1}, 0.35, options);
     benchmark::DoNotOptimize(s.rolling.forces);
   }
   state.counters["elements"] = static_cast<double>(options.nx * options.ny);
@@ -119,9 +119,9 @@ BENCHMARK(BM_WheelRailExact)
 
 void BM_WheelRailExactGap(benchmark::State& state) {
   const WheelRailCase& c = wheel_rail_case();
-  wear::WheelRailExactOptions options;
+  tangential::WheelRailExactOptions options;
   options.nx = options.ny = static_cast<int>(state.range(0));
-  const wear::ElementGrid grid = wear::wheel_rail_exact_grid(c.patch, 0.0, options);
+  const tangential::ElementGrid grid = tangential::wheel_rail_exact_grid(c.patch, 0.0, options);
   const double y_O = -c.patch.y_rail, cos_delta = std::cos(c.patch.contact_angle);
   for (auto _ : state) {
     double sum = 0.0;

@@ -7,23 +7,23 @@
 #include <numbers>
 #include <vector>
 
-#include "wheelwear/wear/fastsim.hpp"
-#include "wheelwear/wear/sdec_coefficients.hpp"
+#include "wheelwear/tangential/fastsim.hpp"
+#include "wheelwear/tangential/sdec_coefficients.hpp"
 
 namespace {
 
 using namespace wheelwear;
 
 const contactgeom::Sdec kPatch{4.25e-3, 4.25e-3, 0.6};
-const wear::Creepages kSpin{0.0, 0.0, 1.0};
-const wear::ContactLoad kLoad{37830.0, 0.35};
-const wear::Material kSteel{80e9, 0.25};
+const tangential::Creepages kSpin{0.0, 0.0, 1.0};
+const tangential::ContactLoad kLoad{37830.0, 0.35};
+const tangential::Material kSteel{80e9, 0.25};
 
 void BM_FastsimSdec(benchmark::State& state) {
-  wear::FastsimOptions options;
+  tangential::FastsimOptions options;
   options.nx = options.ny = static_cast<int>(state.range(0));
   for (auto _ : state) {
-    auto solution = wear::fastsim(wear::FastsimMethod::sdec, kPatch, kSpin, kLoad, kSteel, options);
+    auto solution = tangential::fastsim(tangential::FastsimMethod::sdec, kPatch, kSpin, kLoad, kSteel, options);
     benchmark::DoNotOptimize(solution.forces);
   }
   state.counters["cells"] = static_cast<double>(options.nx * options.ny);
@@ -32,11 +32,11 @@ void BM_FastsimSdec(benchmark::State& state) {
 BENCHMARK(BM_FastsimSdec)->Arg(20)->Arg(50)->Arg(100);
 
 void BM_FastsimSdecSecondOrder(benchmark::State& state) {
-  wear::FastsimOptions options;
+  tangential::FastsimOptions options;
   options.nx = options.ny = static_cast<int>(state.range(0));
-  options.scheme = wear::FastsimScheme::second_order;
+  options.scheme = tangential::FastsimScheme::second_order;
   for (auto _ : state) {
-    auto solution = wear::fastsim(wear::FastsimMethod::sdec, kPatch, kSpin, kLoad, kSteel, options);
+    auto solution = tangential::fastsim(tangential::FastsimMethod::sdec, kPatch, kSpin, kLoad, kSteel, options);
     benchmark::DoNotOptimize(solution.forces);
   }
   state.SetItemsProcessed(state.iterations() * options.nx * options.ny);
@@ -47,7 +47,7 @@ BENCHMARK(BM_FastsimSdecSecondOrder)->Arg(20)->Arg(50);
 // with the square root and division of the saturation test in every cell.
 double scalar_fastsim_sdec_fx(int n) {
   const double a = kPatch.a, b = kPatch.b, psi = kPatch.psi, c = std::sqrt(a * b);
-  const auto k = wear::sdec_coefficients(kPatch, kSteel.nu);
+  const auto k = tangential::sdec_coefficients(kPatch, kSteel.nu);
   const double G = kSteel.G;
   const double l11 = 8 * a / (3 * G * k.c11s), l22 = 8 * a / (3 * G * k.c22s);
   const double l23 = std::numbers::pi * a * a / (4 * G * c * k.c23s), l13 = 2 * c / (G * k.row.k13);
@@ -84,11 +84,11 @@ void BM_FastsimSdecScalarLoop(benchmark::State& state) {
 BENCHMARK(BM_FastsimSdecScalarLoop)->Arg(20)->Arg(50)->Arg(100);
 
 void BM_FastsimSdecWithFields(benchmark::State& state) {
-  wear::FastsimOptions options;
+  tangential::FastsimOptions options;
   options.nx = options.ny = static_cast<int>(state.range(0));
   options.cell_fields = true;
   for (auto _ : state) {
-    auto solution = wear::fastsim(wear::FastsimMethod::sdec, kPatch, kSpin, kLoad, kSteel, options);
+    auto solution = tangential::fastsim(tangential::FastsimMethod::sdec, kPatch, kSpin, kLoad, kSteel, options);
     benchmark::DoNotOptimize(solution.frictional_work);
   }
 }
@@ -97,12 +97,12 @@ BENCHMARK(BM_FastsimSdecWithFields)->Arg(20)->Arg(50);
 // The same with the solution's storage reused from call to call, as a loop over contacts does:
 // no allocation per call.
 void BM_FastsimSdecWithFieldsReused(benchmark::State& state) {
-  wear::FastsimOptions options;
+  tangential::FastsimOptions options;
   options.nx = options.ny = static_cast<int>(state.range(0));
   options.cell_fields = true;
-  wear::TangentialSolution solution;
+  tangential::TangentialSolution solution;
   for (auto _ : state) {
-    wear::fastsim(wear::FastsimMethod::sdec, kPatch, kSpin, kLoad, kSteel, options, solution);
+    tangential::fastsim(tangential::FastsimMethod::sdec, kPatch, kSpin, kLoad, kSteel, options, solution);
     benchmark::DoNotOptimize(solution.frictional_work);
   }
   state.SetItemsProcessed(state.iterations() * options.nx * options.ny);

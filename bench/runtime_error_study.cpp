@@ -8,10 +8,10 @@
 //   the error against Kalker's exact theory (CONTACT) and against the method's own converged
 //   answer. Columns:
 //     method          the --method name of `wheelwear creep`; exact: Kalker's exact theory
-//                     solved by the library (wear::exact_sdec, the SDEC pressure of Liu, Fu &
+//                     solved by the library (tangential::exact_sdec, the SDEC pressure of Liu, Fu &
 //                     Bruni 2022, Eq. 4, prescribed as in CONTACT's reference runs; `wheelwear
 //                     creep --method exact`); table: the built-in book of exact-theory
-//                     tables (wear::creep_table_forces)
+//                     tables (tangential::creep_table_forces)
 //     scheme          kalker | second-order (FASTSIM marching); none for the other methods
 //     bound           parabolic (Eq. 18 of Liu, Fu & Bruni 2022) | none (the non-FASTSIM
 //                     methods: exact applies Coulomb's |p| <= mu p_n itself)
@@ -117,10 +117,10 @@
 
 #include "study_csv.hpp"
 #include "support/csv_table.hpp"
-#include "wheelwear/wear/creep_table.hpp"
-#include "wheelwear/wear/exact/steady_rolling.hpp"
-#include "wheelwear/wear/fastsim.hpp"
-#include "wheelwear/wear/linear_theory.hpp"
+#include "wheelwear/tangential/creep_table.hpp"
+#include "wheelwear/tangential/exact/steady_rolling.hpp"
+#include "wheelwear/tangential/fastsim.hpp"
+#include "wheelwear/tangential/linear_theory.hpp"
 
 namespace {
 
@@ -132,13 +132,13 @@ using namespace wheelwear;
 using wheelwear::testing::CsvTable;
 using wheelwear::testing::test_data;
 
-const wear::Material kSteel{80e9, 0.25};  // CONTACT: GG = 80 000 N/mm^2, POISS = 0.25
+const tangential::Material kSteel{80e9, 0.25};  // CONTACT: GG = 80 000 N/mm^2, POISS = 0.25
 
 /// One solver call with CONTACT's answer.
 struct Case {
   contactgeom::Sdec patch;
-  wear::Creepages creepages;
-  wear::ContactLoad load;
+  tangential::Creepages creepages;
+  tangential::ContactLoad load;
   double fx_ref = 0, fy_ref = 0;  ///< CONTACT's forces [N]
 };
 
@@ -176,7 +176,7 @@ CaseSet linear_cases() {
   for (const auto& row : table.rows()) {
     const contactgeom::Sdec patch{row.number("a_mm") * 1e-3, row.number("b_mm") * 1e-3,
                                   row.number("psi")};
-    const wear::ContactLoad load{row.number("N_N"), 0.35};
+    const tangential::ContactLoad load{row.number("N_N"), 0.35};
     const double c = std::sqrt(patch.a * patch.b), g = kSteel.G;
     const double dv = row.number("dvx_dvy"), dphi = row.number("dphi_per_m");
     const double c2 = g * c * c, c3 = g * c * c * c;
@@ -210,7 +210,7 @@ double case_error(Measure measure, const Case& c, double fx, double fy, double f
 enum class Kind {
   closed_form,  ///< linear-sdec, she-sdec: grid-free formulas
   fastsim,      ///< a FASTSIM method on an n x n grid
-  exact,        ///< Kalker's exact theory on an n x n grid (wear::exact_sdec)
+  exact,        ///< Kalker's exact theory on an n x n grid (tangential::exact_sdec)
   table,        ///< the built-in book of exact-theory tables (grid-free)
 };
 
@@ -220,24 +220,24 @@ struct Solver {
   std::string scheme;  // "kalker", "second-order", "none"
   std::string bound;   // "parabolic", "semi-elliptic", "none"
   Kind kind = Kind::fastsim;
-  wear::FastsimMethod fastsim_method = wear::FastsimMethod::sdec;
-  wear::FastsimScheme fastsim_scheme = wear::FastsimScheme::kalker;
-  wear::TractionBound traction_bound = wear::TractionBound::parabolic;
+  tangential::FastsimMethod fastsim_method = tangential::FastsimMethod::sdec;
+  tangential::FastsimScheme fastsim_scheme = tangential::FastsimScheme::kalker;
+  tangential::TractionBound traction_bound = tangential::TractionBound::parabolic;
   bool grid() const { return kind == Kind::fastsim || kind == Kind::exact; }
   // Order of convergence in n: Kalker's scheme is first order. The second-order scheme is
   // second order with the parabolic bound; with the semi-elliptic bound, whose slope is
   // unbounded at the leading and trailing edges, it reaches only 1.5 (measured: e(n) n^2 grows
   // about 2 times from n = 200 to 1000, e(n) n^1.5 changes by about 10 %).
   double order() const {
-    if (fastsim_scheme == wear::FastsimScheme::kalker) return 1.0;
-    return traction_bound == wear::TractionBound::parabolic ? 2.0 : 1.5;
+    if (fastsim_scheme == tangential::FastsimScheme::kalker) return 1.0;
+    return traction_bound == tangential::TractionBound::parabolic ? 2.0 : 1.5;
   }
   // The smallest grid the error model is fitted from: below it the second-order scheme is not
   // yet in its asymptotic range (its e(n) n^p peaks at n = 6 at up to 10 times its value at
   // n = 100 ... 1000), and a model fitted there would ask for needlessly fine grids.
   int min_fit_n() const {
-    if (fastsim_scheme == wear::FastsimScheme::kalker) return 5;
-    return traction_bound == wear::TractionBound::parabolic ? 10 : 20;
+    if (fastsim_scheme == tangential::FastsimScheme::kalker) return 5;
+    return traction_bound == tangential::TractionBound::parabolic ? 10 : 20;
   }
 };
 
@@ -248,38 +248,38 @@ struct Forces {
 /// Calls the solver on every case; `solution` is reused between calls (FASTSIM). Returns the
 /// number of exact-theory solves that stopped at max_iterations (their last iterate is used).
 int solve_all(const Solver& s, int n, const CaseSet& set, std::vector<Forces>& out,
-              wear::TangentialSolution& solution) {
+              tangential::TangentialSolution& solution) {
   out.resize(set.cases.size());
-  wear::FastsimOptions options;
+  tangential::FastsimOptions options;
   options.nx = options.ny = std::max(n, 1);
   options.scheme = s.fastsim_scheme;
   options.bound = s.traction_bound;
-  wear::ExactOptions exact_options;
+  tangential::ExactOptions exact_options;
   exact_options.nx = exact_options.ny = std::max(n, 2);
   int not_converged = 0;
   for (std::size_t k = 0; k < set.cases.size(); ++k) {
     const Case& c = set.cases[k];
     switch (s.kind) {
       case Kind::closed_form: {
-        const wear::CreepForces f =
-            s.method == "linear-sdec" ? wear::linear_sdec_forces(c.patch, c.creepages, kSteel)
-                                      : wear::she_sdec_forces(c.patch, c.creepages, kSteel, c.load);
+        const tangential::CreepForces f =
+            s.method == "linear-sdec" ? tangential::linear_sdec_forces(c.patch, c.creepages, kSteel)
+                                      : tangential::she_sdec_forces(c.patch, c.creepages, kSteel, c.load);
         out[k] = {f.Fx, f.Fy};
         break;
       }
       case Kind::fastsim:
-        wear::fastsim(s.fastsim_method, c.patch, c.creepages, c.load, kSteel, options, solution);
+        tangential::fastsim(s.fastsim_method, c.patch, c.creepages, c.load, kSteel, options, solution);
         out[k] = {solution.forces.Fx, solution.forces.Fy};
         break;
       case Kind::exact: {
-        const wear::ExactSolution e =
-            wear::exact_sdec(c.patch, c.creepages, c.load, kSteel, exact_options);
-        if (e.status != wear::ExactStatus::converged) ++not_converged;
+        const tangential::ExactSolution e =
+            tangential::exact_sdec(c.patch, c.creepages, c.load, kSteel, exact_options);
+        if (e.status != tangential::ExactStatus::converged) ++not_converged;
         out[k] = {e.forces.Fx, e.forces.Fy};
         break;
       }
       case Kind::table: {
-        const wear::CreepForces f = wear::creep_table_forces(c.patch, c.creepages, c.load, kSteel);
+        const tangential::CreepForces f = tangential::creep_table_forces(c.patch, c.creepages, c.load, kSteel);
         out[k] = {f.Fx, f.Fy};
         break;
       }
@@ -296,7 +296,7 @@ CaseSet table_cases(const CaseSet& set, int& skipped) {
   skipped = 0;
   for (const Case& c : set.cases) {
     std::string why;
-    if (wear::creep_table_covers(c.patch, c.creepages, c.load, kSteel, &why)) {
+    if (tangential::creep_table_covers(c.patch, c.creepages, c.load, kSteel, &why)) {
       covered.cases.push_back(c);
     } else {
       ++skipped;
@@ -323,7 +323,7 @@ double time_per_call(const Solver& s, int n, const CaseSet& set) {
   constexpr int kRepetitions = 15, kMinRepetitions = 3;
   constexpr double kMinRepetitionSeconds = 3e-3, kBudgetSeconds = 10.0;
   std::vector<Forces> out;
-  wear::TangentialSolution solution;
+  tangential::TangentialSolution solution;
   solve_all(s, n, set, out, solution);  // warm-up: the grid storage is allocated here
   double best = 1e300, spent = 0;
   volatile double sink = 0;
@@ -349,7 +349,7 @@ double time_per_call(const Solver& s, int n, const CaseSet& set) {
 /// n_fine/4 and n_fine/2.
 std::vector<Forces> converged(const Solver& s, const CaseSet& set, int n_fine, double& spread) {
   std::vector<Forces> f1, f2, f4;
-  wear::TangentialSolution solution;
+  tangential::TangentialSolution solution;
   solve_all(s, n_fine / 4, set, f4, solution);
   solve_all(s, n_fine / 2, set, f2, solution);
   solve_all(s, n_fine, set, f1, solution);
@@ -385,17 +385,17 @@ Errors errors(const CaseSet& set, const std::vector<Forces>& f, const std::vecto
   return e;
 }
 
-std::vector<Solver> fastsim_solvers(wear::TractionBound bound, bool every_scheme) {
+std::vector<Solver> fastsim_solvers(tangential::TractionBound bound, bool every_scheme) {
   const std::string bound_name =
-      bound == wear::TractionBound::parabolic ? "parabolic" : "semi-elliptic";
+      bound == tangential::TractionBound::parabolic ? "parabolic" : "semi-elliptic";
   std::vector<Solver> solvers;
   for (const auto method :
-       {wear::FastsimMethod::elliptic, wear::FastsimMethod::eqe, wear::FastsimMethod::eqe_shifted,
-        wear::FastsimMethod::eql, wear::FastsimMethod::sdec}) {
-    for (const auto scheme : {wear::FastsimScheme::kalker, wear::FastsimScheme::second_order}) {
-      const bool second = scheme == wear::FastsimScheme::second_order;
-      if (second && !every_scheme && method != wear::FastsimMethod::sdec) continue;
-      solvers.push_back({std::string(wear::method_name(method)), second ? "second-order" : "kalker",
+       {tangential::FastsimMethod::elliptic, tangential::FastsimMethod::eqe, tangential::FastsimMethod::eqe_shifted,
+        tangential::FastsimMethod::eql, tangential::FastsimMethod::sdec}) {
+    for (const auto scheme : {tangential::FastsimScheme::kalker, tangential::FastsimScheme::second_order}) {
+      const bool second = scheme == tangential::FastsimScheme::second_order;
+      if (second && !every_scheme && method != tangential::FastsimMethod::sdec) continue;
+      solvers.push_back({std::string(tangential::method_name(method)), second ? "second-order" : "kalker",
                          bound_name, Kind::fastsim, method, scheme, bound});
     }
   }
@@ -408,7 +408,7 @@ std::vector<Solver> plotted_solvers() {
       {"linear-sdec", "none", "none", Kind::closed_form},
       {"she-sdec", "none", "none", Kind::closed_form},
   };
-  for (const Solver& s : fastsim_solvers(wear::TractionBound::parabolic, false))
+  for (const Solver& s : fastsim_solvers(tangential::TractionBound::parabolic, false))
     solvers.push_back(s);
   solvers.push_back({"exact", "none", "none", Kind::exact});
   solvers.push_back({"table", "none", "none", Kind::table});
@@ -470,7 +470,7 @@ int main(int argc, char** argv) {
   const std::vector<Solver> solvers = plotted_solvers();
 
   if (!merge || only.contains("table")) {
-    const wear::CreepTableRange range = wear::creep_table_range();
+    const tangential::CreepTableRange range = tangential::creep_table_range();
     std::fprintf(stderr,
                  "table: nu %g ... %g, a/b %g ... %g, |psi| <= %g, r <= %g, exact solver on "
                  "%d x %d; the reference cases have nu = %g\n",
@@ -508,7 +508,7 @@ int main(int argc, char** argv) {
               s.method.c_str(), s.scheme.c_str(), set.name.c_str(), spread, n_fine / 2, n_fine,
               n_fine / 4, n_fine / 2);
         } else if (s.kind == Kind::exact) {
-          wear::TangentialSolution unused;
+          tangential::TangentialSolution unused;
           const int failed = solve_all(s, n_exact_reference, set, conv, unused);
           std::fprintf(stderr, "%-20s %-13s %-10s reference answer: %d x %d (%d not converged)\n",
                        s.method.c_str(), s.scheme.c_str(), set.name.c_str(), n_exact_reference,
@@ -519,7 +519,7 @@ int main(int argc, char** argv) {
                                     : (s.kind == Kind::exact ? exact_grids : std::vector<int>{0});
         for (const int n : grids) {
           std::vector<Forces> f;
-          wear::TangentialSolution solution;
+          tangential::TangentialSolution solution;
           const int failed = solve_all(s, n, set, f, solution);
           if (failed > 0)
             std::fprintf(stderr, "%s n = %d %s: %d solves not converged (last iterate used)\n",
@@ -539,8 +539,8 @@ int main(int argc, char** argv) {
 
     // Part 2: the error model of every FASTSIM method, scheme and bound (pure spin, untimed);
     // with --methods only for the FASTSIM methods listed, and not at all when there is none.
-    std::vector<std::pair<wear::TractionBound, Solver>> fits;
-    for (const auto bound : {wear::TractionBound::parabolic, wear::TractionBound::semi_elliptic})
+    std::vector<std::pair<tangential::TractionBound, Solver>> fits;
+    for (const auto bound : {tangential::TractionBound::parabolic, tangential::TractionBound::semi_elliptic})
       for (const Solver& s : fastsim_solvers(bound, true))
         if (selected(s)) fits.emplace_back(bound, s);
     if (fits.empty()) return 0;
@@ -558,7 +558,7 @@ int main(int argc, char** argv) {
       double c_all = 0, c_fine = 0;
       int n_at_max = 0;
       std::vector<Forces> f;
-      wear::TangentialSolution solution;
+      tangential::TangentialSolution solution;
       for (const int n : fit_grids) {
         solve_all(s, n, spin, f, solution);
         const double e = errors(spin, f, &conv).converged;

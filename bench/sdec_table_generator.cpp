@@ -26,7 +26,7 @@
 #include <thread>
 #include <vector>
 
-#include "wheelwear/wear/exact/sdec_fit.hpp"
+#include "wheelwear/tangential/exact/sdec_fit.hpp"
 
 namespace {
 
@@ -43,10 +43,10 @@ struct Row {
 };
 
 void fit(Row& row, int n) {
-  wear::ExactOptions options;
+  tangential::ExactOptions options;
   options.nx = options.ny = n;
-  const wear::SdecCoefficientFit f =
-      wear::fit_sdec_coefficients(row.a_over_b, {80e9, row.nu}, options, kPsi);
+  const tangential::SdecCoefficientFit f =
+      tangential::fit_sdec_coefficients(row.a_over_b, {80e9, row.nu}, options, kPsi);
   if (!f.clean) {
     std::cerr << "not converged or slipping at a/b " << row.a_over_b << " nu " << row.nu << '\n';
     std::exit(1);

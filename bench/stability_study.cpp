@@ -27,6 +27,7 @@
 namespace {
 
 using namespace wheelwear::wear;
+using namespace wheelwear::tangential;
 
 struct Row {
   stability::Case c;

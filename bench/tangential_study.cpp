@@ -30,7 +30,7 @@
 #include <vector>
 
 #include "wheelwear/pipeline/collective_wear.hpp"
-#include "wheelwear/pipeline/profile_source.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
 
 namespace {
 
@@ -46,7 +46,7 @@ Outcome evaluate(pipeline::Scene scene, pipeline::TangentialMethod method, const
                  int repeats) {
   scene.tangential = method;
   const pipeline::CollectiveEvaluator evaluator(scene);
-  const profiles::Profile wheel = pipeline::wheel_profile(scene.wheel_profile, scene.wheel_radius);
+  const profiles::Profile wheel = profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius);
   Outcome out{name, 1e300, {}};
   for (int r = 0; r < repeats; ++r) {
     const auto t0 = std::chrono::steady_clock::now();

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "wheelwear/wear/fastsim.hpp"
+#include "wheelwear/tangential/fastsim.hpp"
 #include "wheelwear/wear/wear_distribution.hpp"
 
 namespace {
@@ -16,15 +16,15 @@ using namespace wheelwear;
 
 void BM_WearPerContact(benchmark::State& state) {
   const contactgeom::Sdec patch{5e-3, 4e-3, 0.4};
-  wear::FastsimOptions options;
+  tangential::FastsimOptions options;
   options.nx = options.ny = 50;
   options.cell_fields = true;
-  options.field_set = state.range(1) == 0 ? wear::CellFieldSet::all : wear::CellFieldSet::wear;
+  options.field_set = state.range(1) == 0 ? tangential::CellFieldSet::all : tangential::CellFieldSet::wear;
   const wear::WearLaw law = *wear::default_wear_law(state.range(0) == 0 ? "usfd" : "archard");
   wear::WearDistribution w = wear::WearDistribution::zeros(-20e-3, 0.1e-3, 401);
-  wear::TangentialSolution s;
+  tangential::TangentialSolution s;
   for (auto _ : state) {
-    wear::fastsim(wear::FastsimMethod::sdec, patch, {1e-3, 0, 0.5}, {60e3, 0.3}, {80e9, 0.25},
+    tangential::fastsim(tangential::FastsimMethod::sdec, patch, {1e-3, 0, 0.5}, {60e3, 0.3}, {80e9, 0.25},
                   options, s);
     wear::accumulate_wear(*s.fields, 20.0, law, {0.0, 0.46}, 1.0, w);
     benchmark::DoNotOptimize(w.depth.data());

@@ -1,6 +1,6 @@
 #include "wheelwear/contactgeom/creepages.hpp"
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
 

@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "strip_kernel.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "bracketed_root.hpp"
 #include "wheelwear/contactgeom/elliptic_integrals.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
 namespace {

@@ -11,7 +11,7 @@
 #include "bracketed_root.hpp"
 #include "strip_kernel.hpp"
 #include "wheelwear/contactgeom/elliptic_integrals.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 // Why the formulas reduce to Hertz for a circle (cross-check (a) in the header):
 // for h = (x^2 + s^2)/(2R), A = 1/(2R), the virtual patch is the circle of radius a with

@@ -13,7 +13,7 @@
 #pragma GCC diagnostic pop
 #include <string>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "wheel_rail_gap.hpp"
 #include "wheel_rail_solve.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
 

@@ -8,7 +8,7 @@
 #include "wheel_rail_gap.hpp"
 #include "wheel_rail_solve.hpp"
 #include "wheelwear/contactgeom/sdec_regularisation.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
 

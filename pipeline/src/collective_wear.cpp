@@ -9,12 +9,12 @@
 
 #include "wheelwear/contactgeom/kinematics.hpp"
 #include "wheelwear/contactgeom/wheelset.hpp"
-#include "wheelwear/input_error.hpp"
-#include "wheelwear/pipeline/profile_source.hpp"
-#include "wheelwear/wear/contact_model.hpp"
-#include "wheelwear/wear/exact/exact_fields.hpp"
-#include "wheelwear/wear/exact/steady_rolling.hpp"
-#include "wheelwear/wear/table_correction.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
+#include "wheelwear/tangential/contact_model.hpp"
+#include "wheelwear/tangential/exact/exact_fields.hpp"
+#include "wheelwear/tangential/exact/steady_rolling.hpp"
+#include "wheelwear/tangential/table_correction.hpp"
 
 namespace wheelwear::pipeline {
 
@@ -29,7 +29,7 @@ struct WheelCase {
   int profile = 0;   // index of the worn profile
   double yaw = 0.0;  // this wheel's yaw [rad]
   contactgeom::WheelsetMotion motion;
-  std::optional<wear::Creepages> creepages;
+  std::optional<tangential::Creepages> creepages;
   double weight = 0.0;  // share of the running distance of this wheel's profile
 };
 
@@ -75,7 +75,7 @@ bool usable(contactgeom::WheelRailStatus status) {
 CollectiveEvaluator::CollectiveEvaluator(const Scene& scene, bool reuse_geometry)
     : scene_(scene),
       rail_(std::make_shared<const profiles::Profile>(
-          rail_profile(scene.rail_profile, scene.rail_inclination))),
+          profiles::rail_profile(scene.rail_profile, scene.rail_inclination))),
       law_(wear::TgammaLaw::usfd()),
       reuse_geometry_(reuse_geometry) {
   if (!scene.wear_law_table.empty()) {
@@ -201,18 +201,18 @@ CollectiveWear CollectiveEvaluator::evaluate(
       v->assign(2 * n_states * kPatchSlots * cells, kNaN);
   }
 
-  const wear::Material material{scene_.youngs_modulus / (2.0 * (1.0 + scene_.poisson)),
+  const tangential::Material material{scene_.youngs_modulus / (2.0 * (1.0 + scene_.poisson)),
                                 scene_.poisson};
-  wear::FastsimOptions fastsim_options;
+  tangential::FastsimOptions fastsim_options;
   fastsim_options.nx = nx;
   fastsim_options.ny = ny;
   fastsim_options.scheme = scene_.scheme;
   fastsim_options.cell_fields = true;  // the wear laws need every cell's work and slip
   // Only the fields the wear needs, unless T gamma maps with their cell positions are written.
   fastsim_options.field_set =
-      scene_.tgamma_maps ? wear::CellFieldSet::all : wear::CellFieldSet::wear;
+      scene_.tgamma_maps ? tangential::CellFieldSet::all : tangential::CellFieldSet::wear;
 
-  wear::ExactOptions exact_options;
+  tangential::ExactOptions exact_options;
   exact_options.nx = nx;
   exact_options.ny = ny;
 
@@ -234,29 +234,29 @@ CollectiveWear CollectiveEvaluator::evaluate(
     if (!usable(contact.status)) return;
     const std::size_t n_patches = std::min<std::size_t>(contact.patches.size(), kPatchSlots);
     if (summaries) sum.patches[k] = static_cast<double>(n_patches);
-    wear::TangentialSolution solution;
+    tangential::TangentialSolution solution;
     for (std::size_t slot = 0; slot < n_patches; ++slot) {
       const contactgeom::WheelRailPatch& patch = contact.patches[slot];
       std::optional<contactgeom::Sdec> hertz;
       if (patch.hertz_valid) hertz = contactgeom::Sdec{patch.hertz.a, patch.hertz.b, 0.0};
-      if (scene_.model == wear::ContactModel::hertz && !hertz) continue;
-      const wear::ModelPatch region = wear::model_patch(scene_.model, patch.sdec, hertz);
-      const wear::Creepages creep = c.creepages ? *c.creepages
+      if (scene_.model == tangential::ContactModel::hertz && !hertz) continue;
+      const tangential::ModelPatch region = tangential::model_patch(scene_.model, patch.sdec, hertz);
+      const tangential::Creepages creep = c.creepages ? *c.creepages
                                                 : contactgeom::kinematic_creepages(
                                                       patch, pose, c.motion, scene_.wheel_radius);
-      const wear::ContactLoad load{patch.normal_force, scene_.friction};
+      const tangential::ContactLoad load{patch.normal_force, scene_.friction};
       if (scene_.tangential == TangentialMethod::exact) {
-        const wear::ExactSolution exact =
-            wear::exact_sdec(region.region, creep, load, material, exact_options);
-        if (exact.status == wear::ExactStatus::not_converged) ++results[k].unconverged;
-        solution = wear::exact_tangential_solution(exact, creep);
+        const tangential::ExactSolution exact =
+            tangential::exact_sdec(region.region, creep, load, material, exact_options);
+        if (exact.status == tangential::ExactStatus::not_converged) ++results[k].unconverged;
+        solution = tangential::exact_tangential_solution(exact, creep);
       } else {
-        wear::fastsim(region.method, region.region, creep, load, material, fastsim_options,
+        tangential::fastsim(region.method, region.region, creep, load, material, fastsim_options,
                       solution);
       }
       const bool from_table =
           scene_.tangential == TangentialMethod::best &&
-          wear::correct_with_creep_table(region.region, creep, load, material, solution);
+          tangential::correct_with_creep_table(region.region, creep, load, material, solution);
       if (from_table) ++results[k].table_patches;
       // The bins the patch can reach on the wheel: its width around O, both ways.
       const double reach = 2.0 * std::max(region.region.b, patch.sdec.b) + 2.0 * kBin;
@@ -292,7 +292,7 @@ CollectiveWear CollectiveEvaluator::evaluate(
       }
       if (out.maps) {
         const std::size_t at = (k * kPatchSlots + slot) * cells;
-        const wear::CellFields& f = *solution.fields;
+        const tangential::CellFields& f = *solution.fields;
         std::copy(f.work.begin(), f.work.end(), out.maps->work.begin() + static_cast<long>(at));
         std::copy(f.x.begin(), f.x.end(), out.maps->x.begin() + static_cast<long>(at));
         std::copy(f.y.begin(), f.y.end(), out.maps->y.begin() + static_cast<long>(at));

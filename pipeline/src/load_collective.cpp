@@ -7,8 +7,8 @@
 #include <optional>
 #include <sstream>
 
-#include "wheelwear/input_error.hpp"
-#include "wheelwear/profiles/text_file.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 
 namespace wheelwear::pipeline::detail {
 
@@ -29,10 +29,10 @@ struct Column {
   double lo, hi;  // accepted range (inclusive)
 };
 
-std::optional<wear::Creepages>& creepages(WheelsetStateSpec& s, bool left) {
-  std::optional<wear::Creepages>& c = left ? s.creepages_left : s.creepages_right;
+std::optional<tangential::Creepages>& creepages(WheelsetStateSpec& s, bool left) {
+  std::optional<tangential::Creepages>& c = left ? s.creepages_left : s.creepages_right;
   // Components not given are marked NaN until finish_state checks all three arrived.
-  if (!c) c = wear::Creepages{NAN, NAN, NAN};
+  if (!c) c = tangential::Creepages{NAN, NAN, NAN};
   return c;
 }
 
@@ -149,13 +149,13 @@ std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
   int line = 0;
   while (std::getline(in, raw)) {
     ++line;
-    const std::string_view row = profiles::trim(raw);
+    const std::string_view row = core::trim(raw);
     if (row.empty() || row.front() == '#') continue;
     std::vector<std::string> cells;
     std::size_t start = 0;
     while (true) {
       const std::size_t comma = row.find(',', start);
-      cells.emplace_back(profiles::trim(
+      cells.emplace_back(core::trim(
           row.substr(start, comma == std::string_view::npos ? comma : comma - start)));
       if (comma == std::string_view::npos) break;
       start = comma + 1;
@@ -184,7 +184,7 @@ std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
         continue;
       }
       if (cells[k].empty()) continue;  // an optional column left blank
-      const auto value = profiles::parse_number(cells[k]);
+      const auto value = core::parse_number(cells[k]);
       if (!value) {
         throw InputError(where + ": column " + header[k] + ": '" + cells[k] +
                          "' is not a number (SI units, e.g. 0.002 or 55e3)");

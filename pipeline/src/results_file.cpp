@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <system_error>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::pipeline {
 

@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "load_collective.hpp"
-#include "wheelwear/input_error.hpp"
-#include "wheelwear/profiles/text_file.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 #include "wheelwear/wear/wear_law.hpp"
 
 namespace wheelwear::pipeline {
@@ -108,7 +108,7 @@ fs::path resolve(const fs::path& base, const std::string& name) {
 }
 
 bool is_standard_profile(const std::string& spec, std::string_view standard) {
-  return profiles::to_lower(spec) == profiles::to_lower(standard);
+  return core::to_lower(spec) == core::to_lower(standard);
 }
 
 // A profile is a standard name or a file, which must exist.
@@ -232,7 +232,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
            {{"model",
              [&](const auto& n, const auto& k) {
                const std::string name = text(n, k);
-               const auto model = wear::parse_contact_model(name);
+               const auto model = tangential::parse_contact_model(name);
                if (!model) {
                  throw InputError(where(n.source(), k) + " = \"" + name +
                                   "\": unknown contact model; use sdec, eql, eqe, eqe-shifted or "
@@ -256,9 +256,9 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
              [&](const auto& n, const auto& k) {
                const std::string name = text(n, k);
                if (name == "kalker") {
-                 s.scheme = wear::FastsimScheme::kalker;
+                 s.scheme = tangential::FastsimScheme::kalker;
                } else if (name == "second-order") {
-                 s.scheme = wear::FastsimScheme::second_order;
+                 s.scheme = tangential::FastsimScheme::second_order;
                } else {
                  throw InputError(where(n.source(), k) + " = \"" + name +
                                   "\": unknown FASTSIM scheme; use kalker or second-order");
@@ -342,7 +342,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                  [&](const auto& n, const auto& k) {
                    collective_line = static_cast<int>(n.source().begin.line);
                    const fs::path file = resolve(base_directory, text(n, k));
-                   const std::string ext = profiles::to_lower(file.extension().string());
+                   const std::string ext = core::to_lower(file.extension().string());
                    if (ext == ".h5" || ext == ".hdf5") {
                      if (!fs::is_regular_file(file))
                        throw InputError(where(n.source(), k) + ": no such file " + file.string());
@@ -356,7 +356,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                    } else {
                      if (!fs::is_regular_file(file))
                        throw InputError(where(n.source(), k) + ": no such file " + file.string());
-                     content = profiles::read_text_file(file);
+                     content = core::read_text_file(file);
                    }
                    auto states = detail::read_collective_csv(content, file.filename().string());
                    s.states.insert(s.states.end(), states.begin(), states.end());
@@ -370,13 +370,13 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   read_table(root, "", top);
 
   if (!inclination_given) s.rail_inclination.reset();
-  if (s.tangential != TangentialMethod::fastsim && s.model != wear::ContactModel::sdec) {
+  if (s.tangential != TangentialMethod::fastsim && s.model != tangential::ContactModel::sdec) {
     const char* name = s.tangential == TangentialMethod::best ? "best" : "exact";
     throw InputError("scene line " + std::to_string(tangential_line) +
                      ": contact.tangential_method = \"" + name +
                      "\" needs contact.model = \"sdec\" (it solves the SDEC patch); use "
                      "tangential_method = \"fastsim\" with model = \"" +
-                     std::string(wear::model_name(s.model)) + "\"");
+                     std::string(tangential::model_name(s.model)) + "\"");
   }
   if (s.tangential == TangentialMethod::exact && std::max(s.grid_nx, s.grid_ny) > 400) {
     throw InputError("scene line " + std::to_string(tangential_line) +
@@ -402,7 +402,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
 
 Scene load_scene(const fs::path& path) {
   if (!fs::is_regular_file(path)) throw InputError("scene " + path.string() + ": no such file");
-  const std::string text = profiles::read_text_file(path);
+  const std::string text = core::read_text_file(path);
   try {
     return parse_scene(text, path.parent_path());
   } catch (const InputError& error) {

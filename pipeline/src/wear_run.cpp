@@ -8,10 +8,10 @@
 #include <cmath>
 #include <ctime>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
-#include "wheelwear/pipeline/equivalent_conicity.hpp"
-#include "wheelwear/pipeline/profile_source.hpp"
+#include "wheelwear/contactgeom/equivalent_conicity.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/profiles/wear_update.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
@@ -48,7 +48,7 @@ struct LoopStart {
 };
 
 std::vector<WornProfile> new_profiles(const Scene& scene) {
-  const profiles::Profile initial = wheel_profile(scene.wheel_profile, scene.wheel_radius);
+  const profiles::Profile initial = profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius);
   WornProfile w{"wheel", initial.info(), initial.curve_options(), initial.knot_points()};
   // The profile is re-interpolated through its knots: smoothing was applied once, on reading.
   w.curve.smoothing_length = 0.0;
@@ -333,9 +333,9 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     }
     const contactgeom::WheelRailPair left = evaluator.pair(wheels.front());
     const contactgeom::WheelRailPair right = evaluator.pair(wheels.back());
-    const RollingRadiusDifference dr =
-        rolling_radius_difference(left, right, kDeltaRRange, kDeltaRSamples);
-    g.arrays.push_back(scalar("equivalent_conicity", equivalent_conicity(dr, kConicityAmplitude),
+    const contactgeom::RollingRadiusDifference dr =
+        contactgeom::rolling_radius_difference(left, right, kDeltaRRange, kDeltaRSamples);
+    g.arrays.push_back(scalar("equivalent_conicity", contactgeom::equivalent_conicity(dr, kConicityAmplitude),
                               "1", "tan(gamma_e) at 3 mm amplitude (EN 15302, Annex C)"));
     g.arrays.push_back(vector("delta_r/dy", dr.dy, "m", "wheelset shift, + to the left"));
     g.arrays.push_back(vector("delta_r/value", dr.delta_r, "m", "r_left - r_right"));

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <sstream>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::profiles {
 

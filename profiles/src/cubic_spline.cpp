@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::profiles {
 

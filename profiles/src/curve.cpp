@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/smoothing_spline.hpp"
 
 namespace wheelwear::profiles {

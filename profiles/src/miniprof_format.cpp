@@ -5,10 +5,18 @@
 #include <string>
 #include <vector>
 
-#include "wheelwear/input_error.hpp"
-#include "wheelwear/profiles/text_file.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 
 namespace wheelwear::profiles {
+
+using core::check_text;
+using core::format_number;
+using core::parse_number;
+using core::split_lines;
+using core::to_lower;
+using core::trim;
+using core::write_file_atomically;
 
 namespace {
 

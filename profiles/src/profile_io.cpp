@@ -7,9 +7,12 @@
 #include "wheelwear/profiles/columns_format.hpp"
 #include "wheelwear/profiles/miniprof_format.hpp"
 #include "wheelwear/profiles/simpack_format.hpp"
-#include "wheelwear/profiles/text_file.hpp"
+#include "wheelwear/core/text.hpp"
 
 namespace wheelwear::profiles {
+
+using core::to_lower;
+using core::read_text_file;
 
 namespace {
 

@@ -1,6 +1,6 @@
 #include "wheelwear/profiles/profile_loader.hpp"
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/profile_io.hpp"
 
 namespace wheelwear::profiles {

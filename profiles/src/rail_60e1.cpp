@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::profiles {
 

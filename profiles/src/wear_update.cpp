@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/smoothing_spline.hpp"
 #include "wheelwear/profiles/validation.hpp"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <functional>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::profiles {
 

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
 namespace {

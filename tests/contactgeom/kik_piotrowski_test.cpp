@@ -19,7 +19,7 @@
 #include "wheelwear/contactgeom/hertz.hpp"
 #include "wheelwear/contactgeom/patch_measures.hpp"
 #include "wheelwear/contactgeom/sdec_regularisation.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "wheelwear/contactgeom/hertz.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
 namespace {

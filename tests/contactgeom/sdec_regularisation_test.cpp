@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
 namespace {

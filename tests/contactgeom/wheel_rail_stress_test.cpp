@@ -9,7 +9,7 @@
 
 #include "wheelwear/contactgeom/wheel_rail.hpp"
 #include "wheelwear/contactgeom/wheelset.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 

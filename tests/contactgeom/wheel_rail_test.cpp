@@ -11,7 +11,7 @@
 #include "support/csv_table.hpp"
 #include "support/reference_profiles.hpp"
 #include "wheelwear/contactgeom/kinematics.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/profile.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"

@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/types.hpp"
 
 namespace wheelwear::fuzz {

@@ -5,13 +5,13 @@
 #include "fuzz_support.hpp"
 #include "wheelwear/profiles/profile_io.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
-#include "wheelwear/profiles/text_file.hpp"
+#include "wheelwear/core/text.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace wheelwear;
   const std::string_view text = fuzz::as_text(data, size);
   fuzz::expect_only_input_errors([&] {
-    profiles::check_text(text, "fuzz-input");
+    core::check_text(text, "fuzz-input");
     const auto format = profiles::detect_format("fuzz-input", text);
     profiles::RawProfile raw = profiles::parse_profile_text(text, "fuzz-input", format);
     profiles::LoadOptions options;

@@ -3,10 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "support/run_command.hpp"
-#include "wheelwear/wear/creep_table.hpp"
-#include "wheelwear/wear/fastsim.hpp"
-#include "wheelwear/wear/grid_choice.hpp"
-#include "wheelwear/wear/linear_theory.hpp"
+#include "wheelwear/tangential/creep_table.hpp"
+#include "wheelwear/tangential/fastsim.hpp"
+#include "wheelwear/tangential/grid_choice.hpp"
+#include "wheelwear/tangential/linear_theory.hpp"
 
 namespace wheelwear {
 namespace {
@@ -22,10 +22,10 @@ const std::string kCase =
 TEST(CreepCommand, PrintsTheLibrarysForcesAsJson) {
   const auto result = run_wheelwear(kCase + " --method fastsim-sdec --nx 30 --ny 20");
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  wear::FastsimOptions options;
+  tangential::FastsimOptions options;
   options.nx = 30;
   options.ny = 20;
-  const wear::CreepForces f = wear::fastsim(wear::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.6},
+  const tangential::CreepForces f = tangential::fastsim(tangential::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.6},
                                             {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options)
                                   .forces;
   EXPECT_EQ(json_number(result.out, "Fx"), f.Fx);
@@ -43,8 +43,8 @@ TEST(CreepCommand, EveryMethodAnswersWithTheContractKeys) {
       EXPECT_TRUE(json_number(result.out, key).has_value()) << method << " lacks " << key;
   }
   const auto linear = run_wheelwear(kCase + " --method linear-sdec");
-  const wear::CreepForces f =
-      wear::linear_sdec_forces({4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0}, {80e9, 0.25});
+  const tangential::CreepForces f =
+      tangential::linear_sdec_forces({4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0}, {80e9, 0.25});
   EXPECT_EQ(json_number(linear.out, "Fx"), f.Fx);
 }
 
@@ -54,19 +54,19 @@ TEST(CreepCommand, TargetErrorChoosesAndReportsTheGrid) {
   const auto result =
       run_wheelwear(kCase + " --method fastsim-sdec --scheme second-order --target-error 1e-3");
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const wear::GridChoice choice =
-      wear::choose_grid(wear::FastsimMethod::sdec, wear::FastsimScheme::second_order,
-                        wear::TractionBound::parabolic, 1e-3);
+  const tangential::GridChoice choice =
+      tangential::choose_grid(tangential::FastsimMethod::sdec, tangential::FastsimScheme::second_order,
+                        tangential::TractionBound::parabolic, 1e-3);
   EXPECT_EQ(json_number(result.out, "nx"), choice.nx);
   EXPECT_EQ(json_number(result.out, "ny"), choice.ny);
   EXPECT_EQ(json_number(result.out, "target_error"), 1e-3);
   EXPECT_EQ(json_number(result.out, "predicted_error"), choice.predicted_error);
   EXPECT_EQ(json_number(result.out, "cells"), choice.nx * choice.ny);
-  wear::FastsimOptions options;
+  tangential::FastsimOptions options;
   options.nx = choice.nx;
   options.ny = choice.ny;
-  options.scheme = wear::FastsimScheme::second_order;
-  const wear::CreepForces f = wear::fastsim(wear::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.6},
+  options.scheme = tangential::FastsimScheme::second_order;
+  const tangential::CreepForces f = tangential::fastsim(tangential::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.6},
                                             {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options)
                                   .forces;
   EXPECT_EQ(json_number(result.out, "Fx"), f.Fx);
@@ -115,8 +115,8 @@ TEST(CreepCommand, RejectsBadInputWithAMessage) {
 TEST(CreepCommand, TableAndBestReportTheirSource) {
   const auto table = run_wheelwear(kCase + " --method table");
   ASSERT_EQ(table.exit_code, 0) << table.err;
-  const wear::CreepForces f =
-      wear::creep_table_forces({4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25});
+  const tangential::CreepForces f =
+      tangential::creep_table_forces({4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25});
   EXPECT_EQ(json_number(table.out, "Fx"), f.Fx);
   EXPECT_EQ(json_number(table.out, "Fy"), f.Fy);
   EXPECT_NE(table.out.find("\"source\": \"table\""), std::string::npos) << table.out;
@@ -132,10 +132,10 @@ TEST(CreepCommand, TableAndBestReportTheirSource) {
       "creep --a 4.25e-3 --b 4.25e-3 --psi 0.9 --phi 1.0 --N 37830 --mu 0.35 --json "
       "--method best --nx 30 --ny 20");
   ASSERT_EQ(outside.exit_code, 0) << outside.err;
-  wear::FastsimOptions options;
+  tangential::FastsimOptions options;
   options.nx = 30;
   options.ny = 20;
-  const wear::CreepForces g = wear::fastsim(wear::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.9},
+  const tangential::CreepForces g = tangential::fastsim(tangential::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.9},
                                             {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options)
                                   .forces;
   EXPECT_EQ(json_number(outside.out, "Fx"), g.Fx);

@@ -10,9 +10,9 @@
 #include "support/csv_table.hpp"
 #include "support/reference_profiles.hpp"
 #include "support/run_command.hpp"
-#include "wheelwear/wear/exact/steady_rolling.hpp"
-#include "wheelwear/wear/exact/wheel_rail_exact.hpp"
-#include "wheelwear/wear/fastsim.hpp"
+#include "wheelwear/tangential/exact/steady_rolling.hpp"
+#include "wheelwear/tangential/exact/wheel_rail_exact.hpp"
+#include "wheelwear/tangential/fastsim.hpp"
 
 namespace wheelwear {
 namespace {
@@ -30,10 +30,10 @@ const std::string kSpin =
 TEST(CreepExact, PrintsTheLibrarysExactSolution) {
   const auto r = run_wheelwear(kSpin + " --exact-grid 32");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  wear::ExactOptions options;
+  tangential::ExactOptions options;
   options.nx = options.ny = 32;
-  const wear::ExactSolution s =
-      wear::exact_sdec({4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options);
+  const tangential::ExactSolution s =
+      tangential::exact_sdec({4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options);
   EXPECT_EQ(json_number(r.out, "Fx"), s.forces.Fx);
   EXPECT_EQ(json_number(r.out, "Fy"), s.forces.Fy);
   EXPECT_EQ(json_number(r.out, "Mz"), s.forces.Mz);
@@ -110,9 +110,9 @@ TEST(ContactExact, AddsTheExactSolutionPerPatch) {
   pose.dy = -0.004;
   const auto contact = contactgeom::solve_wheel_rail(testing::benchmark_pair(), pose, 55000);
   ASSERT_EQ(contact.patches.size(), 1u);
-  wear::WheelRailExactOptions options;
+  tangential::WheelRailExactOptions options;
   options.nx = options.ny = 36;
-  const wear::WheelRailExactSolution s = wear::wheel_rail_exact(
+  const tangential::WheelRailExactSolution s = tangential::wheel_rail_exact(
       testing::benchmark_pair(), pose, contact.patches[0], {4.6e-4, 1e-3, -0.0238}, 0.35, options);
   EXPECT_EQ(json_number(exact.out, "exact_Fx"), s.rolling.forces.Fx);
   EXPECT_EQ(json_number(exact.out, "exact_Fy"), s.rolling.forces.Fy);

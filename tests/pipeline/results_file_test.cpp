@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::pipeline {
 namespace {

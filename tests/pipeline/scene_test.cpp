@@ -11,7 +11,7 @@
 #include <fstream>
 
 #include "support/run_command.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::pipeline {
 namespace {
@@ -59,11 +59,11 @@ TEST_F(SceneTest, ReadsEveryKeyInSiUnits) {
   EXPECT_DOUBLE_EQ(s.back_to_back, 1.358);
   EXPECT_DOUBLE_EQ(s.youngs_modulus, 210e9);
   EXPECT_DOUBLE_EQ(s.poisson, 0.3);
-  EXPECT_EQ(s.model, wear::ContactModel::eqe_shifted);
+  EXPECT_EQ(s.model, tangential::ContactModel::eqe_shifted);
   EXPECT_DOUBLE_EQ(s.friction, 0.4);
   EXPECT_EQ(s.grid_nx, 12);
   EXPECT_EQ(s.grid_ny, 14);
-  EXPECT_EQ(s.scheme, wear::FastsimScheme::second_order);
+  EXPECT_EQ(s.scheme, tangential::FastsimScheme::second_order);
   EXPECT_EQ(s.wear_law, "archard");
   EXPECT_DOUBLE_EQ(s.distance, 1000.0);
   EXPECT_DOUBLE_EQ(s.step_distance, 100.0);

@@ -20,12 +20,12 @@
 
 #include "support/csv_table.hpp"
 #include "support/run_command.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/profiles/profile.hpp"
-#include "wheelwear/wear/creep_table.hpp"
-#include "wheelwear/wear/exact/steady_rolling.hpp"
-#include "wheelwear/wear/table_correction.hpp"
+#include "wheelwear/tangential/creep_table.hpp"
+#include "wheelwear/tangential/exact/steady_rolling.hpp"
+#include "wheelwear/tangential/table_correction.hpp"
 
 extern char** environ;
 
@@ -256,7 +256,7 @@ TEST_F(WearRunTest, WornAreaEqualsAccumulatedWearAndGrowsMonotonically) {
 // the table's for the recorded patch and creepages (recomputed here from the file), and its
 // frictional work is their rigid-slip work; FASTSIM's stand only where the table does not reach.
 TEST_F(WearRunTest, BestTakesTotalsFromTheTableWhereItReaches) {
-  if (wear::creep_table_range().grid == 0) GTEST_SKIP() << "library built without the table";
+  if (tangential::creep_table_range().grid == 0) GTEST_SKIP() << "library built without the table";
   std::string text = small_scene(10e3, 10e3, 1e-3);
   text.insert(text.find("[contact]\n") + 10, "tangential_method = \"best\"\n");
   const fs::path out = dir_ / "best.h5";
@@ -268,26 +268,26 @@ TEST_F(WearRunTest, BestTakesTotalsFromTheTableWhereItReaches) {
              phi = column("phi"), fx = column("Fx"), fy = column("Fy"),
              work = column("frictional_work");
   const Scene scene = parse_scene(text, dir_);
-  const wear::Material material{scene.youngs_modulus / (2.0 * (1.0 + scene.poisson)),
+  const tangential::Material material{scene.youngs_modulus / (2.0 * (1.0 + scene.poisson)),
                                 scene.poisson};
   std::size_t tabled = 0, patches = 0;
   for (std::size_t i = 0; i < from_table.size(); ++i) {
     if (std::isnan(from_table[i])) continue;
     ++patches;
     const contactgeom::Sdec sdec{a[i], b[i], psi[i]};
-    const wear::Creepages v{vx[i], vy[i], phi[i]};
-    const wear::ContactLoad load{n[i], scene.friction};
-    const bool covered = wear::creep_table_covers(sdec, v, load, material);
+    const tangential::Creepages v{vx[i], vy[i], phi[i]};
+    const tangential::ContactLoad load{n[i], scene.friction};
+    const bool covered = tangential::creep_table_covers(sdec, v, load, material);
     EXPECT_EQ(from_table[i] == 1.0, covered) << "patch " << i;
     if (!covered) continue;
     ++tabled;
-    const wear::CreepForces t = wear::creep_table_forces(sdec, v, load, material);
+    const tangential::CreepForces t = tangential::creep_table_forces(sdec, v, load, material);
     // The same computation on the same inputs; 1e-9 allows only for the recorded inputs' and
     // outputs' round trip through the file (exact in double) and for contraction differences.
     const double scale = 1e-9 * load.mu * load.N;
     EXPECT_NEAR(fx[i], t.Fx, scale) << "patch " << i;
     EXPECT_NEAR(fy[i], t.Fy, scale) << "patch " << i;
-    EXPECT_NEAR(work[i], std::max(0.0, wear::rigid_slip_work(t, v)), 1e-9 * (work[i] + 1e-9));
+    EXPECT_NEAR(work[i], std::max(0.0, tangential::rigid_slip_work(t, v)), 1e-9 * (work[i] + 1e-9));
   }
   EXPECT_GT(tabled, patches / 2) << "the scene's patches should mostly lie in the table";
   EXPECT_EQ(file.read_step_array(0, "table_patches")[0], static_cast<double>(tabled));
@@ -311,24 +311,24 @@ TEST_F(WearRunTest, ExactSolvesEveryPatchWithTheExactTheory) {
              vx = column("vx"), vy = column("vy"), phi = column("phi"), fx = column("Fx"),
              fy = column("Fy"), work = column("frictional_work"), area = column("worn_area");
   const Scene scene = parse_scene(text, dir_);
-  const wear::Material material{scene.youngs_modulus / (2.0 * (1.0 + scene.poisson)),
+  const tangential::Material material{scene.youngs_modulus / (2.0 * (1.0 + scene.poisson)),
                                 scene.poisson};
-  wear::ExactOptions options;
+  tangential::ExactOptions options;
   options.nx = scene.grid_nx;
   options.ny = scene.grid_ny;
   int patches = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
     if (std::isnan(a[i])) continue;
     ++patches;
-    const wear::Creepages v{vx[i], vy[i], phi[i]};
-    const wear::ContactLoad load{n[i], scene.friction};
-    const wear::ExactSolution e =
-        wear::exact_sdec({a[i], b[i], psi[i]}, v, load, material, options);
+    const tangential::Creepages v{vx[i], vy[i], phi[i]};
+    const tangential::ContactLoad load{n[i], scene.friction};
+    const tangential::ExactSolution e =
+        tangential::exact_sdec({a[i], b[i], psi[i]}, v, load, material, options);
     // The run's solve repeated on the recorded inputs: equal but for rounding (1e-9 of mu N).
     const double scale = 1e-9 * load.mu * load.N;
     EXPECT_NEAR(fx[i], e.forces.Fx, scale) << "patch " << i;
     EXPECT_NEAR(fy[i], e.forces.Fy, scale) << "patch " << i;
-    EXPECT_NEAR(work[i], std::max(0.0, wear::rigid_slip_work(e.forces, v)),
+    EXPECT_NEAR(work[i], std::max(0.0, tangential::rigid_slip_work(e.forces, v)),
                 1e-9 * (work[i] + 1e-9));
     EXPECT_GT(area[i], 0.0) << "patch " << i;
   }

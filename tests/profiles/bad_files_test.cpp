@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "test_support.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/columns_format.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"

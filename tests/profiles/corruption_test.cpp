@@ -9,7 +9,7 @@
 #include <typeinfo>
 
 #include "test_support.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/columns_format.hpp"
 #include "wheelwear/profiles/profile_io.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"

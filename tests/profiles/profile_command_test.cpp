@@ -11,7 +11,7 @@
 #include "test_support.hpp"
 #include "wheelwear/profiles/columns_format.hpp"
 #include "wheelwear/profiles/s1002.hpp"
-#include "wheelwear/profiles/text_file.hpp"
+#include "wheelwear/core/text.hpp"
 
 namespace wheelwear::profiles {
 namespace {

@@ -5,13 +5,19 @@
 #include <gtest/gtest.h>
 
 #include "test_support.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
-#include "wheelwear/profiles/text_file.hpp"
+#include "wheelwear/core/text.hpp"
 
 namespace wheelwear::profiles {
+
+using core::check_text;
+using core::format_number;
+using core::parse_number;
+using core::write_file_atomically;
+using core::read_text_file;
 namespace {
 
 using testing::read_text;

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "test_support.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/columns_format.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 #include "wheelwear/profiles/track.hpp"

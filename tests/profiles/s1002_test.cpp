@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "test_support.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/profile_io.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
 

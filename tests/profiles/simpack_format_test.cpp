@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "test_support.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/profile_io.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::profiles {
 namespace {

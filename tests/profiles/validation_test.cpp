@@ -8,7 +8,7 @@
 #include <functional>
 #include <limits>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 
 namespace wheelwear::profiles {

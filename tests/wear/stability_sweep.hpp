@@ -14,12 +14,15 @@
 #include <string>
 #include <string_view>
 
-#include "wheelwear/input_error.hpp"
-#include "wheelwear/wear/fastsim.hpp"
-#include "wheelwear/wear/linear_theory.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/tangential/fastsim.hpp"
+#include "wheelwear/tangential/linear_theory.hpp"
 #include "wheelwear/wear/wear_distribution.hpp"
 
 namespace wheelwear::wear::stability {
+
+// The patches these tests wear are solved by the tangential library.
+using namespace wheelwear::tangential;
 
 /// Every tangential method of the library: the linear theory, its SHE saturation, and the five
 /// FASTSIM variants.

@@ -13,9 +13,12 @@
 #include <string>
 
 #include "stability_sweep.hpp"
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::wear {
+
+// The patches these tests wear are solved by the tangential library.
+using namespace wheelwear::tangential;
 namespace {
 
 using contactgeom::Sdec;

@@ -11,10 +11,13 @@
 #include "support/csv_table.hpp"
 #include "support/reference_profiles.hpp"
 #include "wheelwear/contactgeom/wheel_rail.hpp"
-#include "wheelwear/wear/contact_model.hpp"
-#include "wheelwear/wear/fastsim.hpp"
+#include "wheelwear/tangential/contact_model.hpp"
+#include "wheelwear/tangential/fastsim.hpp"
 
 namespace wheelwear::wear {
+
+// The patches these tests wear are solved by the tangential library.
+using namespace wheelwear::tangential;
 namespace {
 
 using testing::benchmark_pair;

@@ -8,9 +8,12 @@
 #include <cmath>
 #include <numbers>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::wear {
+
+// The patches these tests wear are solved by the tangential library.
+using namespace wheelwear::tangential;
 namespace {
 
 using contactgeom::Sdec;

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/wear/wear_law.hpp"
 
 namespace wheelwear::wear {

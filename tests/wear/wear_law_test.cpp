@@ -10,7 +10,7 @@
 #include <variant>
 #include <vector>
 
-#include "wheelwear/input_error.hpp"
+#include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::wear {
 namespace {

@@ -73,7 +73,7 @@ class CollectiveEvaluator {
 
   /// Evaluates the collective on `wheels` (one profile worn by both wheels, or left and right).
   /// Every worn profile must have the taping line at y = 0 (as profiles from
-  /// pipeline::wheel_profile do). TBB-parallel over contacts and states.
+  /// profiles::wheel_profile do). TBB-parallel over contacts and states.
   CollectiveWear evaluate(const std::vector<const profiles::Profile*>& wheels) const;
 
   const Scene& scene() const { return scene_; }

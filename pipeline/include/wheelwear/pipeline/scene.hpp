@@ -9,9 +9,9 @@
 #include <string_view>
 #include <vector>
 
-#include "wheelwear/wear/contact_model.hpp"
-#include "wheelwear/wear/creep_types.hpp"
-#include "wheelwear/wear/fastsim.hpp"
+#include "wheelwear/tangential/contact_model.hpp"
+#include "wheelwear/tangential/creep_types.hpp"
+#include "wheelwear/tangential/fastsim.hpp"
 
 namespace wheelwear::pipeline {
 
@@ -32,7 +32,7 @@ struct WheelsetStateSpec {
   double lateral_velocity = 0.0;  ///< dy/dt [m/s], + to the left
   /// Creepages given directly (each wheel in its own frame, + y towards the gauge side); when
   /// absent they follow from the kinematics at every patch's O.
-  std::optional<wear::Creepages> creepages_left, creepages_right;
+  std::optional<tangential::Creepages> creepages_left, creepages_right;
   double weight = 1.0;  ///< share of the running distance (normalised over the collective)
   int line = 0;         ///< line in the scene or the collective file (for messages)
 };
@@ -61,11 +61,11 @@ struct Scene {
   double lateral_arm = 0.75;               ///< wheelset centre to contact [m]
   double youngs_modulus = 200e9;           ///< [Pa]
   double poisson = 0.25;                   ///< [-]
-  wear::ContactModel model = wear::ContactModel::sdec;
+  tangential::ContactModel model = tangential::ContactModel::sdec;
   double friction = 0.3;  ///< [-], > 0
   int grid_nx = 30;
   int grid_ny = 30;
-  wear::FastsimScheme scheme = wear::FastsimScheme::kalker;
+  tangential::FastsimScheme scheme = tangential::FastsimScheme::kalker;
   TangentialMethod tangential = TangentialMethod::fastsim;
   double strip_width = 0.2e-3;        ///< [m]
   double virtual_penetration = 0.55;  ///< Kik-Piotrowski epsilon [-]

@@ -1,0 +1,213 @@
+// `wheelwear contact`: the contact patches of one wheel on its rail for a wheelset position.
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "contact_inputs.hpp"
+#include "wheelwear/contactgeom/wheel_rail.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "json_writer.hpp"
+#include "wheelwear/tangential/exact/wheel_rail_exact.hpp"
+#include "wheelwear/tangential/fastsim.hpp"
+
+namespace wheelwear::cli {
+
+namespace {
+
+struct ContactArgs {
+  ContactInputs in;
+  bool creep = false;
+  bool json = false;
+  std::string tangential = "fastsim-sdec";         // or "exact": also Kalker's exact theory
+  int exact_grid = 40;                             // --tangential exact: elements per side
+  double exact_margin = 1.3;                       // --tangential exact: grid over the patch
+  const CLI::Option* exact_grid_option = nullptr;  // to refuse them without --tangential exact
+  const CLI::Option* exact_margin_option = nullptr;
+};
+
+// Kalker's exact theory on `p`, from the wheel/rail undeformed distance (wheel_rail_exact.hpp).
+tangential::WheelRailExactSolution exact_patch(const contactgeom::WheelRailPair& pair,
+                                         const contactgeom::WheelRailPatch& p,
+                                         const ContactArgs& args) {
+  tangential::WheelRailExactOptions options;
+  options.nx = options.ny = args.exact_grid;
+  options.margin = args.exact_margin;
+  return tangential::wheel_rail_exact(pair, args.in.pose, p, args.in.creepages_at(p), args.in.mu,
+                                options);
+}
+
+void check_exact_options(const ContactArgs& args) {
+  if (args.exact_grid < kMinExactGrid || args.exact_grid > kMaxExactGrid) {
+    throw InputError("--exact-grid " + std::to_string(args.exact_grid) + ": needs " +
+                     std::to_string(kMinExactGrid) + " ... " + std::to_string(kMaxExactGrid) +
+                     " elements per side");
+  }
+  if (!(args.exact_margin >= 1.0 && args.exact_margin <= 5.0)) {
+    throw InputError("--exact-margin " + std::to_string(args.exact_margin) +
+                     ": the grid must cover the patch, 1 ... 5 times its extent");
+  }
+}
+
+std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom::WheelRailPatch& p,
+                       const ContactArgs& args) {
+  JsonObject o;
+  o.add("area", p.measures.area)
+      .add("length", p.measures.length)
+      .add("width", p.measures.width)
+      .add("W1", p.measures.W1)
+      .add("W2", p.measures.W2)
+      .add("a", p.sdec.a)
+      .add("b", p.sdec.b)
+      .add("psi", p.sdec.psi)
+      .add("y_wheel", p.y_wheel)
+      .add("y_rail", p.y_rail)
+      .add("contact_angle", p.contact_angle)
+      .add("N", p.normal_force)
+      .add("pmax", p.pmax)
+      .add("rolling_radius", p.rolling_radius);
+  if (p.hertz_valid) {
+    o.add("hertz_a", p.hertz.a).add("hertz_b", p.hertz.b).add("hertz_p0", p.hertz.p0);
+  }
+  if (args.creep) {
+    const tangential::TangentialSolution s =
+        tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, args.in.creepages_at(p),
+                      {p.normal_force, args.in.mu}, args.in.material());
+    const tangential::Creepages c = args.in.creepages_at(p);
+    o.add("vx", c.vx).add("vy", c.vy).add("phi", c.phi);
+    o.add("Fx", s.forces.Fx).add("Fy", s.forces.Fy).add("Mz", s.forces.Mz);
+    if (args.tangential == "exact") {
+      const tangential::WheelRailExactSolution e = exact_patch(pair, p, args);
+      const tangential::ExactSolution& r = e.rolling;
+      o.add("exact_status", tangential::status_name(r.status))
+          .add("exact_N", r.normal_force)
+          .add("exact_Fx", r.forces.Fx)
+          .add("exact_Fy", r.forces.Fy)
+          .add("exact_Mz", r.forces.Mz)
+          .add("exact_approach", e.approach)
+          .add("exact_area", e.contact_area)
+          .add("exact_adhesion_fraction", e.adhesion_fraction)
+          .add("exact_iterations", r.iterations)
+          .add("exact_nx", r.grid.nx)
+          .add("exact_ny", r.grid.ny);
+      if (!r.message.empty()) o.add("exact_message", r.message);
+    }
+  }
+  return o.str();
+}
+
+void run_contact(const ContactArgs& args) {
+  if (args.tangential == "exact") {
+    check_exact_options(args);
+  } else {
+    for (const CLI::Option* given : {args.exact_grid_option, args.exact_margin_option})
+      if (given && given->count() > 0)
+        throw InputError(given->get_name() + ": applies only with --tangential exact");
+  }
+  const SolvedContact solved = solve_contact(args.in);
+  const contactgeom::WheelRailContact& contact = solved.contact;
+
+  if (args.json) {
+    std::vector<std::string> patches;
+    for (const auto& p : contact.patches) patches.push_back(patch_json(solved.pair, p, args));
+    JsonObject out;
+    out.add("status", contactgeom::status_name(contact.status))
+        .add("message", contact.message)
+        .add("vertical_force", contact.vertical_force)
+        .add("lateral_force", contact.lateral_force)
+        .add("approach", contact.approach)
+        .add_raw("patches", json_array(patches));
+    std::cout << out.str() << '\n';
+  } else {
+    std::printf("status %s%s%s\n", contactgeom::status_name(contact.status),
+                contact.message.empty() ? "" : ": ", contact.message.c_str());
+    std::printf("vertical force %.6g N, lateral force %.6g N, approach %.4g mm\n",
+                contact.vertical_force, contact.lateral_force, contact.approach * 1e3);
+    int k = 0;
+    for (const auto& p : contact.patches) {
+      std::printf(
+          "patch %d: N %.6g N, angle %.4f rad, O at %.3f mm on the rail, %.3f mm on the wheel\n"
+          "  area %.4g mm2, length %.3f mm, width %.3f mm, W1 %.3f mm, W2 %.3f mm, pmax %.1f MPa\n"
+          "  SDEC a %.3f mm, b %.3f mm, psi %+.3f\n",
+          ++k, p.normal_force, p.contact_angle, p.y_rail * 1e3, p.y_wheel * 1e3,
+          p.measures.area * 1e6, p.measures.length * 1e3, p.measures.width * 1e3,
+          p.measures.W1 * 1e3, p.measures.W2 * 1e3, p.pmax * 1e-6, p.sdec.a * 1e3, p.sdec.b * 1e3,
+          p.sdec.psi);
+      if (args.creep) {
+        const tangential::Creepages c = args.in.creepages_at(p);
+        const tangential::CreepForces f = tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, c,
+                                                  {p.normal_force, args.in.mu}, args.in.material())
+                                        .forces;
+        std::printf("  creepages vx %.4g, vy %.4g, phi %.4g 1/m: Fx %.6g N, Fy %.6g N\n", c.vx,
+                    c.vy, c.phi, f.Fx, f.Fy);
+        if (args.tangential == "exact") {
+          const tangential::WheelRailExactSolution e = exact_patch(solved.pair, p, args);
+          const tangential::ExactSolution& r = e.rolling;
+          std::printf(
+              "  exact theory (%d x %d elements, %s after %d iterations): N %.6g N, Fx %.6g N, "
+              "Fy %.6g N, Mz %.6g N m\n"
+              "    area %.4g mm2, %.1f %% adhesion, approach %.4g um\n",
+              r.grid.nx, r.grid.ny, tangential::status_name(r.status), r.iterations, r.normal_force,
+              r.forces.Fx, r.forces.Fy, r.forces.Mz, e.contact_area * 1e6,
+              100.0 * e.adhesion_fraction, e.approach * 1e6);
+        }
+      }
+    }
+  }
+  if (contact.status == contactgeom::WheelRailStatus::no_contact ||
+      contact.status == contactgeom::WheelRailStatus::not_converged ||
+      contact.status == contactgeom::WheelRailStatus::profile_end) {
+    throw std::runtime_error(std::string("contact ") + contactgeom::status_name(contact.status) +
+                             (contact.message.empty() ? "" : ": " + contact.message));
+  }
+}
+
+}  // namespace
+
+void add_contact_command(CLI::App& app) {
+  auto args = std::make_shared<ContactArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "contact",
+      "Contact patches of one wheel (the left one) of a wheelset on its rail.\n"
+      "Geometry as in CONTACT's wheel/rail module: the wheel's flange back sits back-to-back/2\n"
+      "from the track centre, the rail's gauge point gauge/2 (14 mm below the top of rail).\n"
+      "The normal problem is Kik-Piotrowski's with virtual penetration; each patch is\n"
+      "regularised into an SDEC (Liu, Fu & Bruni 2022, Eq. 13-14). Lateral positions are\n"
+      "positive towards the gauge side. SI units.\n"
+      "Example: wheelwear contact --wheel S1002 --rail 60E1 --dy 0.004 --load 55000 --json");
+  add_contact_options(cmd, args->in);
+  CLI::Option* creep = cmd->add_flag(
+      "--creep", args->creep,
+      "also solve the tangential problem with FASTSIM-SDEC (creepages --vx --vy --phi)");
+  cmd->add_option("--tangential", args->tangential,
+                  "with --creep: fastsim-sdec (default) or exact, which adds per patch Kalker's\n"
+                  "exact theory (Kalker 1990, as in Vollebregt's CONTACT): the undeformed\n"
+                  "distance of wheel and rail, yaw included, sampled on --exact-grid N x N\n"
+                  "elements over --exact-margin times the patch in its contact plane, the normal\n"
+                  "problem at the patch's N, then steady rolling. JSON keys exact_status,\n"
+                  "exact_N (the check: equals N), exact_Fx, exact_Fy, exact_Mz, exact_approach,\n"
+                  "exact_area, exact_adhesion_fraction, exact_iterations, exact_nx, exact_ny;\n"
+                  "Fx, Fy, Mz stay FASTSIM-SDEC's. About 20 ms per tread patch at 40 x 40, 0.15 s "
+                  "at 80 x 80")
+      ->check(CLI::IsMember({"fastsim-sdec", "exact"}))
+      ->needs(creep)
+      ->capture_default_str();
+  args->exact_grid_option = cmd->add_option("--exact-grid", args->exact_grid,
+                                            "--tangential exact: elements per side, 8 ... 400")
+                                ->capture_default_str();
+  args->exact_margin_option =
+      cmd->add_option("--exact-margin", args->exact_margin,
+                      "--tangential exact: the grid covers the Kik-Piotrowski patch times this,\n"
+                      "1 ... 5; raise it when the exact contact area reaches the grid's border")
+          ->capture_default_str();
+  cmd->add_flag("--json", args->json, "print one JSON object with a list of patches");
+  cmd->callback([args] { run_contact(*args); });
+}
+
+}  // namespace wheelwear::cli

@@ -1,0 +1,76 @@
+#include "contact_inputs.hpp"
+
+#include <CLI/CLI.hpp>
+#include <stdexcept>
+
+#include "wheelwear/profiles/profile_source.hpp"
+
+namespace wheelwear::cli {
+
+void add_contact_options(CLI::App* cmd, ContactInputs& in) {
+  cmd->add_option("--wheel", in.wheel, "S1002 or a wheel profile file")->capture_default_str();
+  cmd->add_option("--rail", in.rail, "60E1 or a rail profile file")->capture_default_str();
+  cmd->add_option("--dy", in.pose.dy,
+                  "lateral shift of the wheelset [m], + towards this wheel's flange contact")
+      ->required();
+  cmd->add_option("--load", in.load, "vertical force on this wheel [N]")->required();
+  cmd->add_option("--yaw", in.pose.yaw, "yaw angle [rad]")->capture_default_str();
+  cmd->add_option("--roll", in.pose.roll, "roll of the wheel profile [rad], small")
+      ->capture_default_str();
+  cmd->add_option("--incl", in.inclination,
+                  "rail inclination to apply [rad]; default 1:40 for 60E1, 0 for files");
+  cmd->add_option("--gauge", in.gauge, "track gauge [m]")->capture_default_str();
+  cmd->add_option("--back-to-back", in.back_to_back, "back-to-back distance [m]")
+      ->capture_default_str();
+  cmd->add_option("--wheel-radius", in.wheel_radius, "nominal rolling radius [m]")
+      ->capture_default_str();
+  cmd->add_option("--E", in.E, "Young's modulus of wheel and rail [Pa]")->capture_default_str();
+  cmd->add_option("--nu", in.nu, "Poisson's ratio [-]")->capture_default_str();
+  cmd->add_option("--strip-width", in.strip_width, "lateral sampling of the gap [m]")
+      ->capture_default_str();
+  cmd->add_option("--epsilon", in.epsilon, "Kik-Piotrowski virtual penetration factor")
+      ->capture_default_str();
+  cmd->add_option("--vx", in.creepages.vx, "longitudinal creepage at each patch's O [-]")
+      ->capture_default_str();
+  cmd->add_option("--vy", in.creepages.vy, "lateral creepage at each patch's O [-]")
+      ->capture_default_str();
+  cmd->add_option("--phi", in.creepages.phi, "spin creepage at each patch's O [1/m]")
+      ->capture_default_str();
+  cmd->add_option("--mu", in.mu, "friction coefficient [-]")->capture_default_str();
+  cmd->add_option("--V", in.motion.speed, "forward speed of the wheelset [m/s]")
+      ->capture_default_str();
+  cmd->add_flag("--kinematic", in.kinematic,
+                "creepages at each O from the wheelset's motion (--V, --lateral-velocity,\n"
+                "--yaw-rate, --omega and --yaw) instead of --vx --vy --phi");
+  cmd->add_option("--lateral-velocity", in.motion.lateral_velocity,
+                  "lateral velocity [m/s], + towards this wheel's flange")
+      ->capture_default_str();
+  cmd->add_option("--yaw-rate", in.motion.yaw_rate, "yaw rate [rad/s], + when this wheel leads")
+      ->capture_default_str();
+  cmd->add_option("--omega", in.motion.angular_velocity,
+                  "wheel spin about the axle [rad/s]; 0: free rolling on the nominal radius")
+      ->capture_default_str();
+}
+
+tangential::Creepages ContactInputs::creepages_at(const contactgeom::WheelRailPatch& patch) const {
+  if (!kinematic) return creepages;
+  return contactgeom::kinematic_creepages(patch, pose, motion, wheel_radius);
+}
+
+SolvedContact solve_contact(const ContactInputs& in) {
+  SolvedContact out{contactgeom::WheelRailPair(profiles::wheel_profile(in.wheel, in.wheel_radius),
+                                               profiles::rail_profile(in.rail, in.inclination)),
+                    {}};
+  out.pair.gauge = in.gauge;
+  out.pair.back_to_back = in.back_to_back;
+  out.pair.wheel_radius = in.wheel_radius;
+  out.pair.youngs_modulus = in.E;
+  out.pair.poisson = in.nu;
+  contactgeom::WheelRailOptions options;
+  options.strip_width = in.strip_width;
+  options.kp.epsilon = in.epsilon;
+  out.contact = contactgeom::solve_wheel_rail(out.pair, in.pose, in.load, options);
+  return out;
+}
+
+}  // namespace wheelwear::cli

@@ -1,0 +1,54 @@
+#pragma once
+// The inputs `wheelwear contact` and `wheelwear wear` share: profiles, track, wheelset
+// position, load, material, and the creepages at each patch's initial contact point.
+
+#include <optional>
+#include <string>
+
+#include "wheelwear/contactgeom/kinematics.hpp"
+#include "wheelwear/contactgeom/wheel_rail.hpp"
+#include "wheelwear/tangential/creep_types.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace wheelwear::cli {
+
+struct ContactInputs {
+  std::string wheel = "S1002";
+  std::string rail = "60E1";
+  contactgeom::WheelsetPose pose;
+  double load = 0.0;
+  std::optional<double> inclination;
+  double gauge = 1.435;
+  double back_to_back = 1.360;
+  double wheel_radius = 0.46;
+  double E = 200e9;
+  double nu = 0.25;
+  double strip_width = 0.1e-3;
+  double epsilon = 0.55;
+  tangential::Creepages creepages;
+  bool kinematic = false;  // creepages from the motion below instead
+  contactgeom::WheelsetMotion motion{20.0, 0.0, 0.0, 0.0, 0.75};
+  double mu = 0.3;
+
+  /// The creepages at O of `patch`: given directly, or from the wheelset's motion.
+  tangential::Creepages creepages_at(const contactgeom::WheelRailPatch& patch) const;
+
+  /// Combined shear modulus G = E / (2 (1 + nu)) [Pa] and nu.
+  tangential::Material material() const { return {E / (2.0 * (1.0 + nu)), nu}; }
+};
+
+/// Adds the shared options to `cmd`, writing into `inputs`.
+void add_contact_options(CLI::App* cmd, ContactInputs& inputs);
+
+/// The wheel/rail pair the inputs describe, and its contact; throws on bad input and on a
+/// contact that is missing or did not converge (naming the position and the fix).
+struct SolvedContact {
+  contactgeom::WheelRailPair pair;
+  contactgeom::WheelRailContact contact;
+};
+SolvedContact solve_contact(const ContactInputs& inputs);
+
+}  // namespace wheelwear::cli

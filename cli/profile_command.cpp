@@ -1,0 +1,258 @@
+// `wheelwear profile`: generate or read a wheel/rail profile, clean it, resample it, summarise it.
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "commands.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "json_writer.hpp"
+#include "wheelwear/profiles/columns_format.hpp"
+#include "wheelwear/profiles/profile_loader.hpp"
+#include "wheelwear/profiles/rail_60e1.hpp"
+#include "wheelwear/profiles/s1002.hpp"
+#include "wheelwear/profiles/track.hpp"
+#include "wheelwear/profiles/wheel_parameters.hpp"
+
+namespace wheelwear::cli {
+
+namespace {
+
+namespace pr = wheelwear::profiles;
+
+struct ProfileArgs {
+  std::string wheel, rail, out, side = "right", unit = "auto", inclination = "1:40";
+  bool info = false, json = false;
+  double spacing = 0.5e-3;
+  double smoothing = 0.3e-3;
+  double max_drop = 0.2;
+  pr::S1002Options s1002;
+  CLI::Option* flange_height = nullptr;
+  CLI::Option* flange_thickness = nullptr;
+  CLI::Option* radius = nullptr;
+  CLI::Option* inclination_option = nullptr;
+};
+
+std::string upper(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+
+double parse_inclination(const std::string& text) {
+  if (text == "none" || text == "0") return 0.0;
+  if (text == "1:40" || text == "40") return pr::inclination_angle(pr::RailInclination::one_in_40);
+  if (text == "1:20" || text == "20") return pr::inclination_angle(pr::RailInclination::one_in_20);
+  throw InputError("--inclination " + text + ": must be none, 1:40 or 1:20");
+}
+
+pr::LoadedProfile make_profile(const ProfileArgs& args) {
+  if (args.wheel.empty() == args.rail.empty())
+    throw InputError("give exactly one of --wheel (S1002 or a file) and --rail (60E1 or a file)");
+  require(std::isfinite(args.spacing) && args.spacing >= 1e-5 && args.spacing <= 5e-3,
+          "--spacing [m]", args.spacing, "must be in [1e-5, 5e-3]");
+  const pr::Side side = args.side == "left" ? pr::Side::left : pr::Side::right;
+  const bool wheel = !args.wheel.empty();
+  const std::string& what = wheel ? args.wheel : args.rail;
+  const bool standard =
+      wheel ? upper(what) == "S1002" : (upper(what) == "60E1" || upper(what) == "UIC60");
+  if (!(wheel && standard)) {
+    for (const CLI::Option* option : {args.flange_height, args.flange_thickness})
+      if (option->count() > 0)
+        throw InputError(option->get_name() + " applies to --wheel S1002 only");
+  }
+  if (!(!wheel && standard) && args.inclination_option->count() > 0)
+    throw InputError("--inclination applies to --rail 60E1 only");
+
+  pr::LoadOptions options;
+  options.side = side;
+  options.cleaning.max_drop_fraction = args.max_drop;
+  options.read.body = wheel ? pr::Body::wheel : pr::Body::rail;
+  if (standard) {
+    // Generated from the definition: nothing to smooth.
+    options.curve.smoothing_length = 0.0;
+    pr::RawProfile raw;
+    raw.body = options.read.body;
+    if (wheel) {
+      pr::S1002Options s = args.s1002;
+      s.side = side;
+      raw.source = "S1002";
+      raw.points = pr::s1002_points(s);
+      options.nominal_radius = s.nominal_radius;
+    } else {
+      pr::Rail60E1Options r;
+      r.side = side;
+      r.inclination = parse_inclination(args.inclination);
+      raw.source = "60E1";
+      raw.points = pr::rail_60e1_points(r);
+    }
+    options.name = raw.source;
+    raw.lines.assign(raw.points.size(), 0);
+    return pr::prepare_profile(std::move(raw), options);
+  }
+  const auto unit = pr::parse_length_unit(args.unit);
+  if (!unit) throw InputError("--unit " + args.unit + ": must be auto, mm or m");
+  options.read.unit = *unit;
+  options.curve.smoothing_length = args.smoothing;
+  if (wheel && args.radius->count() > 0) options.nominal_radius = args.s1002.nominal_radius;
+  return pr::load_profile(what, options);
+}
+
+void run_profile(const ProfileArgs& args) {
+  const pr::LoadedProfile loaded = make_profile(args);
+  const pr::Profile& profile = loaded.profile;
+  const pr::PointList points = profile.resample(args.spacing);
+  if (!args.out.empty()) {
+    pr::CsvWriteOptions csv;
+    csv.name = profile.info().name;
+    csv.body = profile.body();
+    csv.side = profile.side();
+    pr::write_csv(args.out, points, csv);
+  }
+  if (!args.out.empty() && !args.info && !args.json) return;
+
+  // Curvature extremes at the output points.
+  const double step = profile.length() / static_cast<double>(points.size() - 1);
+  double k_min = std::numeric_limits<double>::infinity(), k_max = -k_min;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double k = profile.curvature(step * static_cast<double>(i));
+    k_min = std::min(k_min, k);
+    k_max = std::max(k_max, k);
+  }
+  std::optional<pr::WheelParameters> parameters;
+  if (profile.body() == pr::Body::wheel) parameters = pr::wheel_parameters(profile);
+  std::optional<pr::ProfilePoint> gauge;
+  const pr::ProfilePoint top =
+      profile.body() == pr::Body::rail ? pr::top_of_rail(profile) : pr::ProfilePoint{};
+  if (profile.body() == pr::Body::rail) {
+    try {
+      gauge = pr::gauge_point(profile);
+    } catch (const InputError&) {
+      // A partial rail profile need not reach 14 mm below its top; then there is no gauge point.
+    }
+  }
+  const auto& cleaning = loaded.cleaning;
+
+  if (args.json) {
+    JsonObject steps;
+    for (const auto& s : cleaning.steps) steps.add(s.name, static_cast<int>(s.dropped));
+    JsonObject out;
+    out.add("name", profile.info().name)
+        .add("body", std::string(pr::to_string(profile.body())))
+        .add("side", std::string(pr::to_string(profile.side())))
+        .add("points_read", static_cast<int>(loaded.points_read))
+        .add("points_kept", static_cast<int>(cleaning.kept_points))
+        .add("points_dropped", static_cast<int>(loaded.points_read - cleaning.kept_points))
+        .add_raw("dropped_by_step", steps.str())
+        .add("kinks", static_cast<int>(cleaning.kinks.size()))
+        .add("length", profile.length())
+        .add("y_min", profile.y_min())
+        .add("y_max", profile.y_max())
+        .add("curvature_min", k_min)
+        .add("curvature_max", k_max);
+    if (parameters)
+      out.add("Sh", parameters->Sh).add("Sd", parameters->Sd).add("qR", parameters->qR);
+    if (profile.body() == pr::Body::rail) {
+      out.add("top_y", top.point[0]).add("top_z", top.point[1]);
+      if (gauge) out.add("gauge_point_y", gauge->point[0]).add("gauge_point_z", gauge->point[1]);
+    }
+    std::cout << out.str() << '\n';
+    return;
+  }
+  std::printf("profile    %s (%s, %s side)\n", profile.info().name.c_str(),
+              std::string(pr::to_string(profile.body())).c_str(),
+              std::string(pr::to_string(profile.side())).c_str());
+  std::printf("points     %s; %zu read, %zu dropped\n", cleaning.summary().c_str(),
+              loaded.points_read, loaded.points_read - cleaning.kept_points);
+  for (const auto& kink : cleaning.kinks)
+    std::printf("kink       line %d at (%.3f, %.3f) mm: turns %.0f deg\n", kink.line,
+                kink.point[0] * 1e3, kink.point[1] * 1e3, kink.angle_deg);
+  std::printf("y range    %.3f ... %.3f mm (arc length %.3f mm)\n", profile.y_min() * 1e3,
+              profile.y_max() * 1e3, profile.length() * 1e3);
+  std::printf("curvature  min %.4g 1/m, max %.4g 1/m (positive = convex)\n", k_min, k_max);
+  if (parameters) {
+    std::printf("Sh         %.3f mm\n", parameters->Sh * 1e3);
+    std::printf("Sd         %.3f mm\n", parameters->Sd * 1e3);
+    std::printf("qR         %.3f mm\n", parameters->qR * 1e3);
+  }
+  if (profile.body() == pr::Body::rail) {
+    std::printf("top        (%.3f, %.3f) mm\n", top.point[0] * 1e3, top.point[1] * 1e3);
+    if (gauge)
+      std::printf("gauge pt   (%.3f, %.3f) mm (14 mm below the top)\n", gauge->point[0] * 1e3,
+                  gauge->point[1] * 1e3);
+  }
+  if (!args.out.empty())
+    std::printf("written    %s (%zu points, y z in mm)\n", args.out.c_str(), points.size());
+}
+
+}  // namespace
+
+void add_profile_command(CLI::App& app) {
+  auto args = std::make_shared<ProfileArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "profile",
+      "Generate or read a wheel or rail profile, clean and validate it, fit it with a smooth\n"
+      "curve and write it resampled and/or summarise it.\n"
+      "Frame: y lateral, positive towards the field side (flange and gauge face at -y); z\n"
+      "vertical, positive downwards. Generated profiles: origin at the taping line (S1002) or\n"
+      "the top of rail (60E1). Files keep their origin; their axes are oriented automatically.\n"
+      "Files: plain y z text/CSV (header optional), SIMPACK/CONTACT .prw/.prr, MiniProf\n"
+      ".whl/.ban. Bad input gives a message naming file, line and problem, and exit code 2;\n"
+      "an existing --out file is only ever replaced by a complete new one.\n"
+      "Examples:\n"
+      "  wheelwear profile --wheel S1002 --info --json\n"
+      "  wheelwear profile --rail 60E1 --inclination 1:20 --out rail.csv\n"
+      "  wheelwear profile --wheel measured.whl --out wheel.csv --info");
+  cmd->add_option("--wheel", args->wheel, "S1002 (EN 13715) or a wheel profile file");
+  cmd->add_option("--rail", args->rail, "60E1 (UIC60 head, EN 15302 arcs) or a rail profile file");
+  cmd->add_option("--out", args->out,
+                  "write the cleaned, resampled profile as CSV: header y_mm,z_mm, values in mm");
+  cmd->add_flag("--info", args->info,
+                "print a summary: points kept/dropped, y range, curvature extremes, and Sh, Sd,\n"
+                "qR (EN 15313) for wheels (the default when --out is not given)");
+  cmd->add_flag("--json", args->json,
+                "print the summary as one JSON object, SI units (m, 1/m); wheels have Sh, Sd, qR");
+  cmd->add_option("--side", args->side, "side of the track: left or right")
+      ->check(CLI::IsMember({"left", "right"}))
+      ->capture_default_str();
+  cmd->add_option("--spacing", args->spacing, "arc-length spacing of the output points [m]")
+      ->capture_default_str();
+  cmd->add_option("--smoothing", args->smoothing,
+                  "files: smoothing length [m]; wavelengths of 2*pi times it are halved, 0\n"
+                  "interpolates (generated profiles are never smoothed)")
+      ->capture_default_str();
+  cmd->add_option("--unit", args->unit,
+                  "plain-text files: auto (from the header or the magnitudes), mm or m")
+      ->check(CLI::IsMember({"auto", "mm", "m"}))
+      ->capture_default_str();
+  cmd->add_option("--max-drop", args->max_drop,
+                  "fail if the cleaning drops more than this fraction of the points")
+      ->capture_default_str();
+  args->flange_height =
+      cmd->add_option("--flange-height", args->s1002.flange_height,
+                      "S1002 flange height Sh [m], 0.028 ... 0.032 (EN 13715 h28 ... h32)")
+          ->capture_default_str();
+  args->flange_thickness =
+      cmd->add_option("--flange-thickness", args->s1002.flange_thickness,
+                      "S1002 flange thickness Sd [m], 0.028 ... 0.0325 (EN 13715 e28 ... e32.5)")
+          ->capture_default_str();
+  args->radius = cmd->add_option("--radius", args->s1002.nominal_radius,
+                                 "wheels: nominal rolling radius at the taping line [m] (recorded)")
+                     ->capture_default_str();
+  args->inclination_option = cmd->add_option("--inclination", args->inclination,
+                                             "60E1 rail inclination: none, 1:40 or 1:20")
+                                 ->capture_default_str();
+  cmd->callback([args] {
+    ProfileArgs run = *args;
+    if (run.out.empty()) run.info = true;
+    run_profile(run);
+  });
+}
+
+}  // namespace wheelwear::cli

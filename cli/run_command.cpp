@@ -1,0 +1,194 @@
+// `wheelwear run`: the wear-evolution run of a scene (the built-in default when none is given).
+
+#include <tbb/global_control.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "commands.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "json_writer.hpp"
+#include "wheelwear/pipeline/results_file.hpp"
+#include "wheelwear/pipeline/wear_run.hpp"
+#include "wheelwear/core/text.hpp"
+
+namespace wheelwear::cli {
+
+namespace {
+
+struct RunArgs {
+  std::string scene;
+  std::string output;
+  std::string resume;
+  int threads = 0;
+  bool overwrite = false;
+  bool quiet = false;
+  bool json = false;
+  std::string export_default;
+};
+
+std::string duration(double seconds) {
+  char text[32];
+  if (seconds < 120)
+    std::snprintf(text, sizeof text, "%.0f s", seconds);
+  else
+    std::snprintf(text, sizeof text, "%.0f min", seconds / 60.0);
+  return text;
+}
+
+// Progress on stderr: one redrawn line on a terminal, one line per step otherwise.
+void show_progress(const pipeline::RunProgress& p) {
+  const bool tty = ::isatty(STDERR_FILENO) != 0;
+  const double done = p.total_distance > 0.0 ? p.distance / p.total_distance : 1.0;
+  const int width = 24;
+  const int filled = static_cast<int>(done * width + 0.5);
+  const std::string bar = std::string(static_cast<std::size_t>(filled), '#') +
+                          std::string(static_cast<std::size_t>(width - filled), '.');
+  // ETA from the distance rate so far; the step lengths vary, the distance is what remains.
+  const double eta = done > 0.0 ? p.elapsed * (1.0 - done) / done : 0.0;
+  std::fprintf(stderr, "%s[%s] step %d  %.1f / %.1f km  %.0f states/s  ETA %s%s%s", tty ? "\r" : "",
+               bar.c_str(), p.step, p.distance / 1e3, p.total_distance / 1e3,
+               p.evaluations_per_second, done >= 1.0 ? "0 s" : duration(eta).c_str(),
+               p.failed_contacts > 0
+                   ? ("  (" + std::to_string(p.failed_contacts) + " contacts skipped)").c_str()
+                   : "",
+               tty ? "   " : "\n");
+  if (tty && done >= 1.0) std::fputc('\n', stderr);
+  std::fflush(stderr);
+}
+
+void report(const RunArgs& args, const std::string& output, const pipeline::RunSummary& s) {
+  const pipeline::ResultsFile file = pipeline::ResultsFile::read(output);
+  const int last = file.completed_steps() - 1;
+  const std::string wheel =
+      file.has(pipeline::ResultsFile::step_group(last) + "/wheel") ? "wheel" : "wheel_left";
+  auto at = [&](int step, const std::string& name) {
+    return file.read_step_array(step, name).at(0);
+  };
+  const double rate = s.elapsed > 0.0 ? static_cast<double>(s.evaluations) / s.elapsed : 0.0;
+  if (args.json) {
+    JsonObject o;
+    o.add("output", output)
+        .add("steps", last)
+        .add("distance", at(last, "distance"))
+        .add("Sh_start", at(0, wheel + "/Sh"))
+        .add("Sh_end", at(last, wheel + "/Sh"))
+        .add("Sd_start", at(0, wheel + "/Sd"))
+        .add("Sd_end", at(last, wheel + "/Sd"))
+        .add("qR_start", at(0, wheel + "/qR"))
+        .add("qR_end", at(last, wheel + "/qR"))
+        .add("conicity_start", at(0, "equivalent_conicity"))
+        .add("conicity_end", at(last, "equivalent_conicity"))
+        .add("elapsed", s.elapsed)
+        .add("evaluations", static_cast<double>(s.evaluations))
+        .add("states_steps_per_second", rate)
+        .add("geometry_solves", static_cast<double>(s.geometry_solves))
+        .add("patches", static_cast<double>(s.patches))
+        .add("table_patches", static_cast<double>(s.table_patches));
+    std::cout << o.str() << '\n';
+    return;
+  }
+  std::printf("wrote %s: %d wear steps, %.1f km\n", output.c_str(), last,
+              at(last, "distance") / 1e3);
+  std::printf("  %-22s %10s %10s\n", "", "start", "end");
+  std::printf("  %-22s %10.2f %10.2f\n", "Sh [mm]", at(0, wheel + "/Sh") * 1e3,
+              at(last, wheel + "/Sh") * 1e3);
+  std::printf("  %-22s %10.2f %10.2f\n", "Sd [mm]", at(0, wheel + "/Sd") * 1e3,
+              at(last, wheel + "/Sd") * 1e3);
+  std::printf("  %-22s %10.2f %10.2f\n", "qR [mm]", at(0, wheel + "/qR") * 1e3,
+              at(last, wheel + "/qR") * 1e3);
+  std::printf("  %-22s %10.4f %10.4f\n", "conicity (3 mm)", at(0, "equivalent_conicity"),
+              at(last, "equivalent_conicity"));
+  std::printf("  %zu state evaluations in %.1f s (%.0f states/s, %zu contact geometries)\n",
+              s.evaluations, s.elapsed, rate, s.geometry_solves);
+  if (s.table_patches > 0) {
+    std::printf("  %zu of %zu patches with totals from the book of tables (best)\n",
+                s.table_patches, s.patches);
+  }
+  std::printf("plots: scripts/plot_run.py %s\n", output.c_str());
+}
+
+void run(const RunArgs& args) {
+  if (!args.export_default.empty()) {
+    const std::filesystem::path dir(args.export_default);
+    std::filesystem::create_directories(dir);
+    for (const auto& [name, text] :
+         {std::pair{"default.toml", pipeline::default_scene_text()},
+          std::pair{"default_states.csv", pipeline::default_states_text()}}) {
+      if (std::filesystem::exists(dir / name) && !args.overwrite) {
+        throw InputError("--export-default-scene: " + (dir / name).string() +
+                         " exists; pass --overwrite to replace it");
+      }
+      core::write_file_atomically(dir / name, text);
+    }
+    std::cout << "wrote " << (dir / "default.toml").string() << " and its load collective; run it "
+              << "with: wheelwear run " << (dir / "default.toml").string() << " -o run.h5\n";
+    return;
+  }
+  std::unique_ptr<tbb::global_control> threads;
+  if (args.threads > 0) {
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    static_cast<std::size_t>(args.threads));
+  }
+  pipeline::RunOptions options;
+  options.overwrite = args.overwrite;
+  if (!args.quiet) options.progress = show_progress;
+
+  if (!args.resume.empty()) {
+    if (!args.scene.empty() || !args.output.empty()) {
+      throw InputError("--resume " + args.resume +
+                       ": the scene and the output come from that file; give neither SCENE nor -o");
+    }
+    report(args, args.resume, pipeline::resume_run(args.resume, options));
+    return;
+  }
+  if (args.output.empty()) throw InputError("-o: give the results file to write, e.g. -o run.h5");
+  pipeline::RunSummary summary;
+  if (args.scene.empty()) {
+    summary = pipeline::run_scene(pipeline::default_scene(), pipeline::default_scene_text(), {},
+                                  true, args.output, options);
+  } else {
+    const std::filesystem::path path(args.scene);
+    const pipeline::Scene scene = pipeline::load_scene(path);
+    const std::string text = core::read_text_file(path);
+    summary = pipeline::run_scene(scene, text, std::filesystem::absolute(path).parent_path(), false,
+                                  args.output, options);
+  }
+  report(args, args.output, summary);
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app) {
+  auto args = std::make_shared<RunArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "run",
+      "Wear-evolution run of a scene: evaluate every wheelset state of the load collective, wear\n"
+      "the wheel profile step by step, record everything in one HDF5 file.\n"
+      "Without SCENE the built-in default scene runs (S1002 on 60E1 1:40, 1000 states of a mixed\n"
+      "line, 100 km); `wheelwear run --export-default-scene DIR` writes it out to start from.\n"
+      "Each step is published atomically: a killed run keeps every finished step and continues\n"
+      "with --resume. Plots: scripts/plot_run.py FILE.");
+  cmd->add_option("scene", args->scene, "scene file (TOML); the built-in default when omitted")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args->output, "results file to write (HDF5)");
+  cmd->add_option("--resume", args->resume,
+                  "continue the run recorded in this results file from its last step")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--threads", args->threads, "worker threads (default: all cores)")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_flag("--overwrite", args->overwrite, "replace an existing output file");
+  cmd->add_flag("-q,--quiet", args->quiet, "no progress on stderr");
+  cmd->add_flag("--json", args->json, "print the summary as JSON");
+  cmd->add_option("--export-default-scene", args->export_default,
+                  "write the built-in scene (default.toml, default_states.csv) into this "
+                  "directory and exit");
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace wheelwear::cli

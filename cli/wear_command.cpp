@@ -1,0 +1,242 @@
+// `wheelwear wear`: the wear of one wheel position, per contact patch, mapped onto the wheel.
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "contact_inputs.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "json_writer.hpp"
+#include "wheelwear/tangential/contact_model.hpp"
+#include "wheelwear/wear/wear_distribution.hpp"
+
+namespace wheelwear::cli {
+
+namespace {
+
+struct WearArgs {
+  ContactInputs in;
+  std::string law = "usfd";
+  std::string law_table;
+  std::string model = "sdec";
+  bool compare = false;
+  int cells = 50;
+  std::string map;
+  bool json = false;
+};
+
+// One model's wear of one patch.
+struct ModelWear {
+  tangential::ContactModel model;
+  tangential::TangentialSolution solution;
+  wear::WearDistribution distribution;
+  wear::WearSummary summary;
+};
+
+// Lateral position on the wheel, + towards the flange, of arc length s [m].
+double wheel_y(const profiles::Profile& wheel, double s) {
+  return -wheel.position(s).x();
+}
+
+ModelWear wear_of(const WearArgs& args, const contactgeom::WheelRailPatch& p,
+                  tangential::ContactModel model, const wear::WearLaw& law) {
+  std::optional<contactgeom::Sdec> hertz;
+  if (p.hertz_valid) hertz = contactgeom::Sdec{p.hertz.a, p.hertz.b, 0.0};
+  const tangential::ModelPatch mp = tangential::model_patch(model, p.sdec, hertz);
+  tangential::FastsimOptions options;
+  options.nx = options.ny = args.cells;
+  options.cell_fields = true;
+  // The Tgamma map needs the cells' positions; the wear alone needs work, slip and pressure.
+  options.field_set = args.map.empty() ? tangential::CellFieldSet::wear : tangential::CellFieldSet::all;
+  ModelWear out{model,
+                tangential::fastsim(mp.method, mp.region, args.in.creepages_at(p),
+                              {p.normal_force, args.in.mu}, args.in.material(), options),
+                {},
+                {}};
+  // A grid on the wheel wide enough for every model's region around O, 0.1 mm bins.
+  const double reach = 2.0 * std::max(p.sdec.b, hertz ? hertz->b : 0.0) + 2e-3;
+  const double ds = 0.1e-3;
+  const auto bins = static_cast<std::size_t>(2.0 * reach / ds) + 1;
+  out.distribution = wear::WearDistribution::zeros(p.s_wheel - reach, ds, bins);
+  wear::accumulate_wear(*out.solution.fields, args.in.motion.speed, law,
+                        {p.s_wheel, p.rolling_radius}, 1.0, out.distribution);
+  out.summary = wear::summarise(out.distribution);
+  return out;
+}
+
+std::string model_json(const ModelWear& w, const profiles::Profile& wheel) {
+  JsonObject o;
+  o.add("model", tangential::model_name(w.model))
+      .add("worn_volume_per_metre", w.summary.volume_per_metre)
+      .add("peak_depth_per_metre", w.summary.peak_depth)
+      .add("peak_y_wheel", wheel_y(wheel, w.summary.peak_s))
+      .add("centroid_y_wheel", wheel_y(wheel, w.summary.centroid_s))
+      .add("band_width", w.summary.band_width)
+      .add("frictional_work", w.solution.frictional_work)
+      .add("Fx", w.solution.forces.Fx)
+      .add("Fy", w.solution.forces.Fy);
+  return o.str();
+}
+
+// Long-format CSV: one row per cell (T gamma) and per wheel bin (depth); written to a
+// temporary file and renamed, so an existing map is replaced whole or not at all.
+void write_map(const std::string& path, const std::vector<std::vector<ModelWear>>& per_patch,
+               const profiles::Profile& wheel) {
+  const std::filesystem::path target(path);
+  std::filesystem::path partial = target;
+  partial += ".partial";
+  try {
+    std::ofstream out(partial);
+    if (!out) throw InputError("--map " + path + ": cannot write there");
+    out << "# wheelwear wear map. kind=tgamma: frictional work density per metre rolled [J/m^2/m]"
+           " at cell (x_m, y_m) of the patch frame (+y towards the flange); kind=depth: worn"
+           " depth per metre running [m/m] at wheel arc length s_wheel_m\n";
+    out << "patch,model,kind,x_m,y_m,s_wheel_m,y_wheel_m,value\n";
+    out.precision(10);
+    for (std::size_t k = 0; k < per_patch.size(); ++k) {
+      for (const ModelWear& w : per_patch[k]) {
+        const auto& f = *w.solution.fields;
+        const std::string_view name = tangential::model_name(w.model);
+        for (std::size_t c = 0; c < f.work.size(); ++c)
+          out << k + 1 << ',' << name << ",tgamma," << f.x[c] << ',' << f.y[c] << ",,," << f.work[c]
+              << '\n';
+        for (std::size_t b = 0; b < w.distribution.depth.size(); ++b) {
+          const double s = w.distribution.s(b);
+          out << k + 1 << ',' << name << ",depth,,," << s << ',' << wheel_y(wheel, s) << ','
+              << w.distribution.depth[b] << '\n';
+        }
+      }
+    }
+    if (!out) throw std::runtime_error("--map " + path + ": write failed");
+    out.close();
+    std::filesystem::rename(partial, target);
+  } catch (...) {
+    std::filesystem::remove(partial);  // an existing map stays as it was
+    throw;
+  }
+}
+
+void run_wear(const WearArgs& args) {
+  require(args.in.motion.speed > 0.0 && std::isfinite(args.in.motion.speed), "--V",
+          args.in.motion.speed, "the rolling speed must be positive (m/s)");
+  require(args.cells >= 2 && args.cells <= 1000, "--cells", args.cells,
+          "FASTSIM cells per direction must lie in 2 ... 1000");
+  std::optional<wear::WearLaw> law;
+  if (!args.law_table.empty()) {
+    // A user's own table of the law's kind: T gamma regimes, or an Archard wear map.
+    if (args.law == "usfd") law = wear::TgammaLaw::load_csv(args.law_table);
+    if (args.law == "archard") law = wear::ArchardLaw::load_csv(args.law_table);
+  } else {
+    law = wear::default_wear_law(args.law);
+  }
+  if (!law) throw InputError("--law " + args.law + ": unknown wear law; use usfd or archard");
+  const auto chosen = tangential::parse_contact_model(args.model);
+  if (!chosen) {
+    throw InputError("--model " + args.model +
+                     ": unknown contact model; use sdec, eql, eqe, eqe-shifted or hertz");
+  }
+  const SolvedContact solved = solve_contact(args.in);
+  const auto& contact = solved.contact;
+  if (contact.status == contactgeom::WheelRailStatus::no_contact ||
+      contact.status == contactgeom::WheelRailStatus::not_converged ||
+      contact.status == contactgeom::WheelRailStatus::profile_end) {
+    throw std::runtime_error(std::string("contact ") + contactgeom::status_name(contact.status) +
+                             ": " + contact.message);
+  }
+  if (!contact.message.empty()) std::cerr << "wheelwear: warning: " << contact.message << '\n';
+  const profiles::Profile& wheel = solved.pair.wheel;
+
+  std::vector<std::vector<ModelWear>> per_patch;
+  for (const auto& p : contact.patches) {
+    std::vector<ModelWear> models;
+    if (args.compare) {
+      for (tangential::ContactModel m : tangential::kContactModels) {
+        if (m == tangential::ContactModel::hertz && !p.hertz_valid) continue;
+        models.push_back(wear_of(args, p, m, *law));
+      }
+    } else {
+      models.push_back(wear_of(args, p, *chosen, *law));
+    }
+    per_patch.push_back(std::move(models));
+  }
+  if (!args.map.empty()) write_map(args.map, per_patch, wheel);
+
+  if (args.json) {
+    std::vector<std::string> patches;
+    for (std::size_t k = 0; k < per_patch.size(); ++k) {
+      const auto& p = contact.patches[k];
+      std::vector<std::string> models;
+      for (const ModelWear& w : per_patch[k]) models.push_back(model_json(w, wheel));
+      const ModelWear& first = per_patch[k].front();
+      JsonObject o;
+      o.add("N", p.normal_force)
+          .add("y_wheel", p.y_wheel)
+          .add("contact_angle", p.contact_angle)
+          .add("worn_volume_per_metre", first.summary.volume_per_metre)
+          .add("peak_depth_per_metre", first.summary.peak_depth)
+          .add("peak_y_wheel", wheel_y(wheel, first.summary.peak_s))
+          .add("centroid_y_wheel", wheel_y(wheel, first.summary.centroid_s))
+          .add_raw("models", json_array(models));
+      patches.push_back(o.str());
+    }
+    JsonObject out;
+    out.add("status", contactgeom::status_name(contact.status))
+        .add("law", args.law)
+        .add("V", args.in.motion.speed)
+        .add_raw("patches", json_array(patches));
+    std::cout << out.str() << '\n';
+    return;
+  }
+  std::printf("wear law %s, V = %g m/s\n", args.law.c_str(), args.in.motion.speed);
+  for (std::size_t k = 0; k < per_patch.size(); ++k) {
+    const auto& p = contact.patches[k];
+    std::printf("patch %zu: N %.5g N, O at %.2f mm on the wheel (+ towards the flange)\n", k + 1,
+                p.normal_force, p.y_wheel * 1e3);
+    std::printf("  %-12s %14s %14s %12s %12s %10s\n", "model", "volume mm2/km", "peak um/km",
+                "peak y mm", "centroid mm", "band mm");
+    for (const ModelWear& w : per_patch[k]) {
+      std::printf("  %-12s %14.5g %14.5g %12.3f %12.3f %10.2f\n",
+                  std::string(tangential::model_name(w.model)).c_str(),
+                  w.summary.volume_per_metre * 1e6 * 1e3, w.summary.peak_depth * 1e6 * 1e3,
+                  wheel_y(wheel, w.summary.peak_s) * 1e3,
+                  wheel_y(wheel, w.summary.centroid_s) * 1e3, w.summary.band_width * 1e3);
+    }
+  }
+}
+
+}  // namespace
+
+void add_wear_command(CLI::App& app) {
+  auto args = std::make_shared<WearArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "wear",
+      "Wear of one wheel position: the contact patches of `wheelwear contact`, the tangential\n"
+      "problem with a contact model, a wear law per cell, and the worn depth per metre of\n"
+      "running distance across the wheel profile. `--compare` sets the five contact models\n"
+      "side by side: sdec (FASTSIM-SDEC on the SDEC region), eql, eqe (equivalent ellipse at\n"
+      "O), eqe-shifted (ellipse at O'), hertz (Hertz ellipse from the curvatures at O).\n"
+      "Example: wheelwear wear --dy 0.004 --load 55000 --vx 1e-3 --phi 0.1 --V 20 --compare");
+  add_contact_options(cmd, args->in);
+  cmd->add_option("--law", args->law, "wear law: usfd (T gamma) or archard (KTH map)")
+      ->capture_default_str();
+  cmd->add_option("--law-table", args->law_table,
+                  "your own table for the law (CSV, the format of data/wear/usfd.csv for usfd,\n"
+                  "data/wear/archard.csv for archard)");
+  cmd->add_option("--model", args->model, "contact model: sdec, eql, eqe, eqe-shifted, hertz")
+      ->capture_default_str();
+  cmd->add_flag("--compare", args->compare, "all five contact models side by side");
+  cmd->add_option("--cells", args->cells, "FASTSIM cells per direction")->capture_default_str();
+  cmd->add_option("--map", args->map, "write the T gamma map and the depth distribution (CSV)");
+  cmd->add_flag("--json", args->json, "print one JSON object");
+  cmd->callback([args] { run_wear(*args); });
+}
+
+}  // namespace wheelwear::cli

@@ -1,0 +1,72 @@
+#include "wheelwear/profiles/profile_source.hpp"
+
+#include <cmath>
+
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/profiles/profile_loader.hpp"
+#include "wheelwear/profiles/rail_60e1.hpp"
+#include "wheelwear/profiles/s1002.hpp"
+#include "wheelwear/profiles/track.hpp"
+
+namespace wheelwear::profiles {
+
+namespace {
+
+bool is_builtin_rail(const std::string& spec) {
+  return spec == "60E1" || spec == "UIC60";
+}
+
+// Cants a rail profile towards the track centre by `angle` about its top of rail, as the
+// generated 60E1 is canted: the crown turns towards the gauge side (-y), the field side rises.
+profiles::Profile canted(const profiles::Profile& rail, double angle) {
+  const profiles::Point top = profiles::top_of_rail(rail).point;
+  const double c = std::cos(angle), s = std::sin(angle);
+  profiles::PointList points = rail.resample(0.1e-3);
+  for (auto& p : points) {
+    const profiles::Point d = p - top;
+    p = top + profiles::Point(c * d[0] + s * d[1], -s * d[0] + c * d[1]);
+  }
+  profiles::ProfileInfo info = rail.info();
+  info.name += " canted";
+  profiles::CurveOptions curve = rail.curve_options();
+  curve.smoothing_length = 0.0;  // the points are already smooth: no second smoothing
+  return profiles::Profile(points, info, curve);
+}
+
+}  // namespace
+
+double default_inclination(const std::string& spec) {
+  return is_builtin_rail(spec) ? std::atan(1.0 / 40.0) : 0.0;
+}
+
+profiles::Profile wheel_profile(const std::string& spec, double radius) {
+  require(radius > 0.1 && radius < 2.0, "wheel radius", radius, "must lie in 0.1 ... 2 m");
+  if (spec == "S1002") {
+    profiles::S1002Options options;
+    options.nominal_radius = radius;
+    return profiles::s1002(options);
+  }
+  profiles::LoadOptions options;
+  options.read.body = profiles::Body::wheel;
+  options.nominal_radius = radius;
+  return profiles::load_profile(spec, options).profile;
+}
+
+profiles::Profile rail_profile(const std::string& spec, std::optional<double> inclination) {
+  const double angle = inclination.value_or(default_inclination(spec));
+  require(std::isfinite(angle) && std::abs(angle) <= 0.1, "rail inclination", angle,
+          "must lie in -0.1 ... 0.1 rad (1:40 is 0.025, 1:20 is 0.05)");
+  if (is_builtin_rail(spec)) {
+    require(angle >= 0.0, "rail inclination", angle,
+            "the built-in 60E1 is canted towards the track centre (>= 0)");
+    profiles::Rail60E1Options options;
+    options.inclination = angle;
+    return profiles::rail_60e1(options);
+  }
+  profiles::LoadOptions options;
+  options.read.body = profiles::Body::rail;
+  const profiles::Profile rail = profiles::load_profile(spec, options).profile;
+  return angle == 0.0 ? rail : canted(rail, angle);
+}
+
+}  // namespace wheelwear::profiles

@@ -1,0 +1,40 @@
+#pragma once
+/// Kalker's exact theory of steady rolling for elastically similar half-spaces (Kalker 1990,
+/// Ch. 5; as solved by Vollebregt's CONTACT): piecewise-constant tractions on a rectangular
+/// grid, analytical influence coefficients, Coulomb friction with adhesion and slip areas.
+
+#include <vector>
+
+#include "wheelwear/contactgeom/sdec.hpp"
+#include "wheelwear/tangential/creep_types.hpp"
+#include "wheelwear/tangential/exact/exact_types.hpp"
+
+namespace wheelwear::tangential {
+
+/// The grid of an SDEC patch: [-margin a, margin a] x [y0 - margin b, y0 + margin b] around
+/// the patch's mid-point O' (y0 = psi b from O), options.nx x options.ny elements.
+ElementGrid sdec_grid(const contactgeom::Sdec& sdec, const ExactOptions& options);
+
+/// Steady rolling on an SDEC patch with the prescribed pressure of Liu, Fu & Bruni 2022, Eq. 4,
+/// p_n = (p0/a) sqrt(x_l(y)^2 - x^2), p0 = 3N/(2 pi a b), evaluated at element centres (as
+/// CONTACT's SDEC option does; its sum over the grid differs from N by the grid's error).
+/// Creepages are at O: the rigid slip is w = (vx - phi y, vy + phi (x + dx/6)) with y from O
+/// (the spin term dx/6 upstream of the element centre, as in CONTACT's steady-rolling
+/// discretisation). The slip of element i is s = w + (u(x_i) - u(x_i + dx))/dx (Kalker's
+/// backward difference; material enters at the leading edge x > 0); where it slips
+/// |p| = mu p_n and p opposes s.
+/// Throws InputError on invalid input.
+ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                         const ContactLoad& load, const Material& material,
+                         const ExactOptions& options = {});
+
+/// Steady rolling for a given undeformed distance `h` [m] per element of `grid` (index
+/// j*nx + i, before the approach; the contact area follows from the normal problem,
+/// exact_normal) with normal force load.N and friction load.mu. Creepages are at the origin
+/// of the grid's coordinates; rigid slip, slip and friction as for exact_sdec. Forces are on
+/// body 1 against body 2 (Kalker's convention). Throws InputError on invalid input.
+ExactSolution exact_rolling(const ElementGrid& grid, const std::vector<double>& h,
+                            const Creepages& creepages, const ContactLoad& load,
+                            const Material& material, const ExactOptions& options = {});
+
+}  // namespace wheelwear::tangential

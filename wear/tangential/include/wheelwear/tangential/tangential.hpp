@@ -1,0 +1,119 @@
+#pragma once
+/// The one entry point of the tangential problem: a patch, its creepages, the material and a
+/// method in; forces, spin moment, status and (on request) per-cell fields out. The command
+/// line, the wear run and the vehicle model all call solve_patch; the methods below are named
+/// as the command line's `creep --method`.
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "wheelwear/contactgeom/sdec.hpp"
+#include "wheelwear/core/enum_names.hpp"
+#include "wheelwear/tangential/creep_types.hpp"
+#include "wheelwear/tangential/exact/exact_types.hpp"
+#include "wheelwear/tangential/fastsim.hpp"
+
+namespace wheelwear::tangential {
+
+/// How the tangential problem of a patch is solved.
+enum class Method {
+  fastsim_sdec,         ///< FASTSIM-SDEC (Liu, Fu & Bruni 2022, Eq. 15-18)
+  fastsim_eql,          ///< FASTSIM-EQ.L: SDEC region, Kalker's flexibilities of the ellipse
+  fastsim_eqe,          ///< FASTSIM-EQ.E: classic FASTSIM on the ellipse a, b centred at O
+  fastsim_eqe_shifted,  ///< FASTSIM-EQ.E centred at O' = O + psi b, vx' = vx - phi psi b
+  fastsim_elliptic,     ///< classic elliptic FASTSIM on the ellipse a, b (psi ignored)
+  linear_sdec,          ///< Kalker's linear theory for the SDEC (Eq. 11-12); totals only
+  she_sdec,             ///< Shen-Hedrick-Elkins saturation of linear_sdec; totals only
+  table,                ///< the book of exact-theory tables; totals only, refuses outside it
+  /// Inside the book of tables its totals and frictional work, spread over the patch as
+  /// FASTSIM-SDEC spreads them (table_correction.hpp); FASTSIM-SDEC alone outside.
+  best,
+  exact,  ///< Kalker's exact theory with the SDEC pressure prescribed (exact_sdec)
+};
+
+/// The command line's names, in the order `creep --help` lists them.
+inline constexpr core::NameTable<Method, 10> kMethodNames = {{
+    {Method::fastsim_sdec, "fastsim-sdec"},
+    {Method::fastsim_eql, "fastsim-eql"},
+    {Method::fastsim_eqe, "fastsim-eqe"},
+    {Method::fastsim_eqe_shifted, "fastsim-eqe-shifted"},
+    {Method::fastsim_elliptic, "fastsim-elliptic"},
+    {Method::linear_sdec, "linear-sdec"},
+    {Method::she_sdec, "she-sdec"},
+    {Method::table, "table"},
+    {Method::best, "best"},
+    {Method::exact, "exact"},
+}};
+
+/// "fastsim-sdec", ... (kMethodNames).
+std::string_view method_name(Method method);
+/// The method named `name` in kMethodNames; std::nullopt when unknown.
+std::optional<Method> parse_method(std::string_view name);
+
+/// The FASTSIM variant behind a FASTSIM method, best (fastsim_sdec), or std::nullopt for the
+/// methods that do not march strips (linear_sdec, she_sdec, table, exact).
+std::optional<FastsimMethod> fastsim_variant(Method method);
+
+/// True when the method returns per-cell fields (every FASTSIM method, best and exact).
+bool has_cell_fields(Method method);
+
+/// Discretisation of each method; a method reads only its own part.
+struct SolveOptions {
+  /// Grid, bound, scheme and fields of the FASTSIM methods and of best. With cell_fields the
+  /// solution carries the per-cell fields (exact always fills them when cell_fields is set).
+  FastsimOptions fastsim;
+  /// Grid and stopping tests of the exact method (exact_sdec): nx x ny elements over margin
+  /// times the patch.
+  ExactOptions exact;
+
+  void validate() const;  ///< throws InputError naming the bad field
+};
+
+/// Numerical outcome of a solve (data, not an error).
+enum class SolveStatus {
+  ok,             ///< solved as asked
+  not_converged,  ///< exact: the iteration cap was reached; the last iterate is returned
+  no_contact,     ///< exact: no element carries pressure
+};
+
+/// "ok", "not converged", "no contact".
+std::string_view status_name(SolveStatus status);
+
+/// Result of solve_patch.
+struct PatchSolution {
+  Method method = Method::fastsim_sdec;  ///< the method asked for
+  /// Kalker's convention: forces on the wheel, opposing the creepages; Mz about O where the
+  /// method defines it (forces.Mz holds it when forces.has_Mz).
+  CreepForces forces;
+  SolveStatus status = SolveStatus::ok;
+  std::string message;  ///< why, when status is not ok
+  /// best: true where the totals came from the book of tables, false where FASTSIM-SDEC
+  /// answered because the patch is outside it (table_outside says why).
+  bool from_table = false;
+  std::string table_outside;
+  int cells = 0;       ///< cells (FASTSIM) or contact elements (exact); 0 for totals only
+  int slip_cells = 0;  ///< of them, slipping
+  /// Per-cell fields when SolveOptions::fastsim.cell_fields and the method has them.
+  std::optional<CellFields> fields;
+  /// Frictional work per rolled distance [N] with cell fields: the sum of work * dA, which
+  /// best and exact make equal to the rigid slip's work -(Fx vx + Fy vy + Mz phi).
+  double frictional_work = 0.0;
+  /// exact: the full solution (grid, element states, iterations).
+  std::optional<ExactSolution> exact;
+};
+
+/// Solves the tangential problem on the patch `sdec` (for fastsim_elliptic the ellipse
+/// sdec.a, sdec.b) with creepages at O. Throws InputError on invalid input (|psi| >= 1,
+/// a or b <= 0, N <= 0, mu <= 0, NaN, a patch outside the book of tables with Method::table).
+PatchSolution solve_patch(Method method, const contactgeom::Sdec& sdec,
+                          const Creepages& creepages, const ContactLoad& load,
+                          const Material& material, const SolveOptions& options = {});
+
+/// As above, reusing `solution`'s per-cell storage (no allocation once a grid size has been
+/// seen; for loops over many patches).
+void solve_patch(Method method, const contactgeom::Sdec& sdec, const Creepages& creepages,
+                 const ContactLoad& load, const Material& material, const SolveOptions& options,
+                 PatchSolution& solution);
+
+}  // namespace wheelwear::tangential

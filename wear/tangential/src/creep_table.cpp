@@ -1,0 +1,270 @@
+#include "wheelwear/tangential/creep_table.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "creep_table_data.hpp"
+#include "wheelwear/core/input_error.hpp"
+
+namespace wheelwear::tangential {
+
+namespace {
+
+using detail::CreepTableBlock;
+
+constexpr double kSlack = 1e-12;  // relative slack on the range's ends (rounding of inputs)
+
+// Four-node (or fewer, on short axes) Lagrange stencil of q on increasing nodes x[0..n-1].
+struct Stencil {
+  int start = 0, count = 0;
+  std::array<double, 4> w{};
+};
+
+Stencil stencil(const double* x, int n, double q) {
+  Stencil s;
+  s.count = std::min(n, 4);
+  int k = 0;
+  while (k + 2 < n && q > x[k + 1]) ++k;
+  s.start = std::clamp(k - 1, 0, n - s.count);
+  for (int j = 0; j < s.count; ++j) {
+    double w = 1.0;
+    for (int m = 0; m < s.count; ++m) {
+      if (m != j) w *= (q - x[s.start + m]) / (x[s.start + j] - x[s.start + m]);
+    }
+    s.w[static_cast<std::size_t>(j)] = w;
+  }
+  return s;
+}
+
+// The block's normalisation coefficients at a/b, by the same four-node stencils in log(a/b) as
+// the forces: a linear interpolation would kink the normalised forces at every node of a/b.
+struct Normalisation {
+  double c11, c22, c23;
+};
+
+Normalisation normalisation(const CreepTableBlock& b, double g) {
+  const Stencil s = stencil(b.log_a_over_b, b.n_g, std::log(g));
+  Normalisation n{0.0, 0.0, 0.0};
+  for (int i = 0; i < s.count; ++i) {
+    n.c11 += s.w[i] * b.c11[s.start + i];
+    n.c22 += s.w[i] * b.c22[s.start + i];
+    n.c23 += s.w[i] * b.c23[s.start + i];
+  }
+  return n;
+}
+
+struct Normalised {
+  double xi, eta, chi;
+  double r() const { return std::sqrt(xi * xi + eta * eta + chi * chi); }
+};
+
+Normalised normalise(const CreepTableBlock& b, const contactgeom::Sdec& sdec, const Creepages& v,
+                     const ContactLoad& load, const Material& material) {
+  const Normalisation n = normalisation(b, sdec.ellipticity());
+  const double c = sdec.c(), mu_n = load.mu * load.N, gc2 = material.G * c * c;
+  return {gc2 * n.c11 * v.vx / mu_n, gc2 * n.c22 * v.vy / mu_n,
+          b.spin_scale * gc2 * c * n.c23 * v.phi / mu_n};
+}
+
+double r_max(const CreepTableBlock& b) {
+  return b.r[b.n_r - 1];
+}
+double psi_max(const CreepTableBlock& b) {
+  return b.psi[b.n_psi - 1];
+}
+
+// The blocks (one or two) and weights for nu; nullptr second when one block suffices.
+struct NuBlocks {
+  const CreepTableBlock* lower = nullptr;
+  const CreepTableBlock* upper = nullptr;
+  double t = 0.0;  // weight of upper
+};
+
+std::string range_text(double lo, double hi) {
+  std::ostringstream text;
+  text << lo << " ... " << hi;
+  return text.str();
+}
+
+const std::string kFallback = "; use FASTSIM-SDEC (--method fastsim-sdec or best) there";
+
+// Empty message when covered, else the reason.
+std::string check(const contactgeom::Sdec& sdec, const Creepages& v, const ContactLoad& load,
+                  const Material& material, NuBlocks* out) {
+  sdec.validate();
+  load.validate();
+  material.validate();
+  require_finite("vx", v.vx);
+  require_finite("vy", v.vy);
+  require_finite("phi", v.phi);
+  const int count = detail::kCreepTableBlockCount;
+  if (count == 0) return "the library was built without the creep table (data/creep_table.h5)";
+  const CreepTableBlock* blocks = detail::kCreepTableBlocks;
+  const double nu_lo = blocks[0].nu, nu_hi = blocks[count - 1].nu;
+  std::ostringstream why;
+  if (material.nu < nu_lo - 1e-12 || material.nu > nu_hi + 1e-12) {
+    why << "nu = " << material.nu << ": the creep table covers nu = " << range_text(nu_lo, nu_hi)
+        << kFallback;
+    return why.str();
+  }
+  NuBlocks nb;
+  nb.lower = &blocks[0];
+  for (int i = 0; i + 1 < count; ++i) {
+    if (material.nu >= blocks[i].nu - 1e-12) {
+      nb.lower = &blocks[i];
+      nb.upper = &blocks[i + 1];
+      nb.t = std::clamp((material.nu - blocks[i].nu) / (blocks[i + 1].nu - blocks[i].nu), 0.0, 1.0);
+    }
+  }
+  const double g = sdec.ellipticity();
+  for (const CreepTableBlock* b : {nb.lower, nb.upper}) {
+    if (!b) continue;
+    const double g_lo = b->a_over_b[0], g_hi = b->a_over_b[b->n_g - 1];
+    if (g < g_lo * (1 - kSlack) || g > g_hi * (1 + kSlack)) {
+      why << "a/b = " << g << ": the creep table covers a/b = " << range_text(g_lo, g_hi)
+          << kFallback;
+      return why.str();
+    }
+    if (std::abs(sdec.psi) > psi_max(*b) + kSlack) {
+      why << "psi = " << sdec.psi << ": the creep table covers |psi| <= " << psi_max(*b)
+          << kFallback;
+      return why.str();
+    }
+    const double r = normalise(*b, sdec, v, load, material).r();
+    if (r > r_max(*b) * (1 + kSlack)) {
+      why << "normalised creepage |(xi, eta, chi)| = " << r
+          << " (xi = G c^2 C11 vx/(mu N), eta = G c^2 C22 vy/(mu N), chi = " << b->spin_scale
+          << " G c^3 C23 phi/(mu N)): the creep table covers up to " << r_max(*b) << kFallback;
+      return why.str();
+    }
+  }
+  if (out) *out = nb;
+  return {};
+}
+
+// Fx/(mu N), Fy/(mu N) and Mz/(mu N c) of one block (Mz 0 when the block has none).
+std::array<double, 3> evaluate(const CreepTableBlock& b, const contactgeom::Sdec& sdec,
+                               const Creepages& v, const ContactLoad& load,
+                               const Material& material) {
+  Normalised n = normalise(b, sdec, v, load, material);
+  double psi = sdec.psi, sign_x = 1.0, sign_y = 1.0;
+  if (psi < 0) {  // mirror y -> -y: eta, chi, Fy and Mz change sign
+    psi = -psi;
+    n.eta = -n.eta;
+    n.chi = -n.chi;
+    sign_y = -sign_y;
+  }
+  if (n.xi < 0) {  // reversed creepages reverse the forces and the moment
+    n = {-n.xi, -n.eta, -n.chi};
+    sign_x = -sign_x;
+    sign_y = -sign_y;
+  }
+  const double r = n.r();
+  if (r == 0.0) return {0.0, 0.0, 0.0};
+  const double theta = std::acos(std::clamp(n.chi / r, -1.0, 1.0));
+  const double beta = std::atan2(n.eta, n.xi);  // xi >= 0: in [-pi/2, pi/2]
+  const Stencil sg = stencil(b.log_a_over_b, b.n_g, std::log(sdec.ellipticity()));
+  const Stencil sp = stencil(b.psi, b.n_psi, psi);
+  const Stencil st = stencil(b.theta, b.n_theta, theta);
+  const Stencil sb = stencil(b.beta, b.n_beta, beta);
+  const Stencil sr = stencil(b.r, b.n_r, r);
+  double fx = 0.0, fy = 0.0, mz = 0.0;
+  for (int ig = 0; ig < sg.count; ++ig) {
+    for (int ip = 0; ip < sp.count; ++ip) {
+      const double wgp = sg.w[ig] * sp.w[ip];
+      for (int it = 0; it < st.count; ++it) {
+        for (int ib = 0; ib < sb.count; ++ib) {
+          const double w4 = wgp * st.w[it] * sb.w[ib];
+          const std::size_t base =
+              ((((static_cast<std::size_t>(sg.start + ig) * b.n_psi + sp.start + ip) * b.n_theta +
+                 st.start + it) *
+                    b.n_beta +
+                sb.start + ib) *
+               b.n_r) +
+              sr.start;
+          // The r-stencil's weighted sum first: one weight per node of the other four axes.
+          const float* node = b.values + 3 * base;
+          double sx = 0.0, sy = 0.0, sm = 0.0;
+          for (int ir = 0; ir < sr.count; ++ir) {
+            sx += sr.w[ir] * node[3 * ir];
+            sy += sr.w[ir] * node[3 * ir + 1];
+            sm += sr.w[ir] * node[3 * ir + 2];
+          }
+          fx += w4 * sx;
+          fy += w4 * sy;
+          mz += w4 * sm;
+        }
+      }
+    }
+  }
+  return {sign_x * fx, sign_y * fy, sign_y * mz};
+}
+
+bool has_moment() {
+  for (int i = 0; i < detail::kCreepTableBlockCount; ++i)
+    if (!detail::kCreepTableBlocks[i].has_mz) return false;
+  return detail::kCreepTableBlockCount > 0;
+}
+
+}  // namespace
+
+CreepTableRange creep_table_range() {
+  CreepTableRange range;
+  const int count = detail::kCreepTableBlockCount;
+  if (count == 0) return range;
+  const CreepTableBlock& first = detail::kCreepTableBlocks[0];
+  range.nu_min = first.nu;
+  range.nu_max = detail::kCreepTableBlocks[count - 1].nu;
+  range.a_over_b_min = first.a_over_b[0];
+  range.a_over_b_max = first.a_over_b[first.n_g - 1];
+  range.psi_max = psi_max(first);
+  range.r_max = r_max(first);
+  range.grid = first.grid;
+  range.spin_scale = first.spin_scale;
+  return range;
+}
+
+double creep_table_magnitude(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                             const ContactLoad& load, const Material& material) {
+  NuBlocks nb;
+  const std::string why = check(sdec, {0, 0, 0}, load, material, &nb);
+  if (!why.empty()) throw InputError(why);
+  double r = normalise(*nb.lower, sdec, creepages, load, material).r();
+  if (nb.upper) r = std::max(r, normalise(*nb.upper, sdec, creepages, load, material).r());
+  return r;
+}
+
+bool creep_table_covers(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                        const ContactLoad& load, const Material& material, std::string* why) {
+  const std::string reason = check(sdec, creepages, load, material, nullptr);
+  if (why) *why = reason;
+  return reason.empty();
+}
+
+CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                               const ContactLoad& load, const Material& material) {
+  NuBlocks nb;
+  const std::string why = check(sdec, creepages, load, material, &nb);
+  if (!why.empty()) throw InputError(why);
+  std::array<double, 3> f = evaluate(*nb.lower, sdec, creepages, load, material);
+  if (nb.upper && nb.t > 0.0) {
+    const std::array<double, 3> u = evaluate(*nb.upper, sdec, creepages, load, material);
+    for (std::size_t k = 0; k < f.size(); ++k) f[k] = (1 - nb.t) * f[k] + nb.t * u[k];
+  }
+  const double mu_n = load.mu * load.N;
+  CreepForces forces;
+  forces.Fx = f[0] * mu_n;
+  forces.Fy = f[1] * mu_n;
+  forces.has_Mz = has_moment();
+  if (forces.has_Mz) forces.Mz = f[2] * mu_n * sdec.c();
+  return forces;
+}
+
+std::string creep_table_provenance() {
+  return detail::kCreepTableProvenance;
+}
+
+}  // namespace wheelwear::tangential

@@ -1,0 +1,111 @@
+#include "wheelwear/tangential/exact/steady_rolling.hpp"
+
+#include <cmath>
+#include <cstddef>
+
+#include "influence_operator.hpp"
+#include "tangential_solver.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/tangential/exact/normal_contact.hpp"
+
+namespace wheelwear::tangential {
+
+namespace {
+
+// Solves the tangential problem of `solution` (grid and pn set) and sums its forces.
+void solve_and_sum(const Creepages& v, double mu, const Material& material,
+                   const ExactOptions& options, ExactSolution& solution) {
+  const ElementGrid& grid = solution.grid;
+  const auto n = static_cast<std::size_t>(grid.size());
+  std::vector<double> bound(n), wx(n), wy(n);
+  // The spin part of the rigid slip is taken dx/6 upstream of the element centre, the offset
+  // of CONTACT's steady-rolling discretisation (its set_tang_rhs). With it C23 of the circle
+  // is within 0.5 % of Kalker's table from 40 x 40 elements on and equals CONTACT's to four
+  // digits; at the element centre it would be 1.3 % low at 80 x 80.
+  const double x_offset = grid.dx / 6.0;
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const std::size_t e = static_cast<std::size_t>(j * grid.nx + i);
+      bound[e] = mu * solution.pn[e];
+      wx[e] = v.vx - v.phi * grid.y(j);
+      wy[e] = v.vy + v.phi * (grid.x(i) + x_offset);
+    }
+  const detail::InfluenceOperator op(grid, material, true, false);
+  detail::solve_tangential(op, bound, wx, wy, options, solution);
+
+  const double da = grid.area();
+  CreepForces& f = solution.forces;
+  f = CreepForces{};
+  f.has_Mz = true;
+  solution.normal_force = solution.frictional_work = 0.0;
+  solution.contact_elements = solution.adhesion_elements = solution.slip_elements = 0;
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const std::size_t e = static_cast<std::size_t>(j * grid.nx + i);
+      if (solution.state[e] == ElementState::exterior) continue;
+      ++solution.contact_elements;
+      if (solution.state[e] == ElementState::adhesion) {
+        ++solution.adhesion_elements;
+      } else {
+        ++solution.slip_elements;
+        solution.frictional_work += std::hypot(solution.px[e], solution.py[e]) *
+                                    std::hypot(solution.sx[e], solution.sy[e]) * da;
+      }
+      solution.normal_force += solution.pn[e] * da;
+      f.Fx += solution.px[e] * da;
+      f.Fy += solution.py[e] * da;
+      f.Mz += (grid.x(i) * solution.py[e] - grid.y(j) * solution.px[e]) * da;
+    }
+}
+
+}  // namespace
+
+ElementGrid sdec_grid(const contactgeom::Sdec& sdec, const ExactOptions& options) {
+  sdec.validate();
+  options.validate();
+  ElementGrid grid;
+  grid.nx = options.nx;
+  grid.ny = options.ny;
+  grid.dx = 2.0 * options.margin * sdec.a / options.nx;
+  grid.dy = 2.0 * options.margin * sdec.b / options.ny;
+  grid.x_min = -options.margin * sdec.a + options.shift_x * grid.dx;
+  grid.y_min = sdec.y0() - options.margin * sdec.b + options.shift_y * grid.dy;
+  return grid;
+}
+
+ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                         const ContactLoad& load, const Material& material,
+                         const ExactOptions& options) {
+  creepages.validate();
+  load.validate();
+  material.validate();
+  ExactSolution solution;
+  solution.grid = sdec_grid(sdec, options);
+  const ElementGrid& grid = solution.grid;
+  solution.pn.resize(static_cast<std::size_t>(grid.size()));
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i)
+      solution.pn[static_cast<std::size_t>(j * grid.nx + i)] =
+          sdec.pressure(grid.x(i), grid.y(j), load.N);
+  solve_and_sum(creepages, load.mu, material, options, solution);
+  return solution;
+}
+
+ExactSolution exact_rolling(const ElementGrid& grid, const std::vector<double>& h,
+                            const Creepages& creepages, const ContactLoad& load,
+                            const Material& material, const ExactOptions& options) {
+  creepages.validate();
+  load.validate();
+  NormalSolution normal = exact_normal(grid, h, load.N, material, options);
+  ExactSolution solution;
+  solution.grid = grid;
+  solution.pn = std::move(normal.pn);
+  solve_and_sum(creepages, load.mu, material, options, solution);
+  if (normal.status == ExactStatus::not_converged) {
+    solution.status = ExactStatus::not_converged;
+    solution.message = "normal problem: " + normal.message;
+  }
+  return solution;
+}
+
+}  // namespace wheelwear::tangential

@@ -1,0 +1,19 @@
+#pragma once
+// The steady-rolling tangential problem of Kalker's exact theory on a grid with given traction
+// bound and rigid slip.
+
+#include <vector>
+
+#include "influence_operator.hpp"
+#include "wheelwear/tangential/exact/exact_types.hpp"
+
+namespace wheelwear::tangential::detail {
+
+/// Solves for the tractions (px, py) of `solution` (which holds pn and the grid) with the
+/// traction bound `bound` = mu pn [Pa] and the rigid slip (wx, wy) [-] per element, writing
+/// tractions, slip, element states, iteration count and status into `solution`.
+void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bound,
+                      const std::vector<double>& wx, const std::vector<double>& wy,
+                      const ExactOptions& options, ExactSolution& solution);
+
+}  // namespace wheelwear::tangential::detail

@@ -1,0 +1,197 @@
+#include "wheelwear/tangential/exact/wheel_rail_exact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "wheelwear/contactgeom/undeformed_distance.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/tangential/exact/normal_contact.hpp"
+#include "wheelwear/tangential/exact/steady_rolling.hpp"
+
+namespace wheelwear::tangential {
+
+namespace {
+
+constexpr int kMinElements = 4;     // fewer cannot tell the patch's edge from its centre
+constexpr int kMaxElements = 1000;  // 10^6 elements: the FFT arrays need about 1 GB beyond
+// Undeformed distance [m] given to elements where a profile ends: they never touch, and a
+// contact element next to one is reported (the patch would need the missing surface).
+constexpr double kNoSurface = 1.0;
+
+// The least undeformed distance along x in O's cross-section: a parabola through the distance
+// at x = -l, 0, l (the wheel's sag is quadratic in x to 1e-4 relative over a patch length;
+// a yawed wheel's lowest point moves along x, undeformed_distance.hpp).
+struct CrossSectionMinimum {
+  double x = 0.0;         // where the distance is least [m]
+  double distance = 0.0;  // its value [m], vertical
+};
+
+CrossSectionMinimum cross_section_minimum(const contactgeom::WheelRailPair& pair,
+                                          const contactgeom::WheelsetPose& pose, double y_O,
+                                          double l) {
+  const auto back = contactgeom::undeformed_distance(pair, pose, -l, y_O);
+  const auto centre = contactgeom::undeformed_distance(pair, pose, 0.0, y_O);
+  const auto front = contactgeom::undeformed_distance(pair, pose, l, y_O);
+  if (!back || !centre || !front) {
+    std::ostringstream m;
+    m << "wheel_rail_exact: patch.y_rail = " << -y_O
+      << " m: the undeformed distance is undefined at the patch's O (off the wheel or rail "
+         "profile); pass a patch found by contactgeom::solve_wheel_rail for the same pair and "
+         "pose";
+    throw InputError(m.str());
+  }
+  const double curvature = *back - 2.0 * *centre + *front;
+  if (!(curvature > 0.0)) return {0.0, *centre};
+  // Kept within the three samples: a nearly flat gap along x would put it far off the patch.
+  const double x = std::clamp(0.5 * l * (*back - *front) / curvature, -l, l);
+  const double t = x / l;  // the parabola through the three samples, at x
+  return {x, *centre + 0.5 * t * (*front - *back) + 0.5 * t * t * curvature};
+}
+
+// Throws InputError when the pressure reaches the grid's border or an element where a profile
+// ends: the contact area would then be cut off, and the forces wrong without a warning.
+void require_inside(const ElementGrid& grid, const std::vector<double>& pn,
+                    const std::vector<bool>& no_surface, const WheelRailExactOptions& options) {
+  auto at = [&](int i, int j) { return static_cast<std::size_t>(j * grid.nx + i); };
+  const char* edge = nullptr;
+  for (int j = 0; j < grid.ny && !edge; ++j) {
+    if (pn[at(0, j)] > 0.0) edge = "trailing edge (least x)";
+    if (pn[at(grid.nx - 1, j)] > 0.0) edge = "leading edge (largest x)";
+  }
+  for (int i = 0; i < grid.nx && !edge; ++i) {
+    if (pn[at(i, 0)] > 0.0) edge = "field-side edge (least s)";
+    if (pn[at(i, grid.ny - 1)] > 0.0) edge = "gauge-side edge (largest s)";
+  }
+  if (edge) {
+    std::ostringstream m;
+    m << "wheel_rail_exact: the exact contact area reaches the element grid's " << edge
+      << " (grid x " << grid.x_min * 1e3 << " ... " << (grid.x_min + grid.nx * grid.dx) * 1e3
+      << " mm, s " << grid.y_min * 1e3 << " ... " << (grid.y_min + grid.ny * grid.dy) * 1e3
+      << " mm from O): the patch is larger than the Kik-Piotrowski patch the grid was sized "
+         "from; increase margin (now "
+      << options.margin << "; `wheelwear contact --exact-margin`)";
+    throw InputError(m.str());
+  }
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      if (!(pn[at(i, j)] > 0.0)) continue;
+      const bool missing_neighbour =
+          (i > 0 && no_surface[at(i - 1, j)]) || (i + 1 < grid.nx && no_surface[at(i + 1, j)]) ||
+          (j > 0 && no_surface[at(i, j - 1)]) || (j + 1 < grid.ny && no_surface[at(i, j + 1)]);
+      if (missing_neighbour) {
+        std::ostringstream m;
+        m << "wheel_rail_exact: the exact contact area reaches the end of the wheel or rail "
+             "profile at s = "
+          << grid.y(j) * 1e3 << " mm from O: the profiles do not cover this contact";
+        throw InputError(m.str());
+      }
+    }
+}
+
+}  // namespace
+
+void WheelRailExactOptions::validate() const {
+  require(nx >= kMinElements && nx <= kMaxElements, "nx", nx, "needs 4 ... 1000 elements along x");
+  require(ny >= kMinElements && ny <= kMaxElements, "ny", ny, "needs 4 ... 1000 elements along s");
+  require_finite("margin", margin);
+  require(margin >= 1.0 && margin <= 5.0, "margin", margin,
+          "the grid must cover the patch: 1 <= margin <= 5");
+  solver.validate();
+}
+
+ElementGrid wheel_rail_exact_grid(const contactgeom::WheelRailPatch& patch, double x_centre,
+                                  const WheelRailExactOptions& options) {
+  options.validate();
+  const contactgeom::PatchMeasures& m = patch.measures;
+  require_finite("x_centre", x_centre);
+  require_finite("patch.measures.length", m.length);
+  require_finite("patch.measures.W1", m.W1);
+  require_finite("patch.measures.W2", m.W2);
+  require(m.length > 0.0, "patch.measures.length", m.length,
+          "the patch must have a positive length (metres)");
+  require(m.W1 + m.W2 > 0.0, "patch.measures.W1 + W2", m.W1 + m.W2,
+          "the patch must have a positive width (metres)");
+  ElementGrid grid;
+  grid.nx = options.nx;
+  grid.ny = options.ny;
+  grid.dx = options.margin * m.length / options.nx;
+  grid.dy = options.margin * (m.W1 + m.W2) / options.ny;
+  grid.x_min = x_centre - 0.5 * options.margin * m.length;
+  grid.y_min = 0.5 * (m.W1 - m.W2) - 0.5 * options.margin * (m.W1 + m.W2);
+  return grid;
+}
+
+WheelRailExactSolution wheel_rail_exact(const contactgeom::WheelRailPair& pair,
+                                        const contactgeom::WheelsetPose& pose,
+                                        const contactgeom::WheelRailPatch& patch,
+                                        const Creepages& creepages, double mu,
+                                        const WheelRailExactOptions& options) {
+  options.validate();
+  pair.validate();
+  creepages.validate();
+  const ContactLoad load{patch.normal_force, mu};
+  require_finite("patch.normal_force", load.N);
+  require_finite("mu", mu);
+  load.validate();
+  require_finite("patch.contact_angle", patch.contact_angle);
+  require(std::abs(patch.contact_angle) < 0.5 * std::numbers::pi, "patch.contact_angle",
+          patch.contact_angle, "must lie within +-pi/2 rad");
+  require_finite("patch.y_rail", patch.y_rail);
+  const Material material{pair.youngs_modulus / (2.0 * (1.0 + pair.poisson)), pair.poisson};
+
+  // The contact plane is the tangent plane at O, inclined by the contact angle delta to the
+  // track plane; its lateral coordinate s points to the gauge side, the rail frame's -y. The
+  // surfaces are taken as flat in that plane's direction over the patch: the element at
+  // (x, s) lies above the track-plane point (x, y_O - s cos(delta)), and its distance along
+  // the contact normal is the vertical distance times cos(delta). This is contactgeom's own
+  // reduction (strips_of in wheel_rail.cpp), so the exact solution sees the gap the
+  // Kik-Piotrowski patch saw; it holds to second order in the change of the surfaces' slope
+  // across the patch and is crude where that change is large (flange contact).
+  const double y_O = -patch.y_rail;
+  const double c = std::cos(patch.contact_angle);
+  const CrossSectionMinimum lowest =
+      cross_section_minimum(pair, pose, y_O, 0.5 * patch.measures.length);
+
+  WheelRailExactSolution out;
+  const ElementGrid grid = wheel_rail_exact_grid(patch, lowest.x, options);
+  const auto n = static_cast<std::size_t>(grid.size());
+  out.h.resize(n);
+  std::vector<bool> no_surface(n, false);
+  for (int j = 0; j < grid.ny; ++j) {
+    const double y = y_O - grid.y(j) * c;
+    for (int i = 0; i < grid.nx; ++i) {
+      const std::size_t e = static_cast<std::size_t>(j * grid.nx + i);
+      const auto d = contactgeom::undeformed_distance(pair, pose, grid.x(i), y);
+      no_surface[e] = !d.has_value();
+      out.h[e] = d ? (*d - lowest.distance) * c : kNoSurface;
+    }
+  }
+
+  const NormalSolution normal = exact_normal(grid, out.h, load.N, material, options.solver);
+  out.normal_iterations = normal.iterations;
+  out.approach = normal.approach;
+  if (normal.status == ExactStatus::no_contact) {
+    out.rolling.grid = grid;
+    out.rolling.status = ExactStatus::no_contact;
+    out.rolling.message = "normal problem: " + normal.message;
+    return out;
+  }
+  require_inside(grid, normal.pn, no_surface, options);
+
+  // exact_rolling solves the same normal problem again (deterministic: the same pressure);
+  // the first solve above is what lets the grid be checked before the costlier tangential
+  // iteration.
+  out.rolling = exact_rolling(grid, out.h, creepages, load, material, options.solver);
+  out.contact_area = out.rolling.contact_elements * grid.area();
+  if (out.rolling.contact_elements > 0)
+    out.adhesion_fraction =
+        static_cast<double>(out.rolling.adhesion_elements) / out.rolling.contact_elements;
+  return out;
+}
+
+}  // namespace wheelwear::tangential

@@ -1,0 +1,39 @@
+#include "wheelwear/tangential/table_correction.hpp"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/tangential/creep_table.hpp"
+
+namespace wheelwear::tangential {
+
+double rigid_slip_work(const CreepForces& forces, const Creepages& creepages) {
+  if (!forces.has_Mz && creepages.phi != 0.0)
+    throw InputError("rigid_slip_work: phi = " + std::to_string(creepages.phi) +
+                     " 1/m needs the spin moment Mz, which these forces lack");
+  const double spin = forces.has_Mz ? forces.Mz * creepages.phi : 0.0;
+  return -(forces.Fx * creepages.vx + forces.Fy * creepages.vy + spin);
+}
+
+bool correct_with_creep_table(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                              const ContactLoad& load, const Material& material,
+                              TangentialSolution& solution) {
+  if (!creep_table_covers(sdec, creepages, load, material)) return false;
+  const CreepForces exact = creep_table_forces(sdec, creepages, load, material);
+  if (!exact.has_Mz) return false;  // a table without Mz cannot give the spin's work
+  // Interpolation can leave a tiny negative work near zero creepage; work is never negative.
+  const double work = std::max(0.0, rigid_slip_work(exact, creepages));
+  solution.forces = exact;
+  if (solution.fields && solution.frictional_work > 0.0) {
+    const double factor = work / solution.frictional_work;
+    CellFields& f = *solution.fields;
+    for (std::vector<double>* v : {&f.sx, &f.sy, &f.slip_norm, &f.work})
+      for (double& x : *v) x *= factor;
+    solution.frictional_work = work;
+  }
+  return true;
+}
+
+}  // namespace wheelwear::tangential
