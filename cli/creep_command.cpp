@@ -259,7 +259,7 @@ void add_creep_command(CLI::App& app) {
                   "instead of --nx/--ny: the cheapest n x n grid whose discretisation error\n"
                   "is at most this fraction of muN against the method's converged answer\n"
                   "(error model C/n^p measured on CONTACT's pure-spin cases,\n"
-                  "bench/runtime_error_study.cpp); the JSON then gives nx, ny, predicted_error.\n"
+                  "studies/runtime_error_study.cpp); the JSON then gives nx, ny, predicted_error.\n"
                   "FASTSIM methods only: --method exact refuses it (use --exact-grid)")
       ->excludes(nx)
       ->excludes(ny);

@@ -4,7 +4,7 @@
 Usage: plot_runtime_error.py CSV PNG
 
 CSV is bench/results/runtime_error.csv written by wheelwear_runtime_error_study (its columns are
-documented at the head of bench/runtime_error_study.cpp). The figure has two log-log panels,
+documented at the head of studies/runtime_error_study.cpp). The figure has two log-log panels,
 time per call against the error on the pure-spin cases (largest |F - F_ref|/(mu N) over the
 cases and over Fx, Fy): left against Kalker's exact theory (CONTACT-SDEC, 80 x 80), right
 against the method's own converged answer. One line per method, one marker per grid, labelled

@@ -51,7 +51,7 @@ FastsimOptions grid(int n, FastsimScheme scheme, TractionBound bound) {
 
 // The converged answer: Richardson extrapolation, with the scheme's order, of n_fine/2 and
 // n_fine = 1600 for Kalker's scheme and 800 for the second-order one. The study
-// (bench/runtime_error_study.cpp) finds the former within 2.4e-6 mu N of the extrapolation
+// (studies/runtime_error_study.cpp) finds the former within 2.4e-6 mu N of the extrapolation
 // from finer grids and the latter's 800/1600 counterpart within 1e-7 (400/800: within 5e-7),
 // so the targets are checked with an allowance of kReferenceAllowance for the reference.
 constexpr double kReferenceAllowance = 5e-6;  // [fraction of mu N]

@@ -1,5 +1,5 @@
 // The SDEC coefficients for Poisson's ratios other than 0.25: the generated table
-// (data/sdec_coefficients.csv, bench/sdec_table_generator.cpp) against the paper's Table 1 at
+// (data/sdec_coefficients.csv, generators/sdec_table_generator.cpp) against the paper's Table 1 at
 // nu = 0.25 and the compiled table, and the linear theory built on it against fresh
 // exact-theory solves in the linear limit.
 

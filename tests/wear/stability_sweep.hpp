@@ -3,7 +3,7 @@
 // the whole input range, and the margin by which each case meets the invariants every solver
 // must keep (finite output, |F| <= mu N up to the quadrature error, continuity in every
 // input, monotone saturation, conserved non-negative wear). Shared by the unit test
-// (tests/wear/stress_test.cpp) and the longer study (bench/stability_study.cpp).
+// (tests/wear/stress_test.cpp) and the longer study (studies/stability_study.cpp).
 
 #include <algorithm>
 #include <array>

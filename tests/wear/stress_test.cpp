@@ -1,7 +1,7 @@
 // Numerical stability of every tangential method and of the wear laws: seeded random sweeps
 // over the whole input range against the invariants of stability_sweep.hpp, and degenerate
 // patches (a single cell, extremely slender patches, vanishing load, friction or creepage).
-// bench/stability_study.cpp runs the same sweep longer and writes the worst margins.
+// studies/stability_study.cpp runs the same sweep longer and writes the worst margins.
 
 #include <gtest/gtest.h>
 

@@ -18,7 +18,7 @@ struct ModelEntry {
   GridErrorModel model;
 };
 
-// Provenance: bench/runtime_error_study.cpp, part 2 (bench/results/grid_error_constants.csv).
+// Provenance: studies/runtime_error_study.cpp, part 2 (bench/results/grid_error_constants.csv).
 // For every n = 5 ... 200 and n = 250, 300, 400, 500, 600, 800, 1000 it measures
 // e(n) = max over the 17 pure-spin cases of CONTACT's set b (tests/data/contact/
 // b_pure_spin_mx80.csv, phi > 0) and over Fx, Fy of |F(n) - F(conv)|/(mu N), with F(conv) the

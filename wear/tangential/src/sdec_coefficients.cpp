@@ -15,7 +15,7 @@ struct SdecExtra {
 };
 
 // K13, B11, B22, B23 from Kalker's exact theory for several nu (kGeneratedNu), rows a/b = 0.1
-// ... 1.0 then b/a = 0.9 ... 0.1, written by bench/sdec_table_generator.cpp (the same values
+// ... 1.0 then b/a = 0.9 ... 0.1, written by generators/sdec_table_generator.cpp (the same values
 // as data/sdec_coefficients.csv, whose header states the method).
 #include "sdec_coefficients_table.inc"
 

@@ -1,5 +1,5 @@
 // Build step: writes the creep-force table of data/creep_table.h5 (written by
-// bench/creep_table_generator.cpp) as C++ arrays (wear/src/creep_table_data.hpp), so that the
+// generators/creep_table_generator.cpp) as C++ arrays (wear/src/creep_table_data.hpp), so that the
 // library needs no data file at run time. Numbers are written as hexadecimal literals (exact;
 // the tabulated values rounded to single precision).
 // Usage: wheelwear_creep_table_embed TABLE.h5 OUTPUT.cpp; without TABLE.h5 (the argument "-")

@@ -45,7 +45,7 @@ enum class TangentialMethod {
   /// (wear/table_correction.hpp); FASTSIM-SDEC alone outside the table. Needs model sdec.
   best,
   /// Kalker's exact theory on the SDEC patch (exact_sdec on grid_nx x grid_ny elements,
-  /// wear/exact/exact_fields.hpp): the reference, at milliseconds per patch. Needs model sdec.
+  /// tangential/exact/exact_fields.hpp): the reference, at milliseconds per patch. Needs model sdec.
   exact,
 };
 

@@ -1,7 +1,7 @@
 #pragma once
 /// Creep forces of SDEC patches interpolated in a book of tables of Kalker's exact theory, in
 /// the spirit of Kalker's book of tables (Kalker 1996) and of KBTNH (Piotrowski, Liu & Bruni
-/// 2017). The table (data/creep_table.h5, bench/creep_table_generator.cpp) is compiled into the
+/// 2017). The table (data/creep_table.h5, generators/creep_table_generator.cpp) is compiled into the
 /// library.
 
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 /// The cheapest FASTSIM grid for a target error, from the discretisation-error model measured
-/// by bench/runtime_error_study.cpp (results in bench/results/grid_error_constants.csv).
+/// by studies/runtime_error_study.cpp (results in bench/results/grid_error_constants.csv).
 
 #include "wheelwear/tangential/fastsim.hpp"
 

@@ -29,7 +29,7 @@ struct SdecCoefficients {
 /// (a/b <= 1) or b/a (a/b >= 1) like Kalker's table; outside 0.1 ... 10 the end row is held
 /// (flagged). For other nu, Table 1 is carried to nu with the change the exact theory gives
 /// between 0.25 and nu (K13 by ratio, the B's by difference), from the coefficients generated
-/// for nu = 0, 0.25, 0.28, 0.3, 0.5 by bench/sdec_table_generator.cpp (data/
+/// for nu = 0, 0.25, 0.28, 0.3, 0.5 by generators/sdec_table_generator.cpp (data/
 /// sdec_coefficients.csv: Kalker's exact theory, no slip, Table 1's least-squares fit over
 /// psi = 0.2 ... 0.8) and a natural cubic spline in nu between them. C11, C22, C23 are always
 /// Kalker's (kalker_coefficients), as in the paper.

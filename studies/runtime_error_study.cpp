@@ -92,11 +92,11 @@
 //
 // Regenerate the committed results with
 //   cmake --build build --target wheelwear_runtime_error_study
-//   build/bench/wheelwear_runtime_error_study bench/results
+//   build/studies/wheelwear_runtime_error_study bench/results
 //   /usr/bin/python3 scripts/plot_runtime_error.py bench/results/runtime_error.csv
 //       bench/results/runtime_error.png
 // or refresh only some methods, e.g. after the creep table was regenerated, with
-//   build/bench/wheelwear_runtime_error_study bench/results --methods table
+//   build/studies/wheelwear_runtime_error_study bench/results --methods table
 
 #include <time.h>
 

@@ -2,7 +2,7 @@
 // 5 km) run with 1 and with 2 threads; writes bench/results/run_study.csv (or the file given as
 // the first argument) and prints states x steps per second and the speed-up.
 //
-//   build/bench/wheelwear_run_study [CSV] [--steps N]
+//   build/studies/wheelwear_run_study [CSV] [--steps N]
 //
 // The results files go to the system's temporary directory and are removed afterwards; the
 // two runs must agree bit for bit (checked here too, on the last profile).

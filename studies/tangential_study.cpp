@@ -17,7 +17,7 @@
 //                       per-patch frictional work against the exact theory's, over patches
 //                       with at least 1 % of the median work
 //
-//   build/bench/wheelwear_tangential_study [CSV] [--repeats N]
+//   build/studies/wheelwear_tangential_study [CSV] [--repeats N]
 
 #include <tbb/global_control.h>
 
