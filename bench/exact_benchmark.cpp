@@ -26,7 +26,7 @@ const contactgeom::Sdec kPatch{4.25e-3, 4.25e-3, 0.6};
 const tangential::Material kSteel{80e9, 0.25};
 
 void run(benchmark::State& state, const tangential::Creepages& v, const tangential::ContactLoad& load) {
-  tangential::ExactOptions options;
+  tangential::SdecGridOptions options;
   options.nx = options.ny = static_cast<int>(state.range(0));
   int iterations = 0, contact = 0;
   for (auto _ : state) {

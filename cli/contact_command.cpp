@@ -81,7 +81,7 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
                       {p.normal_force, args.in.mu}, args.in.material());
     const tangential::Creepages c = args.in.creepages_at(p);
     o.add("vx", c.vx).add("vy", c.vy).add("phi", c.phi);
-    o.add("Fx", s.forces.Fx).add("Fy", s.forces.Fy).add("Mz", s.forces.Mz);
+    o.add("Fx", s.forces.Fx).add("Fy", s.forces.Fy).add("Mz", s.forces.Mz.value_or(0.0));
     if (args.tangential == "exact") {
       const tangential::WheelRailExactSolution e = exact_patch(pair, p, args);
       const tangential::ExactSolution& r = e.rolling;
@@ -89,7 +89,7 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
           .add("exact_N", r.normal_force)
           .add("exact_Fx", r.forces.Fx)
           .add("exact_Fy", r.forces.Fy)
-          .add("exact_Mz", r.forces.Mz)
+          .add("exact_Mz", *r.forces.Mz)
           .add("exact_approach", e.approach)
           .add("exact_area", e.contact_area)
           .add("exact_adhesion_fraction", e.adhesion_fraction)
@@ -154,7 +154,7 @@ void run_contact(const ContactArgs& args) {
               "Fy %.6g N, Mz %.6g N m\n"
               "    area %.4g mm2, %.1f %% adhesion, approach %.4g um\n",
               r.grid.nx, r.grid.ny, tangential::status_name(r.status), r.iterations, r.normal_force,
-              r.forces.Fx, r.forces.Fy, r.forces.Mz, e.contact_area * 1e6,
+              r.forces.Fx, r.forces.Fy, *r.forces.Mz, e.contact_area * 1e6,
               100.0 * e.adhesion_fraction, e.approach * 1e6);
         }
       }

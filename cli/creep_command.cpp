@@ -14,6 +14,7 @@
 #include "json_writer.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
+#include "wheelwear/tangential/tangential.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
 #include "wheelwear/tangential/grid_choice.hpp"
 #include "wheelwear/tangential/linear_theory.hpp"
@@ -43,22 +44,31 @@ struct CreepArgs {
   const CLI::Option* exact_grid_option = nullptr;
 };
 
-// `--method exact`: Kalker's exact theory on the SDEC patch with its prescribed pressure
-// (exact_sdec), on exact_grid x exact_grid elements over 1.02 times the patch (CONTACT's SDEC
-// option). Refuses the options of the FASTSIM methods, which would be silently ignored.
-tangential::ExactSolution solve_exact(const CreepArgs& args) {
+// Refuses the options that do not apply to the method (they would be silently ignored) and
+// the grid limits of --method exact.
+void check_options(const CreepArgs& args, tangential::Method method) {
+  const bool exact = method == tangential::Method::exact;
   auto refuse = [](const CLI::Option* option, const char* why) {
     if (option && option->count() > 0)
       throw InputError(option->get_name() + " does not apply to --method exact: " + why);
   };
-  if (args.target_error) {
+  if (!exact && args.exact_grid_option && args.exact_grid_option->count() > 0)
+    throw InputError("--exact-grid applies to --method exact only; FASTSIM's grid is --nx --ny");
+  if (!args.target_error) {
+  } else if (exact) {
     std::ostringstream message;
     message << "--target-error " << *args.target_error
             << ": --method exact has no fitted error model; choose its grid with --exact-grid N "
                "(40: within 0.53 % of muN of CONTACT's 80 x 80 answer on its pure-spin "
                "cases; 80, CONTACT's own grid: within 2e-7)";
     throw InputError(message.str());
+  } else if (!tangential::fastsim_variant(method)) {
+    std::ostringstream message;
+    message << "--target-error " << *args.target_error << ": " << args.method
+            << " has no grid; use --target-error with a FASTSIM method";
+    throw InputError(message.str());
   }
+  if (!exact) return;
   refuse(args.nx, "its grid is --exact-grid");
   refuse(args.ny, "its grid is --exact-grid");
   refuse(args.bound_option, "the exact theory bounds the traction by mu p_n");
@@ -69,75 +79,76 @@ tangential::ExactSolution solve_exact(const CreepArgs& args) {
             << kMaxExactGrid << " elements per side (40: about 16 ms, 80: about 0.13 s)";
     throw InputError(message.str());
   }
-  tangential::ExactOptions options;
-  options.nx = options.ny = args.exact_grid;
-  return tangential::exact_sdec(args.sdec, args.creepages, args.load, args.material, options);
+}
+
+// The options of solve_patch from the command line; chooses the FASTSIM grid for
+// --target-error.
+tangential::SolveOptions solve_options(const CreepArgs& args, tangential::Method method,
+                                       std::optional<tangential::GridChoice>& chosen) {
+  tangential::SolveOptions options;
+  options.fastsim = args.options;
+  options.fastsim.bound = args.bound == "semi-elliptic" ? tangential::TractionBound::semi_elliptic
+                                                        : tangential::TractionBound::parabolic;
+  options.fastsim.scheme = args.scheme == "second-order" ? tangential::FastsimScheme::second_order
+                                                         : tangential::FastsimScheme::kalker;
+  // The exact theory on 1.02 times the patch (CONTACT's SDEC option).
+  options.exact_grid.nx = options.exact_grid.ny = args.exact_grid;
+  if (args.target_error) {
+    try {
+      chosen = tangential::choose_grid(*tangential::fastsim_variant(method), options.fastsim.scheme,
+                                       options.fastsim.bound, *args.target_error);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--target-error: ") + e.what());
+    }
+    options.fastsim.nx = chosen->nx;
+    options.fastsim.ny = chosen->ny;
+  }
+  return options;
+}
+
+void add_exact_json(JsonObject& out, const tangential::ExactSolution& s, const CreepArgs& args) {
+  out.add("exact_grid", args.exact_grid)
+      .add("status", tangential::status_name(s.status))
+      .add("iterations", s.iterations)
+      .add("adhesion_elements", s.adhesion_elements)
+      .add("adhesion_fraction",
+           s.contact_elements > 0 ? static_cast<double>(s.adhesion_elements) / s.contact_elements
+                                  : 0.0)
+      .add("N_grid", s.normal_force)
+      .add("frictional_work", s.frictional_work)
+      // The work of the rigid slip: what sum |p| |s| dA tends to as the grid is refined (the
+      // sum converges to first order only; wear runs use this one).
+      .add("rigid_slip_work", tangential::rigid_slip_work(s.forces, args.creepages));
+  if (!s.message.empty()) out.add("message", s.message);
+}
+
+void print_exact(const tangential::ExactSolution& s, const CreepArgs& args) {
+  std::printf("grid     %d x %d elements over 1.02 times the patch\n", args.exact_grid,
+              args.exact_grid);
+  std::printf("status   %s after %d iterations%s%s\n", tangential::status_name(s.status),
+              s.iterations, s.message.empty() ? "" : ": ", s.message.c_str());
+  std::printf("contact  %d elements: %d adhere (%.1f %%), %d slip\n", s.contact_elements,
+              s.adhesion_elements,
+              s.contact_elements > 0 ? 100.0 * s.adhesion_elements / s.contact_elements : 0.0,
+              s.slip_elements);
+  std::printf("N grid   %14.6g N   (sum of the element pressures)\n", s.normal_force);
 }
 
 void run_creep(const CreepArgs& args) {
-  tangential::CreepForces forces;
-  int cells = 0, slip_cells = 0;
-  const bool linear = args.method == "linear-sdec" || args.method == "she-sdec";
-  const bool tabled = args.method == "table" || args.method == "best";
+  const auto method = tangential::parse_method(args.method);
+  if (!method) throw InputError("--method " + args.method + ": unknown method");
+  check_options(args, *method);
   std::optional<tangential::GridChoice> chosen;
-  // For table and best: which method gave the forces ("table" or "fastsim-sdec"), and why the
-  // table could not.
-  std::string source, table_outside;
-  const bool exact = args.method == "exact";
-  std::optional<tangential::ExactSolution> exact_solution;
-  if (!exact && args.exact_grid_option && args.exact_grid_option->count() > 0)
-    throw InputError("--exact-grid applies to --method exact only; FASTSIM's grid is --nx --ny");
-  if ((linear || args.method == "table") && args.target_error) {
-    std::ostringstream message;
-    message << "--target-error " << *args.target_error << ": " << args.method
-            << " has no grid; use --target-error with a FASTSIM method";
-    throw InputError(message.str());
-  }
-  bool use_table = args.method == "table";
-  if (args.method == "best") {
-    use_table = tangential::creep_table_covers(args.sdec, args.creepages, args.load, args.material,
-                                         &table_outside);
-  }
-  if (exact) {
-    exact_solution = solve_exact(args);
-    forces = exact_solution->forces;
-    cells = exact_solution->contact_elements;
-    slip_cells = exact_solution->slip_elements;
-  } else if (linear) {
-    args.sdec.validate();
-    args.load.validate();
-    forces = args.method == "linear-sdec"
-                 ? tangential::linear_sdec_forces(args.sdec, args.creepages, args.material)
-                 : tangential::she_sdec_forces(args.sdec, args.creepages, args.material, args.load);
-  } else if (use_table) {
-    forces = tangential::creep_table_forces(args.sdec, args.creepages, args.load, args.material);
-    source = "table";
-  } else {
-    const std::string fastsim_name = tabled ? std::string("fastsim-sdec") : args.method;
-    if (tabled) source = fastsim_name;
-    const auto method = tangential::parse_fastsim_method(fastsim_name);
-    if (!method) throw InputError("--method " + args.method + ": unknown method");
-    tangential::FastsimOptions options = args.options;
-    options.bound = args.bound == "semi-elliptic" ? tangential::TractionBound::semi_elliptic
-                                                  : tangential::TractionBound::parabolic;
-    options.scheme = args.scheme == "second-order" ? tangential::FastsimScheme::second_order
-                                                   : tangential::FastsimScheme::kalker;
-    if (args.target_error) {
-      try {
-        chosen = tangential::choose_grid(*method, options.scheme, options.bound, *args.target_error);
-      } catch (const InputError& e) {
-        throw InputError(std::string("--target-error: ") + e.what());
-      }
-      options.nx = chosen->nx;
-      options.ny = chosen->ny;
-    }
-    const tangential::TangentialSolution solution =
-        tangential::fastsim(*method, args.sdec, args.creepages, args.load, args.material, options);
-    forces = solution.forces;
-    cells = solution.cells;
-    slip_cells = solution.slip_cells;
-  }
-  const bool has_cells = !linear && !use_table;
+  const tangential::SolveOptions options = solve_options(args, *method, chosen);
+  const tangential::TangentialSolution s = tangential::solve_patch(
+      *method, args.sdec, args.creepages, args.load, args.material, options);
+  if (s.from_table) chosen.reset();  // the table answered: no FASTSIM grid was used
+  const tangential::CreepForces& forces = s.forces;
+  const bool tabled = *method == tangential::Method::table || *method == tangential::Method::best;
+  // For table and best: which method gave the forces.
+  const std::string source = s.from_table ? "table" : "fastsim-sdec";
+  const std::string table_outside = s.table_outside.value_or("");
+  const bool has_cells = s.cells > 0 || (tangential::has_cell_fields(*method) && !s.from_table);
   const double mu_n = args.load.mu * args.load.N;
   const std::string warnings = forces.flags.describe();
   if (args.json) {
@@ -147,8 +158,8 @@ void run_creep(const CreepArgs& args) {
         .add("Fy", forces.Fy)
         .add("Fx_muN", forces.Fx / mu_n)
         .add("Fy_muN", forces.Fy / mu_n);
-    if (forces.has_Mz) out.add("Mz", forces.Mz);
-    if (has_cells) out.add("cells", cells).add("slip_cells", slip_cells);
+    if (forces.Mz) out.add("Mz", *forces.Mz);
+    if (has_cells) out.add("cells", s.cells).add("slip_cells", s.slip_cells);
     if (tabled) out.add("source", source);
     if (!table_outside.empty()) out.add("table_outside", table_outside);
     if (chosen) {
@@ -157,23 +168,7 @@ void run_creep(const CreepArgs& args) {
           .add("ny", chosen->ny)
           .add("predicted_error", chosen->predicted_error);
     }
-    if (exact_solution) {
-      const tangential::ExactSolution& s = *exact_solution;
-      out.add("exact_grid", args.exact_grid)
-          .add("status", tangential::status_name(s.status))
-          .add("iterations", s.iterations)
-          .add("adhesion_elements", s.adhesion_elements)
-          .add("adhesion_fraction",
-               s.contact_elements > 0
-                   ? static_cast<double>(s.adhesion_elements) / s.contact_elements
-                   : 0.0)
-          .add("N_grid", s.normal_force)
-          .add("frictional_work", s.frictional_work)
-          // The work of the rigid slip: what sum |p| |s| dA tends to as the grid is refined
-          // (the sum converges to first order only; wear runs use this one).
-          .add("rigid_slip_work", tangential::rigid_slip_work(s.forces, args.creepages));
-      if (!s.message.empty()) out.add("message", s.message);
-    }
+    if (s.exact) add_exact_json(out, *s.exact, args);
     out.add("extrapolated", forces.flags.any()).add("warnings", warnings);
     std::cout << out.str() << '\n';
     return;
@@ -181,20 +176,11 @@ void run_creep(const CreepArgs& args) {
   std::printf("method   %s\n", args.method.c_str());
   std::printf("Fx       %14.6g N   (Fx/muN = %+.6f)\n", forces.Fx, forces.Fx / mu_n);
   std::printf("Fy       %14.6g N   (Fy/muN = %+.6f)\n", forces.Fy, forces.Fy / mu_n);
-  if (forces.has_Mz) std::printf("Mz       %14.6g N m (about O)\n", forces.Mz);
-  if (exact_solution) {
-    const tangential::ExactSolution& s = *exact_solution;
-    std::printf("grid     %d x %d elements over 1.02 times the patch\n", args.exact_grid,
-                args.exact_grid);
-    std::printf("status   %s after %d iterations%s%s\n", tangential::status_name(s.status), s.iterations,
-                s.message.empty() ? "" : ": ", s.message.c_str());
-    std::printf("contact  %d elements: %d adhere (%.1f %%), %d slip\n", s.contact_elements,
-                s.adhesion_elements,
-                s.contact_elements > 0 ? 100.0 * s.adhesion_elements / s.contact_elements : 0.0,
-                s.slip_elements);
-    std::printf("N grid   %14.6g N   (sum of the element pressures)\n", s.normal_force);
+  if (forces.Mz) std::printf("Mz       %14.6g N m (about O)\n", *forces.Mz);
+  if (s.exact) {
+    print_exact(*s.exact, args);
   } else if (has_cells) {
-    std::printf("slip     %d of %d cells\n", slip_cells, cells);
+    std::printf("slip     %d of %d cells\n", s.slip_cells, s.cells);
   }
   if (tabled) std::printf("source   %s\n", source.c_str());
   if (!table_outside.empty()) std::printf("outside  %s\n", table_outside.c_str());

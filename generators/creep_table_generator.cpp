@@ -203,7 +203,7 @@ int main(int argc, char** argv) {
     std::vector<std::thread> pool;
     for (unsigned t = 0; t < threads; ++t) {
       pool.emplace_back([&] {
-        tangential::ExactOptions options;
+        tangential::SdecGridOptions options;
         options.nx = options.ny = n;
         const tangential::Material material{80e9, nu};
         const tangential::ContactLoad load{1e4, 0.3};
@@ -234,7 +234,7 @@ int main(int argc, char** argv) {
           if (s.status != tangential::ExactStatus::converged) ++unconverged;
           fx[i] = s.forces.Fx / mu_n;
           fy[i] = s.forces.Fy / mu_n;
-          mz[i] = s.forces.Mz / (mu_n * c);
+          mz[i] = *s.forces.Mz / (mu_n * c);
         }
       });
     }

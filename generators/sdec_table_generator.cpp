@@ -43,7 +43,7 @@ struct Row {
 };
 
 void fit(Row& row, int n) {
-  tangential::ExactOptions options;
+  tangential::SdecGridOptions options;
   options.nx = options.ny = n;
   const tangential::SdecCoefficientFit f =
       tangential::fit_sdec_coefficients(row.a_over_b, {80e9, row.nu}, options, kPsi);

@@ -254,7 +254,7 @@ int solve_all(const Solver& s, int n, const CaseSet& set, std::vector<Forces>& o
   options.nx = options.ny = std::max(n, 1);
   options.scheme = s.fastsim_scheme;
   options.bound = s.traction_bound;
-  tangential::ExactOptions exact_options;
+  tangential::SdecGridOptions exact_options;
   exact_options.nx = exact_options.ny = std::max(n, 2);
   int not_converged = 0;
   for (std::size_t k = 0; k < set.cases.size(); ++k) {
@@ -295,12 +295,12 @@ CaseSet table_cases(const CaseSet& set, int& skipped) {
   std::set<std::string> reasons;
   skipped = 0;
   for (const Case& c : set.cases) {
-    std::string why;
-    if (tangential::creep_table_covers(c.patch, c.creepages, c.load, kSteel, &why)) {
+    const auto why = tangential::creep_table_outside(c.patch, c.creepages, c.load, kSteel);
+    if (!why) {
       covered.cases.push_back(c);
     } else {
       ++skipped;
-      reasons.insert(why);
+      reasons.insert(*why);
     }
   }
   for (const std::string& why : reasons)

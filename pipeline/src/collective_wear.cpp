@@ -212,7 +212,7 @@ CollectiveWear CollectiveEvaluator::evaluate(
   fastsim_options.field_set =
       scene_.tgamma_maps ? tangential::CellFieldSet::all : tangential::CellFieldSet::wear;
 
-  tangential::ExactOptions exact_options;
+  tangential::SdecGridOptions exact_options;
   exact_options.nx = nx;
   exact_options.ny = ny;
 

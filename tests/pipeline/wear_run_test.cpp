@@ -313,7 +313,7 @@ TEST_F(WearRunTest, ExactSolvesEveryPatchWithTheExactTheory) {
   const Scene scene = parse_scene(text, dir_);
   const tangential::Material material{scene.youngs_modulus / (2.0 * (1.0 + scene.poisson)),
                                 scene.poisson};
-  tangential::ExactOptions options;
+  tangential::SdecGridOptions options;
   options.nx = scene.grid_nx;
   options.ny = scene.grid_ny;
   int patches = 0;

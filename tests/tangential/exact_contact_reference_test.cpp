@@ -26,7 +26,7 @@ ExactSolution solve_row(const testing::CsvRow& row, int n) {
   const contactgeom::Sdec patch{row.number("a_mm") * 1e-3, row.number("b_mm") * 1e-3,
                                 row.number("psi")};
   const Creepages v{row.number("vx_at_O"), row.number("vy_at_O"), row.number("phi_per_m")};
-  ExactOptions options;
+  SdecGridOptions options;
   options.nx = n;
   options.ny = n;
   return exact_sdec(patch, v, {row.number("N_N"), row.number("mu")}, {80e9, 0.25}, options);

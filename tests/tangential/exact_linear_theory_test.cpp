@@ -33,7 +33,7 @@ Coefficients exact_coefficients(double a_over_b, double nu, int nx, int ny) {
   const double a = 4.25e-3, b = a / a_over_b;
   const Material material{80e9, nu};
   const ContactLoad load{1e4, 1e6};
-  ExactOptions options;
+  SdecGridOptions options;
   options.nx = nx;
   options.ny = ny;
   const contactgeom::Sdec ellipse{a, b, 0.0};

@@ -18,7 +18,7 @@ class ExactSdecCoefficients : public ::testing::TestWithParam<double> {};
 
 TEST_P(ExactSdecCoefficients, ReproduceTable1) {
   const double g = GetParam();
-  ExactOptions options;
+  SdecGridOptions options;
   options.nx = options.ny = 40;
   constexpr double kPsi[] = {0.2, 0.4, 0.6, 0.8};
   const SdecCoefficientFit fit = fit_sdec_coefficients(g, {80e9, 0.25}, options, kPsi);

@@ -26,7 +26,7 @@ TEST(LinearSdec, EvaluatesEquation11) {
       -G * c * c * (3.67 + 0.109 * psi2) * v.vy - G * c * c * c * (1.47 + 0.063 * psi2) * v.phi;
   EXPECT_NEAR(f.Fx, fx, 1e-9 * std::abs(fx));
   EXPECT_NEAR(f.Fy, fy, 1e-9 * std::abs(fy));
-  EXPECT_FALSE(f.has_Mz);
+  EXPECT_FALSE(f.Mz.has_value());
 }
 
 TEST(LinearSdec, ForcesOpposeTheCreepages) {

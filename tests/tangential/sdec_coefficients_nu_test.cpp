@@ -142,7 +142,7 @@ TEST_P(SdecLinearAgainstExact, LinearLimitForces) {
   const double a = 5e-3, b = a / c.a_over_b, cc = std::sqrt(a * b), creep = 1e-6;
   const Material material{80e9, c.nu};
   const ContactLoad load{1e4, 1e6};  // friction large enough that nothing slips
-  ExactOptions options;
+  SdecGridOptions options;
   options.nx = options.ny = 48;
   const contactgeom::Sdec patch{a, b, c.psi};
   for (const Creepages v :

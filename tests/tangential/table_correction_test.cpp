@@ -33,7 +33,7 @@ const std::vector<Creepages> kCreepages = {{0, 0, 0.5}, {5e-4, -8e-4, 1.0}};
 // extrapolation moves the work by 5 %).
 TEST(TableCorrection, RigidSlipWorkIsTheExactTheorysFrictionalWork) {
   for (const Creepages& v : kCreepages) {
-    ExactOptions coarse, fine;
+    SdecGridOptions coarse, fine;
     coarse.nx = coarse.ny = 40;
     fine.nx = fine.ny = 80;
     const ExactSolution a = exact_sdec(kPatch, v, kLoad, kSteel, coarse);
@@ -66,7 +66,7 @@ TEST(TableCorrection, CarriesFastsimToTheExactTheorysWork) {
     const CreepForces table = creep_table_forces(kPatch, v, kLoad, kSteel);
     EXPECT_EQ(best.forces.Fx, table.Fx);
     EXPECT_EQ(best.forces.Fy, table.Fy);
-    ASSERT_TRUE(best.forces.has_Mz);
+    ASSERT_TRUE(best.forces.Mz.has_value());
 
     // Conservation: the cells' work sums to the totals' work; every cell's work and slip are
     // FASTSIM's times one factor, its tractions FASTSIM's.
@@ -85,7 +85,7 @@ TEST(TableCorrection, CarriesFastsimToTheExactTheorysWork) {
     EXPECT_NEAR(sum, rigid_slip_work(table, v), 1e-9 * best.frictional_work);
     EXPECT_DOUBLE_EQ(best.frictional_work, rigid_slip_work(table, v));
 
-    ExactOptions coarse, fine;
+    SdecGridOptions coarse, fine;
     coarse.nx = coarse.ny = 40;
     fine.nx = fine.ny = 80;
     const double exact = 2.0 * exact_sdec(kPatch, v, kLoad, kSteel, fine).frictional_work -

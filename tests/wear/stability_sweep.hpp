@@ -262,7 +262,7 @@ inline Case perturbed(const Case& c, std::size_t k, double h) {
 }
 
 inline bool finite(const CreepForces& f) {
-  return std::isfinite(f.Fx) && std::isfinite(f.Fy) && std::isfinite(f.Mz);
+  return std::isfinite(f.Fx) && std::isfinite(f.Fy) && std::isfinite(f.Mz.value_or(0.0));
 }
 
 /// Checks one case against every invariant (`direction`: its creepage direction, for the

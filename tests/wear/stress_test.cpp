@@ -84,7 +84,7 @@ void for_every_fastsim(Body body) {
 
 bool all_finite(const TangentialSolution& s) {
   bool ok = std::isfinite(s.forces.Fx) && std::isfinite(s.forces.Fy) &&
-            std::isfinite(s.forces.Mz) && std::isfinite(s.frictional_work);
+            std::isfinite(s.forces.Mz.value_or(0.0)) && std::isfinite(s.frictional_work);
   if (s.fields) {
     for (const auto* v : {&s.fields->px, &s.fields->py, &s.fields->sx, &s.fields->sy,
                           &s.fields->slip_norm, &s.fields->work, &s.fields->pressure}) {

@@ -2,12 +2,13 @@
 
 #include <utility>
 
+#include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::tangential {
 
 namespace {
-constexpr std::array<std::pair<ContactModel, std::string_view>, 5> kNames = {{
+constexpr core::NameTable<ContactModel, 5> kNames = {{
     {ContactModel::sdec, "sdec"},
     {ContactModel::eql, "eql"},
     {ContactModel::eqe, "eqe"},
@@ -16,16 +17,10 @@ constexpr std::array<std::pair<ContactModel, std::string_view>, 5> kNames = {{
 }};
 }  // namespace
 
-std::string_view model_name(ContactModel model) {
-  for (const auto& [m, name] : kNames)
-    if (m == model) return name;
-  return "unknown";
-}
+std::string_view model_name(ContactModel model) { return core::name_of(kNames, model); }
 
 std::optional<ContactModel> parse_contact_model(std::string_view name) {
-  for (const auto& [m, text] : kNames)
-    if (text == name) return m;
-  return std::nullopt;
+  return core::value_named(kNames, name);
 }
 
 ModelPatch model_patch(ContactModel model, const contactgeom::Sdec& sdec,

@@ -237,11 +237,17 @@ double creep_table_magnitude(const contactgeom::Sdec& sdec, const Creepages& cre
   return r;
 }
 
+std::optional<std::string> creep_table_outside(const contactgeom::Sdec& sdec,
+                                               const Creepages& creepages, const ContactLoad& load,
+                                               const Material& material) {
+  std::string reason = check(sdec, creepages, load, material, nullptr);
+  if (reason.empty()) return std::nullopt;
+  return reason;
+}
+
 bool creep_table_covers(const contactgeom::Sdec& sdec, const Creepages& creepages,
-                        const ContactLoad& load, const Material& material, std::string* why) {
-  const std::string reason = check(sdec, creepages, load, material, nullptr);
-  if (why) *why = reason;
-  return reason.empty();
+                        const ContactLoad& load, const Material& material) {
+  return !creep_table_outside(sdec, creepages, load, material);
 }
 
 CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& creepages,
@@ -258,8 +264,7 @@ CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& c
   CreepForces forces;
   forces.Fx = f[0] * mu_n;
   forces.Fy = f[1] * mu_n;
-  forces.has_Mz = has_moment();
-  if (forces.has_Mz) forces.Mz = f[2] * mu_n * sdec.c();
+  if (has_moment()) forces.Mz = f[2] * mu_n * sdec.c();
   return forces;
 }
 

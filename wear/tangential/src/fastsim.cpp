@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "fastsim_kernel.hpp"
+#include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/tangential/kalker_coefficients.hpp"
 #include "wheelwear/tangential/sdec_coefficients.hpp"
@@ -17,7 +18,7 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
-constexpr std::array<std::pair<FastsimMethod, std::string_view>, 5> kNames = {{
+constexpr core::NameTable<FastsimMethod, 5> kNames = {{
     {FastsimMethod::sdec, "fastsim-sdec"},
     {FastsimMethod::eql, "fastsim-eql"},
     {FastsimMethod::eqe, "fastsim-eqe"},
@@ -75,16 +76,10 @@ void FastsimOptions::validate() const {
           "the grid must have at most 1e8 cells");
 }
 
-std::string_view method_name(FastsimMethod method) {
-  for (const auto& [m, name] : kNames)
-    if (m == method) return name;
-  return "unknown";
-}
+std::string_view method_name(FastsimMethod method) { return core::name_of(kNames, method); }
 
 std::optional<FastsimMethod> parse_fastsim_method(std::string_view name) {
-  for (const auto& [m, text] : kNames)
-    if (text == name) return m;
-  return std::nullopt;
+  return core::value_named(kNames, name);
 }
 
 TangentialSolution fastsim(FastsimMethod method, const contactgeom::Sdec& sdec,
@@ -176,7 +171,6 @@ void fastsim(FastsimMethod method, const contactgeom::Sdec& sdec, const Creepage
   solution.forces.Fx = totals.Fx;
   solution.forces.Fy = totals.Fy;
   solution.forces.Mz = totals.Mz;
-  solution.forces.has_Mz = true;
   solution.cells = options.nx * options.ny;
   solution.slip_cells = totals.slip_cells;
   solution.frictional_work = totals.work;

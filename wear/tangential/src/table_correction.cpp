@@ -10,10 +10,10 @@
 namespace wheelwear::tangential {
 
 double rigid_slip_work(const CreepForces& forces, const Creepages& creepages) {
-  if (!forces.has_Mz && creepages.phi != 0.0)
+  if (!forces.Mz && creepages.phi != 0.0)
     throw InputError("rigid_slip_work: phi = " + std::to_string(creepages.phi) +
                      " 1/m needs the spin moment Mz, which these forces lack");
-  const double spin = forces.has_Mz ? forces.Mz * creepages.phi : 0.0;
+  const double spin = forces.Mz ? *forces.Mz * creepages.phi : 0.0;
   return -(forces.Fx * creepages.vx + forces.Fy * creepages.vy + spin);
 }
 
@@ -22,7 +22,7 @@ bool correct_with_creep_table(const contactgeom::Sdec& sdec, const Creepages& cr
                               TangentialSolution& solution) {
   if (!creep_table_covers(sdec, creepages, load, material)) return false;
   const CreepForces exact = creep_table_forces(sdec, creepages, load, material);
-  if (!exact.has_Mz) return false;  // a table without Mz cannot give the spin's work
+  if (!exact.Mz) return false;  // a table without Mz cannot give the spin's work
   // Interpolation can leave a tiny negative work near zero creepage; work is never negative.
   const double work = std::max(0.0, rigid_slip_work(exact, creepages));
   solution.forces = exact;

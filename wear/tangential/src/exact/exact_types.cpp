@@ -21,7 +21,7 @@ void ElementGrid::validate() const {
   require(dy > 0.0, "grid.dy", dy, "the element width must be positive (metres)");
 }
 
-void ExactOptions::validate() const {
+void SdecGridOptions::validate() const {
   require(nx >= 2 && nx <= kMaxElementsPerSide, "nx", nx, "needs 2 ... 4096 elements along x");
   require(ny >= 1 && ny <= kMaxElementsPerSide, "ny", ny, "needs 1 ... 4096 elements along y");
   require_finite("margin", margin);
@@ -31,6 +31,9 @@ void ExactOptions::validate() const {
   require_finite("shift_y", shift_y);
   require(std::abs(shift_x) <= 0.5, "shift_x", shift_x, "must lie in [-0.5, 0.5] elements");
   require(std::abs(shift_y) <= 0.5, "shift_y", shift_y, "must lie in [-0.5, 0.5] elements");
+}
+
+void ExactSolverOptions::validate() const {
   require_finite("tolerance", tolerance);
   require(tolerance > 0.0, "tolerance", tolerance, "must be positive");
   require_finite("normal_tolerance", normal_tolerance);

@@ -10,7 +10,7 @@ namespace wheelwear::tangential {
 
 NormalSolution exact_normal(const ElementGrid& grid, const std::vector<double>& h,
                             double normal_force, const Material& material,
-                            const ExactOptions& options) {
+                            const ExactSolverOptions& options) {
   grid.validate();
   material.validate();
   options.validate();

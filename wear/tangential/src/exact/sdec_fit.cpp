@@ -8,7 +8,7 @@ namespace wheelwear::tangential {
 
 SdecNoSlipCoefficients exact_no_slip_coefficients(double a_over_b, double psi,
                                                   const Material& material,
-                                                  const ExactOptions& options) {
+                                                  const SdecGridOptions& options) {
   const double a = 4.25e-3, b = a / a_over_b, c = std::sqrt(a * b), creep = 1e-6;
   const ContactLoad load{1e4, 1e6};  // friction large enough that nothing slips
   const contactgeom::Sdec patch{a, b, psi};
@@ -27,7 +27,7 @@ SdecNoSlipCoefficients exact_no_slip_coefficients(double a_over_b, double psi,
 }
 
 SdecCoefficientFit fit_sdec_coefficients(double a_over_b, const Material& material,
-                                         const ExactOptions& options,
+                                         const SdecGridOptions& options,
                                          std::span<const double> psis) {
   SdecCoefficientFit fit;
   fit.at_zero = exact_no_slip_coefficients(a_over_b, 0.0, material, options);

@@ -14,7 +14,7 @@ namespace {
 
 // Solves the tangential problem of `solution` (grid and pn set) and sums its forces.
 void solve_and_sum(const Creepages& v, double mu, const Material& material,
-                   const ExactOptions& options, ExactSolution& solution) {
+                   const ExactSolverOptions& options, ExactSolution& solution) {
   const ElementGrid& grid = solution.grid;
   const auto n = static_cast<std::size_t>(grid.size());
   std::vector<double> bound(n), wx(n), wy(n);
@@ -36,7 +36,7 @@ void solve_and_sum(const Creepages& v, double mu, const Material& material,
   const double da = grid.area();
   CreepForces& f = solution.forces;
   f = CreepForces{};
-  f.has_Mz = true;
+  double mz = 0.0;
   solution.normal_force = solution.frictional_work = 0.0;
   solution.contact_elements = solution.adhesion_elements = solution.slip_elements = 0;
   for (int j = 0; j < grid.ny; ++j)
@@ -54,13 +54,14 @@ void solve_and_sum(const Creepages& v, double mu, const Material& material,
       solution.normal_force += solution.pn[e] * da;
       f.Fx += solution.px[e] * da;
       f.Fy += solution.py[e] * da;
-      f.Mz += (grid.x(i) * solution.py[e] - grid.y(j) * solution.px[e]) * da;
+      mz += (grid.x(i) * solution.py[e] - grid.y(j) * solution.px[e]) * da;
     }
+  f.Mz = mz;
 }
 
 }  // namespace
 
-ElementGrid sdec_grid(const contactgeom::Sdec& sdec, const ExactOptions& options) {
+ElementGrid sdec_grid(const contactgeom::Sdec& sdec, const SdecGridOptions& options) {
   sdec.validate();
   options.validate();
   ElementGrid grid;
@@ -75,12 +76,14 @@ ElementGrid sdec_grid(const contactgeom::Sdec& sdec, const ExactOptions& options
 
 ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepages,
                          const ContactLoad& load, const Material& material,
-                         const ExactOptions& options) {
+                         const SdecGridOptions& grid_options,
+                         const ExactSolverOptions& options) {
   creepages.validate();
   load.validate();
   material.validate();
+  options.validate();
   ExactSolution solution;
-  solution.grid = sdec_grid(sdec, options);
+  solution.grid = sdec_grid(sdec, grid_options);
   const ElementGrid& grid = solution.grid;
   solution.pn.resize(static_cast<std::size_t>(grid.size()));
   for (int j = 0; j < grid.ny; ++j)
@@ -93,7 +96,7 @@ ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepag
 
 ExactSolution exact_rolling(const ElementGrid& grid, const std::vector<double>& h,
                             const Creepages& creepages, const ContactLoad& load,
-                            const Material& material, const ExactOptions& options) {
+                            const Material& material, const ExactSolverOptions& options) {
   creepages.validate();
   load.validate();
   NormalSolution normal = exact_normal(grid, h, load.N, material, options);

@@ -55,7 +55,7 @@ ElementState solve_element(double rx, double ry, double dxx, double dyy, double 
 
 void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bound,
                       const std::vector<double>& wx, const std::vector<double>& wy,
-                      const ExactOptions& options, ExactSolution& solution) {
+                      const ExactSolverOptions& options, ExactSolution& solution) {
   const ElementGrid& grid = op.grid();
   const int nx = grid.nx, ny = grid.ny;
   const auto n = static_cast<std::size_t>(grid.size());

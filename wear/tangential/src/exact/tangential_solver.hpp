@@ -14,6 +14,6 @@ namespace wheelwear::tangential::detail {
 /// tractions, slip, element states, iteration count and status into `solution`.
 void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bound,
                       const std::vector<double>& wx, const std::vector<double>& wy,
-                      const ExactOptions& options, ExactSolution& solution);
+                      const ExactSolverOptions& options, ExactSolution& solution);
 
 }  // namespace wheelwear::tangential::detail

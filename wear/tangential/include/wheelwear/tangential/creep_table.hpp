@@ -4,6 +4,7 @@
 /// 2017). The table (data/creep_table.h5, generators/creep_table_generator.cpp) is compiled into the
 /// library.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,11 +38,15 @@ CreepTableRange creep_table_range();
 double creep_table_magnitude(const contactgeom::Sdec& sdec, const Creepages& creepages,
                              const ContactLoad& load, const Material& material);
 
-/// True when (sdec, creepages, load, material) lie inside the built-in table's range; otherwise
-/// false, and `why` (if given) says which parameter is outside and the range.
+/// True when (sdec, creepages, load, material) lie inside the built-in table's range.
 bool creep_table_covers(const contactgeom::Sdec& sdec, const Creepages& creepages,
-                        const ContactLoad& load, const Material& material,
-                        std::string* why = nullptr);
+                        const ContactLoad& load, const Material& material);
+
+/// Why the built-in table does not cover (sdec, creepages, load, material): which parameter is
+/// outside and the table's range; std::nullopt when it covers them.
+std::optional<std::string> creep_table_outside(const contactgeom::Sdec& sdec,
+                                               const Creepages& creepages, const ContactLoad& load,
+                                               const Material& material);
 
 /// Total creep forces Fx, Fy [N] and the spin moment Mz about O [N m] on the wheel (Kalker's
 /// convention: they oppose the creepages) of the SDEC patch `sdec` with creepages at O, from the
@@ -49,7 +54,7 @@ bool creep_table_covers(const contactgeom::Sdec& sdec, const Creepages& creepage
 /// log(a/b), psi, the direction (theta, beta) and the magnitude r of the normalised creepage, and
 /// linear in nu between the tabulated ratios. psi < 0 uses the mirror image (vy, phi, Fy change
 /// sign) and creepages with vx < 0 the reversed ones (forces change sign). Mz is tabulated as
-/// Mz/(mu N c) (has_Mz = true; false for a table written without it). Throws InputError naming the
+/// Mz/(mu N c) (none for a table written without it). Throws InputError naming the
 /// parameter when the input is invalid or outside the table's range (creep_table_range): use
 /// FASTSIM-SDEC there.
 CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& creepages,

@@ -1,6 +1,7 @@
 #pragma once
 /// Value types shared by the tangential contact solvers: creepages, material, load, forces.
 
+#include <optional>
 #include <string>
 
 #include "wheelwear/contactgeom/creepages.hpp"
@@ -41,8 +42,9 @@ struct CoefficientFlags {
 struct CreepForces {
   double Fx = 0.0;         ///< longitudinal force [N]
   double Fy = 0.0;         ///< lateral force [N]
-  double Mz = 0.0;         ///< spin moment about O [N m]; meaningful only if has_Mz
-  bool has_Mz = false;     ///< false for the linear theory, which does not define Mz for SDEC
+  /// Spin moment about O [N m]; none from the linear theory, which does not define it for
+  /// the SDEC.
+  std::optional<double> Mz;
   CoefficientFlags flags;  ///< where the coefficients came from
 };
 

@@ -2,13 +2,13 @@
 /// FASTSIM (Kalker 1982) and its SDEC extension FASTSIM-SDEC (Liu, Fu & Bruni 2022, Eq. 15-18),
 /// with the comparators of the paper's Section 5.
 
-#include <cstdint>
 #include <optional>
 #include <string_view>
 #include <vector>
 
 #include "wheelwear/contactgeom/sdec.hpp"
 #include "wheelwear/tangential/creep_types.hpp"
+#include "wheelwear/tangential/solution.hpp"
 
 namespace wheelwear::tangential {
 
@@ -57,34 +57,6 @@ struct FastsimOptions {
   CellFieldSet field_set = CellFieldSet::all;  ///< which fields, when cell_fields
 
   void validate() const;
-};
-
-/// Per-cell fields on the strip grid, stored strip by strip: index = j*nx + i, with strip j
-/// (lateral) and cell i counted from the leading edge. Tractions are the cell's value in the
-/// scheme's force sum (Kalker: its trailing node; second order: its average); positions are
-/// cell centres relative to O.
-struct CellFields {
-  int nx = 0, ny = 0;
-  double dy = 0.0;                 ///< strip width [m]
-  std::vector<double> dx;          ///< cell length of each strip [m], size ny
-  std::vector<double> strip_y;     ///< lateral position of each strip's centre from O [m], size ny
-  std::vector<double> x, y;        ///< cell centre [m]
-  std::vector<double> px, py;      ///< tangential traction on the wheel [Pa]
-  std::vector<double> sx, sy;      ///< slip (relative velocity / V) [-]; 0 where adhering
-  std::vector<double> slip_norm;   ///< slip magnitude |s| = sqrt(sx^2 + sy^2) [-]
-  std::vector<double> work;        ///< frictional work density |p||s| [J/m^2 per m rolled]
-  std::vector<double> pressure;    ///< normal pressure of the region at the cell centre [Pa]
-  std::vector<std::uint8_t> slip;  ///< 1 where the cell slips, 0 where it adheres
-};
-
-/// Result of a tangential solve.
-struct TangentialSolution {
-  CreepForces forces;
-  int cells = 0;                     ///< cells in the grid (nx*ny)
-  int slip_cells = 0;                ///< cells whose traction reached the bound
-  std::optional<CellFields> fields;  ///< only when FastsimOptions::cell_fields
-  /// Total frictional work per rolled distance, sum of work*dA [N]; only with cell fields.
-  double frictional_work = 0.0;
 };
 
 /// Solves the tangential problem on the patch `sdec` with creepages at O.

@@ -8,7 +8,7 @@ namespace wheelwear::tangential {
 
 /// Linear (no-slip) creep forces of an SDEC patch with creepages at O (Liu, Fu & Bruni 2022,
 /// Eq. 11-12): Fx = -G c^2 C11s vx - G c^3 C13s phi, Fy = -G c^2 C22s vy - G c^3 C23s phi,
-/// c = sqrt(ab). Mz is not defined by the paper's theory (has_Mz = false).
+/// c = sqrt(ab). Mz is not defined by the paper's theory (Mz is empty).
 CreepForces linear_sdec_forces(const contactgeom::Sdec& sdec, const Creepages& creepages,
                                const Material& material);
 

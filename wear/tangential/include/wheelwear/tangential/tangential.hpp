@@ -13,6 +13,7 @@
 #include "wheelwear/tangential/creep_types.hpp"
 #include "wheelwear/tangential/exact/exact_types.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
+#include "wheelwear/tangential/solution.hpp"
 
 namespace wheelwear::tangential {
 
@@ -60,53 +61,20 @@ bool has_cell_fields(Method method);
 
 /// Discretisation of each method; a method reads only its own part.
 struct SolveOptions {
-  /// Grid, bound, scheme and fields of the FASTSIM methods and of best. With cell_fields the
-  /// solution carries the per-cell fields (exact always fills them when cell_fields is set).
+  /// Grid, bound, scheme and fields of the FASTSIM methods and of best; its cell_fields also
+  /// asks the exact method for its elements as cells.
   FastsimOptions fastsim;
-  /// Grid and stopping tests of the exact method (exact_sdec): nx x ny elements over margin
-  /// times the patch.
-  ExactOptions exact;
+  /// Grid of the exact method (exact_sdec): nx x ny elements over margin times the patch.
+  SdecGridOptions exact_grid;
+  ExactSolverOptions exact_solver;  ///< stopping tests of the exact method
 
   void validate() const;  ///< throws InputError naming the bad field
-};
-
-/// Numerical outcome of a solve (data, not an error).
-enum class SolveStatus {
-  ok,             ///< solved as asked
-  not_converged,  ///< exact: the iteration cap was reached; the last iterate is returned
-  no_contact,     ///< exact: no element carries pressure
-};
-
-/// "ok", "not converged", "no contact".
-std::string_view status_name(SolveStatus status);
-
-/// Result of solve_patch.
-struct PatchSolution {
-  Method method = Method::fastsim_sdec;  ///< the method asked for
-  /// Kalker's convention: forces on the wheel, opposing the creepages; Mz about O where the
-  /// method defines it (forces.Mz holds it when forces.has_Mz).
-  CreepForces forces;
-  SolveStatus status = SolveStatus::ok;
-  std::string message;  ///< why, when status is not ok
-  /// best: true where the totals came from the book of tables, false where FASTSIM-SDEC
-  /// answered because the patch is outside it (table_outside says why).
-  bool from_table = false;
-  std::string table_outside;
-  int cells = 0;       ///< cells (FASTSIM) or contact elements (exact); 0 for totals only
-  int slip_cells = 0;  ///< of them, slipping
-  /// Per-cell fields when SolveOptions::fastsim.cell_fields and the method has them.
-  std::optional<CellFields> fields;
-  /// Frictional work per rolled distance [N] with cell fields: the sum of work * dA, which
-  /// best and exact make equal to the rigid slip's work -(Fx vx + Fy vy + Mz phi).
-  double frictional_work = 0.0;
-  /// exact: the full solution (grid, element states, iterations).
-  std::optional<ExactSolution> exact;
 };
 
 /// Solves the tangential problem on the patch `sdec` (for fastsim_elliptic the ellipse
 /// sdec.a, sdec.b) with creepages at O. Throws InputError on invalid input (|psi| >= 1,
 /// a or b <= 0, N <= 0, mu <= 0, NaN, a patch outside the book of tables with Method::table).
-PatchSolution solve_patch(Method method, const contactgeom::Sdec& sdec,
+TangentialSolution solve_patch(Method method, const contactgeom::Sdec& sdec,
                           const Creepages& creepages, const ContactLoad& load,
                           const Material& material, const SolveOptions& options = {});
 
@@ -114,6 +82,6 @@ PatchSolution solve_patch(Method method, const contactgeom::Sdec& sdec,
 /// seen; for loops over many patches).
 void solve_patch(Method method, const contactgeom::Sdec& sdec, const Creepages& creepages,
                  const ContactLoad& load, const Material& material, const SolveOptions& options,
-                 PatchSolution& solution);
+                 TangentialSolution& solution);
 
 }  // namespace wheelwear::tangential

@@ -24,19 +24,23 @@ struct ElementGrid {
   double area() const { return dx * dy; }                   ///< element area [m^2]
 };
 
-/// Discretisation and stopping options of the exact-theory solvers. exact_sdec builds its grid
-/// from nx, ny, margin and the shifts; exact_normal and exact_rolling take a grid and use only
-/// the stopping options.
-struct ExactOptions {
-  int nx = 80;  ///< elements along x over the potential contact area, >= 2
-  int ny = 80;  ///< elements along y over the potential contact area, >= 1
+/// The element grid exact_sdec lays over an SDEC patch.
+struct SdecGridOptions {
+  int nx = 80;  ///< elements along x over the potential contact area, 2 ... 4096
+  int ny = 80;  ///< elements along y over the potential contact area, 1 ... 4096
   /// The potential contact area of an SDEC patch is [-margin a, margin a] x
   /// [y0 - margin b, y0 + margin b] around its mid-point O' (CONTACT's choice: 1.02); >= 1.
   double margin = 1.02;
-  /// Offset of the SDEC grid from its centred position, in elements along x and y, in
+  /// Offset of the grid from its centred position, in elements along x and y, in
   /// [-0.5, 0.5]: moves the element centres against the patch boundary (to study or average
   /// out how the grid samples the boundary).
   double shift_x = 0.0, shift_y = 0.0;
+
+  void validate() const;  ///< throws InputError naming the bad field
+};
+
+/// Stopping tests of the normal and tangential iterations of the exact-theory solvers.
+struct ExactSolverOptions {
   /// The tangential iteration stops when rms|p_k - p_(k-1)| <= tolerance * rms|p_k| over the
   /// contact elements and no element changed between adhesion and slip; > 0.
   double tolerance = 1e-6;
@@ -74,7 +78,7 @@ struct NormalSolution {
 /// Solution of the steady-rolling tangential problem of Kalker's exact theory.
 struct ExactSolution {
   /// Total forces on body 1 (the wheel), Kalker's convention (they oppose the creepages);
-  /// Mz is the spin moment about O [N m] (has_Mz = true).
+  /// Mz is the spin moment about O [N m] (always present).
   CreepForces forces;
   ElementGrid grid;                 ///< the grid solved on
   std::vector<double> pn;           ///< normal pressure per element [Pa]

@@ -16,6 +16,6 @@ namespace wheelwear::tangential {
 /// options.normal_tolerance * N. Throws InputError on invalid input.
 NormalSolution exact_normal(const ElementGrid& grid, const std::vector<double>& h,
                             double normal_force, const Material& material,
-                            const ExactOptions& options = {});
+                            const ExactSolverOptions& options = {});
 
 }  // namespace wheelwear::tangential

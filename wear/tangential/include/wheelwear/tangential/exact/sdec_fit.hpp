@@ -22,7 +22,7 @@ struct SdecNoSlipCoefficients {
 /// three exact solves with unit creepages (1e-6) on options' grid.
 SdecNoSlipCoefficients exact_no_slip_coefficients(double a_over_b, double psi,
                                                   const Material& material,
-                                                  const ExactOptions& options);
+                                                  const SdecGridOptions& options);
 
 /// Table 1's row at a_over_b: K13 by least squares of C13s = -K13 psi and each B by least
 /// squares of Cs(psi) - Cs(0) = B psi^2 over `psis` (positive; the negative psi give the same
@@ -33,6 +33,6 @@ struct SdecCoefficientFit {
   bool clean = true;               ///< every solve converged without slip
 };
 SdecCoefficientFit fit_sdec_coefficients(double a_over_b, const Material& material,
-                                         const ExactOptions& options, std::span<const double> psis);
+                                         const SdecGridOptions& options, std::span<const double> psis);
 
 }  // namespace wheelwear::tangential

@@ -13,7 +13,7 @@ namespace wheelwear::tangential {
 
 /// The grid of an SDEC patch: [-margin a, margin a] x [y0 - margin b, y0 + margin b] around
 /// the patch's mid-point O' (y0 = psi b from O), options.nx x options.ny elements.
-ElementGrid sdec_grid(const contactgeom::Sdec& sdec, const ExactOptions& options);
+ElementGrid sdec_grid(const contactgeom::Sdec& sdec, const SdecGridOptions& options);
 
 /// Steady rolling on an SDEC patch with the prescribed pressure of Liu, Fu & Bruni 2022, Eq. 4,
 /// p_n = (p0/a) sqrt(x_l(y)^2 - x^2), p0 = 3N/(2 pi a b), evaluated at element centres (as
@@ -26,7 +26,8 @@ ElementGrid sdec_grid(const contactgeom::Sdec& sdec, const ExactOptions& options
 /// Throws InputError on invalid input.
 ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepages,
                          const ContactLoad& load, const Material& material,
-                         const ExactOptions& options = {});
+                         const SdecGridOptions& grid = {},
+                         const ExactSolverOptions& options = {});
 
 /// Steady rolling for a given undeformed distance `h` [m] per element of `grid` (index
 /// j*nx + i, before the approach; the contact area follows from the normal problem,
@@ -35,6 +36,6 @@ ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepag
 /// body 1 against body 2 (Kalker's convention). Throws InputError on invalid input.
 ExactSolution exact_rolling(const ElementGrid& grid, const std::vector<double>& h,
                             const Creepages& creepages, const ContactLoad& load,
-                            const Material& material, const ExactOptions& options = {});
+                            const Material& material, const ExactSolverOptions& options = {});
 
 }  // namespace wheelwear::tangential

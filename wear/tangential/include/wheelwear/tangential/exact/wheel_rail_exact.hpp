@@ -22,9 +22,7 @@ struct WheelRailExactOptions {
   /// patch it is sized from (virtual penetration is an approximation), hence more than
   /// CONTACT's 1.02 for a known patch.
   double margin = 1.3;
-  /// Stopping tests of the normal and tangential iterations (its nx, ny, margin and shifts
-  /// are not used here).
-  ExactOptions solver;
+  ExactSolverOptions solver;  ///< stopping tests of the normal and tangential iterations
 
   void validate() const;  ///< throws InputError naming the bad field
 };
