@@ -16,7 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kFormatVersion = 1;
 constexpr std::size_t kCompressAbove = 4096;   // elements
 constexpr std::size_t kChunkElements = 65536;  // about 512 kB per chunk
 
@@ -165,7 +164,8 @@ std::string ResultsFile::step_group(int step) {
 }
 
 ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_text, bool overwrite,
-                                const GroupRecord& load_collective) {
+                                const GroupRecord& load_collective,
+                                const std::map<std::string, std::string>& root_attributes) {
   if (fs::exists(path) && !overwrite) {
     throw InputError("output " + path.string() +
                      ": the file exists; choose another name or pass --overwrite to replace it");
@@ -174,8 +174,9 @@ ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_tex
   try {
     H5::H5File file(partial.string(), H5F_ACC_TRUNC);
     write_text(file, "/scene", std::string(scene_text), "the scene this run was made from (TOML)");
-    H5::DataSet scene = file.openDataSet("/scene");
-    write_int_attribute(scene, "format_version", kFormatVersion);
+    H5::Group root = file.openGroup("/");
+    write_int_attribute(root, "format_version", kFormatVersion);
+    for (const auto& [name, value] : root_attributes) write_string_attribute(root, name, value);
     if (!load_collective.arrays.empty() || !load_collective.texts.empty())
       write_group(file, "/load_collective", load_collective);
     H5::Group steps = file.createGroup("/steps");
@@ -258,6 +259,61 @@ bool ResultsFile::has(const std::string& full) const {
     return file.nameExists(full);
   } catch (const H5::Exception&) {
     return false;  // a missing intermediate group
+  }
+}
+
+std::vector<std::string> ResultsFile::step_array_names(int step) const {
+  const std::string group = step_group(step);
+  std::vector<std::string> names;
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
+    if (!file.nameExists(group)) throw InputError("results file: no step group " + group);
+    auto collect = [](hid_t object, const char* name, const H5O_info_t* info, void* out) {
+      if (info->type != H5O_TYPE_DATASET || std::string_view(name) == ".") return 0;
+      const hid_t data = H5Dopen2(object, name, H5P_DEFAULT);
+      const hid_t type = H5Dget_type(data);
+      if (H5Tget_class(type) != H5T_STRING)
+        static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+      H5Tclose(type);
+      H5Dclose(data);
+      return 0;
+    };
+    const H5::Group g = file.openGroup(group);
+    H5Ovisit(g.getId(), H5_INDEX_NAME, H5_ITER_INC, collect, &names);
+  } catch (const H5::Exception& error) {
+    throw InputError("results file " + path_.string() + ": cannot list " + group + " (" +
+                     error.getDetailMsg() + ")");
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+int ResultsFile::format_version() const {
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
+    const H5::Group root = file.openGroup("/");
+    return root.attrExists("format_version") ? read_int_attribute(root, "format_version") : 1;
+  } catch (const H5::Exception& error) {
+    throw InputError("results file " + path_.string() + ": unreadable HDF5 (" +
+                     error.getDetailMsg() + ")");
+  }
+}
+
+std::optional<std::string> ResultsFile::root_attribute(const std::string& name) const {
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
+    const H5::Group root = file.openGroup("/");
+    if (!root.attrExists(name)) return std::nullopt;
+    const H5::Attribute attribute = root.openAttribute(name);
+    std::string value;
+    attribute.read(attribute.getStrType(), value);
+    return value;
+  } catch (const H5::Exception& error) {
+    throw InputError("results file " + path_.string() + ": cannot read attribute " + name +
+                     " (" + error.getDetailMsg() + ")");
   }
 }
 

@@ -5,8 +5,11 @@
 /// copy (`FILE.partial`), is flushed to disk, and replaces FILE by rename(2), which is atomic:
 /// a killed run leaves FILE as it was after the last completed step.
 ///
-/// Layout (every dataset carries string attributes `units` and `description`):
-///   /scene            the scene text (TOML), attribute `format_version`
+/// Layout (every dataset carries string attributes `units` and `description`; docs/results.md
+/// is the full description):
+///   /                 attribute `format_version` (kFormatVersion) and the root attributes
+///                     the run passes (e.g. `creep_table_sha256`)
+///   /scene            the scene text (TOML)
 ///   /load_collective  the wheelset states of the run, one dataset per quantity
 ///   /steps            attribute `completed_steps`
 ///   /steps/NNNNNN/... the arrays of step NNNNNN (six digits)
@@ -14,12 +17,18 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace wheelwear::pipeline {
+
+/// Version of the file's layout, the root attribute `format_version`: bumped by every change
+/// of the layout, each listed in docs/results.md. 2: root attribute, per-patch datasets of
+/// shape (states, 2, P), every patch worn, `hertz_dropped` per step, `creep_table_sha256`.
+inline constexpr int kFormatVersion = 2;
 
 /// One dataset: values in row-major order with their shape ({} for a scalar, {n}, {rows, cols}).
 struct ArrayRecord {
@@ -50,7 +59,8 @@ class ResultsFile {
   /// resolved them) and no steps. Throws InputError if FILE exists and `overwrite` is false;
   /// the existing file is then left untouched.
   static ResultsFile create(const std::filesystem::path& path, std::string_view scene_text,
-                            bool overwrite, const GroupRecord& load_collective = {});
+                            bool overwrite, const GroupRecord& load_collective = {},
+                            const std::map<std::string, std::string>& root_attributes = {});
   /// Opens an existing results file to continue it (resume): a stray FILE.partial of a killed
   /// run is discarded. Throws InputError when the file is missing or is not a results file.
   static ResultsFile open(const std::filesystem::path& path);
@@ -72,6 +82,12 @@ class ResultsFile {
   std::vector<double> read_array(const std::string& full_path) const;
   /// Whether the file holds an object at `full_path`.
   bool has(const std::string& full_path) const;
+  /// The numeric datasets of step `step`, as names below its group ("wheel/y"), sorted.
+  std::vector<std::string> step_array_names(int step) const;
+  /// The root attribute `format_version`; 1 for files written before it was there.
+  int format_version() const;
+  /// A text attribute of the root group; std::nullopt when missing.
+  std::optional<std::string> root_attribute(const std::string& name) const;
   /// Reads a text dataset by its full path; std::nullopt when missing.
   std::optional<std::string> read_text(const std::string& full_path) const;
 
