@@ -1,7 +1,9 @@
 #pragma once
-// Bracketed 1-D root finder for the contact solvers: regula falsi with the Anderson-Bjorck
-// modification, safeguarded by bisection (Anderson & Bjorck 1973, BIT 13:253-264; see also
-// Galdino 2011 for the comparison with Illinois). Header-only so that the callable inlines.
+// The bracketed 1-D root finder of the contact solvers: regula falsi with the Anderson-Bjorck
+// modification, safeguarded by bisection (Anderson & Bjorck 1973, BIT 13:253-264). When the
+// same end of the bracket is kept twice in a row, its stored value is scaled by
+// m = 1 - f(x_new)/f(x_prev), or by 1/2 when m <= 0 (Illinois halves it always; Galdino 2011
+// compares the two). Header-only so that the callable inlines.
 
 #include <cmath>
 
@@ -11,27 +13,40 @@ struct RootResult {
   double x = 0.0;          // best abscissa found
   double fx = 0.0;         // f(x)
   int evaluations = 0;     // calls of f made here (the bracket values are not counted)
-  bool converged = false;  // |f(x)| <= f_tol
+  bool converged = false;  // accept(f(x))
+  // The final bracket, its ends in the order given (lo need not be below hi), with f's true
+  // values there: the regula falsi scales the values it stores, these are never scaled, so
+  // they can be compared (e.g. to pick the side of a jump nearer the root).
+  double lo = 0.0, f_lo = 0.0;
+  double hi = 0.0, f_hi = 0.0;
 };
 
-// Finds x in [lo, hi] with |f(x)| <= f_tol, given f(lo) and f(hi) of opposite signs.
-// Terminates when |f(x)| <= f_tol (converged); when the bracket is narrower than x_tol (f may
-// jump there: not converged, x is the end of the final bracket with the smaller |f|); or after
-// max_evaluations calls (not converged, x is the best point seen).
-template <class F>
-RootResult find_root_bracketed(F&& f, double lo, double f_lo, double hi, double f_hi, double f_tol,
-                               double x_tol, int max_evaluations) {
+// Finds x in [lo, hi] with accept(f(x)), given f(lo) and f(hi) of opposite signs; accept is a
+// predicate on f's value that holds at the root and on an interval around it.
+// Terminates when accept(f(x)) (converged); when the bracket is narrower than x_tol (f may jump
+// there: not converged, x is the end of the final bracket with the smaller |f|); or after
+// max_evaluations calls (not converged, x is the point with the smallest |f| seen).
+template <class F, class Accept>
+RootResult find_root_bracketed_until(F&& f, double lo, double f_lo, double hi, double f_hi,
+                                     Accept&& accept, double x_tol, int max_evaluations) {
   RootResult result;
-  result.x = std::abs(f_lo) <= std::abs(f_hi) ? lo : hi;
-  result.fx = std::abs(f_lo) <= std::abs(f_hi) ? f_lo : f_hi;
-  if (std::abs(result.fx) <= f_tol) {
-    result.converged = true;
-    return result;
-  }
-  // The regula falsi uses scaled end values (Anderson-Bjorck); the true ones pick the answer.
+  // An accepted end, else the one with the smaller |f|.
+  const bool take_lo =
+      accept(f_lo) != accept(f_hi) ? accept(f_lo) : std::abs(f_lo) <= std::abs(f_hi);
+  result.x = take_lo ? lo : hi;
+  result.fx = take_lo ? f_lo : f_hi;
   double true_lo = f_lo;
   double true_hi = f_hi;
-  int side = 0;  // which end was replaced last: -1 lo, +1 hi
+  const auto finish = [&] {
+    result.converged = accept(result.fx);
+    result.lo = lo;
+    result.f_lo = true_lo;
+    result.hi = hi;
+    result.f_hi = true_hi;
+    return result;
+  };
+  if (accept(result.fx)) return finish();
+  int side = 0;  // which end was replaced last: -1 lo, +1 hi, 0 by bisection
   double width_before = std::abs(hi - lo);
   while (result.evaluations < max_evaluations && std::abs(hi - lo) > x_tol) {
     double x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
@@ -46,13 +61,15 @@ RootResult find_root_bracketed(F&& f, double lo, double f_lo, double hi, double 
     }
     const double fx = f(x);
     ++result.evaluations;
-    if (std::abs(fx) < std::abs(result.fx)) {
+    const bool accepted = accept(fx);
+    if (accepted || std::abs(fx) < std::abs(result.fx)) {
       result.x = x;
       result.fx = fx;
     }
-    if (std::abs(fx) <= f_tol) break;
+    if (accepted) break;
     if ((fx < 0.0) == (f_lo < 0.0)) {
-      // x replaces lo. If lo was replaced last time too, scale f_hi down (Anderson-Bjorck).
+      // x replaces lo. If lo was replaced last time too, hi is kept twice: scale f_hi down.
+      // f_lo is then f at the previous iterate, unscaled.
       if (side == -1) {
         const double m = 1.0 - fx / f_lo;
         f_hi *= m > 0.0 ? m : 0.5;
@@ -72,13 +89,21 @@ RootResult find_root_bracketed(F&& f, double lo, double f_lo, double hi, double 
       side = +1;
     }
   }
-  result.converged = std::abs(result.fx) <= f_tol;
-  if (!result.converged && std::abs(hi - lo) <= x_tol) {
+  if (!accept(result.fx) && std::abs(hi - lo) <= x_tol) {
     // Collapsed on a jump: answer next to it rather than wherever |f| happened to be least.
     result.x = std::abs(true_lo) <= std::abs(true_hi) ? lo : hi;
     result.fx = std::abs(true_lo) <= std::abs(true_hi) ? true_lo : true_hi;
   }
-  return result;
+  return finish();
+}
+
+// As find_root_bracketed_until, accepting |f(x)| <= f_tol.
+template <class F>
+RootResult find_root_bracketed(F&& f, double lo, double f_lo, double hi, double f_hi, double f_tol,
+                               double x_tol, int max_evaluations) {
+  return find_root_bracketed_until(
+      f, lo, f_lo, hi, f_hi, [f_tol](double v) { return std::abs(v) <= f_tol; }, x_tol,
+      max_evaluations);
 }
 
 }  // namespace wheelwear::contactgeom::detail

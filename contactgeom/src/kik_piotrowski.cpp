@@ -1,16 +1,14 @@
 #include "wheelwear/contactgeom/kik_piotrowski.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
 
-#include "bracketed_root.hpp"
+#include "kik_piotrowski_eval.hpp"
 #include "strip_kernel.hpp"
-#include "wheelwear/contactgeom/elliptic_integrals.hpp"
 #include "wheelwear/core/input_error.hpp"
 
 // Why the formulas reduce to Hertz for a circle (cross-check (a) in the header):
@@ -26,6 +24,8 @@ namespace wheelwear::contactgeom {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+
+using detail::RunIntegrals;
 
 // One run of consecutive strips with h < delta, and its initial contact point O.
 struct Run {
@@ -87,15 +87,6 @@ void for_each_run(const GapStrips& g, double delta, Visit&& visit) {
   }
 }
 
-// The expensive part of one run's KP solution at one approach: the integrals I1, I2.
-struct RunIntegrals {
-  double i1 = 0.0;      // int int sqrt(x_l^2 - x^2)/r dx ds [m^2]
-  double i2 = 0.0;      // int pi/2 x_l^2 ds [m^3]
-  double max_xl = 0.0;  // largest leading edge at a strip centre [m]
-  std::size_t first_contact = 0;
-  std::size_t last_contact = 0;
-};
-
 // Integrals of one run at the virtual penetration level eps (delta - h_O) above h_O.
 RunIntegrals integrate_run(const GapStrips& g, const Run& run, double level) {
   const double half = 0.5 * g.ds;
@@ -148,16 +139,10 @@ void write_patch(const GapStrips& g, const Run& run, double approach, double lev
   patch.pmax = p_per_xl * std::max(r.max_xl, patch.x_lead_O);
 }
 
-// The integrals of every run at the last approach evaluated, so that writing the result after
-// the load iteration does not repeat its most expensive pass. Fixed size: no allocation.
-struct EvaluationCache {
-  double delta = std::numeric_limits<double>::quiet_NaN();
-  std::size_t count = 0;
-  bool complete = false;  // false when there were more runs than slots
-  std::array<RunIntegrals, 8> runs;
-};
+}  // namespace
 
-// Total KP load [N] at the rigid approach delta; records the run integrals in `cache`.
+namespace detail {
+
 double total_load(const GapStrips& g, double delta, double eps, double E_star,
                   EvaluationCache& cache) {
   double load = 0.0;
@@ -177,8 +162,6 @@ double total_load(const GapStrips& g, double delta, double eps, double E_star,
   return load;
 }
 
-// Writes every patch with load at delta into `result`, reusing its storage, and the run
-// integrals from `cache` when it holds this delta.
 void fill_result(const GapStrips& g, double delta, double eps, double E_star,
                  const EvaluationCache& cache, KpResult& result) {
   const bool cached = cache.complete && cache.delta == delta;
@@ -208,13 +191,8 @@ void fill_result(const GapStrips& g, double delta, double eps, double E_star,
   result.patches.resize(used);
 }
 
-// Smallest finite gap and its strip; index = size() when no gap is finite.
-struct GapMinimum {
-  std::size_t index;
-  double h;
-};
-GapMinimum gap_minimum(const GapStrips& g) {
-  GapMinimum m{g.size(), std::numeric_limits<double>::infinity()};
+LowestStrip lowest_strip(const GapStrips& g) {
+  LowestStrip m{g.size(), std::numeric_limits<double>::infinity()};
   for (std::size_t j = 0; j < g.size(); ++j) {
     if (g.h[j] < m.h) m = {j, g.h[j]};
   }
@@ -235,30 +213,7 @@ void set_no_contact(KpResult& result, double delta, std::string message) {
   result.patches.clear();
 }
 
-// First guess of the approach above the gap minimum: KP's own closed form for the quadratic gap
-// h = A x^2 + B s^2 at the minimum strip. There the virtual patch is the ellipse
-// a' = sqrt(eps delta/A), b' = sqrt(eps delta/B) with the Hertzian pressure shape, so
-// I2 = 2 pi/3 a'^2 b' and I1 = a' pi beta K(e) (beta the minor semi-axis, k'^2 = min/max of
-// A, B; Johnson 1985, Section 3.6), and N = pi E* delta I2/I1 gives
-// delta^(3/2) = 3 N sqrt(min(A, B)) K(e) / (2 pi E* sqrt(eps)). B comes from the second
-// difference of h, at least 1 % of A so that a flat gap still gives a finite guess. Only the
-// number of iterations depends on the guess.
-double initial_approach(const GapStrips& g, const GapMinimum& m, double E_star, double N,
-                        double eps) {
-  const double a = g.ax[m.index];
-  double b = 0.0;
-  if (m.index > 0 && m.index + 1 < g.size() && std::isfinite(g.h[m.index - 1]) &&
-      std::isfinite(g.h[m.index + 1])) {
-    b = (g.h[m.index - 1] - 2.0 * g.h[m.index] + g.h[m.index + 1]) / (2.0 * g.ds * g.ds);
-  }
-  b = std::max(b, 0.01 * a);
-  const double lo = std::min(a, b);
-  const double hi = std::max(a, b);
-  const double K = complete_elliptic_integrals_kc(std::sqrt(lo / hi)).K;
-  return std::pow(3.0 * N * std::sqrt(lo) * K / (2.0 * kPi * E_star * std::sqrt(eps)), 2.0 / 3.0);
-}
-
-}  // namespace
+}  // namespace detail
 
 void GapStrips::validate() const {
   require_finite("ds", ds);
@@ -288,8 +243,8 @@ void KpOptions::validate() const {
   require(epsilon > 0.0 && epsilon <= 1.0, "epsilon", epsilon,
           "the virtual penetration factor must lie in (0, 1]");
   require_finite("load_tolerance", load_tolerance);
-  require(load_tolerance > 0.0 && load_tolerance < 1.0, "load_tolerance", load_tolerance,
-          "must lie in (0, 1)");
+  require(load_tolerance > 0.0 && load_tolerance <= 1e-2, "load_tolerance", load_tolerance,
+          "the relative tolerance on the normal force must lie in (0, 0.01]");
   require(max_evaluations >= 3, "max_evaluations", max_evaluations, "must be at least 3");
 }
 
@@ -304,129 +259,27 @@ double KpStrip::line_load() const {
   return 0.5 * kPi * p_peak * x_lead;
 }
 
-void solve_kp_load(const GapStrips& gap, double E_star, double N, const KpOptions& options,
-                   KpResult& result) {
-  gap.validate();
-  options.validate();
-  check_modulus(E_star);
-  require_finite("N", N);
-  require(N >= 0.0, "N", N, "the normal force must not be negative (N)");
-  result.evaluations = 0;
-  const GapMinimum m = gap_minimum(gap);
-  if (m.index == gap.size()) {
-    set_no_contact(result, 0.0, "no strip has a finite gap: no potential contact");
-    return;
-  }
-  if (N == 0.0) {
-    set_no_contact(result, m.h, "zero normal force");
-    return;
-  }
-  const double eps = options.epsilon;
-  const double tol = options.load_tolerance;
-  int evaluations = 0;
-  // f(d) = (N(h_min + d)/N)^(2/3) - 1 is close to linear in the approach d (N ~ d^(3/2)) and
-  // rises with d except where two contact regions merge.
-  EvaluationCache cache;
-  auto f = [&](double d) {
-    ++evaluations;
-    return std::pow(total_load(gap, m.h + d, eps, E_star, cache) / N, 2.0 / 3.0) - 1.0;
-  };
-
-  // Phase 1: secant steps from the closed-form guess until the root is met or bracketed. A
-  // step that leaves [d/4, 4d] (or a flat secant) falls back to the linear model d/(f + 1);
-  // while N is still zero (f = -1) d quadruples. Phase 1 gives up after a few steps that do not
-  // halve |f| (N(delta) need not be monotone where contact regions merge).
-  double d0 = initial_approach(gap, m, E_star, N, eps);
-  double f0 = f(d0);
-  double d1 = d0;
-  double f1 = f0;
-  if (std::abs(f0) > tol) {
-    d1 = f0 > -1.0 ? d0 / (1.0 + f0) : 4.0 * d0;
-    f1 = f(d1);
-  }
-  int stalls = 0;
-  while (std::abs(f1) > tol && (f1 > 0.0) == (f0 > 0.0) && stalls < 3 &&
-         evaluations < options.max_evaluations) {
-    double next = f1 > -1.0 ? d1 / (1.0 + f1) : 4.0 * d1;
-    if (f1 != f0) {
-      const double secant = d1 - f1 * (d1 - d0) / (f1 - f0);
-      if (secant > 0.25 * d1 && secant < 4.0 * d1) next = secant;
-    }
-    const double previous = std::abs(f1);
-    d0 = d1;
-    f0 = f1;
-    d1 = next;
-    f1 = f(d1);
-    if (std::abs(f1) > 0.5 * previous) ++stalls;
-  }
-  if (std::abs(f1) > tol && (f1 > 0.0) == (f0 > 0.0)) {
-    // Phase 1 stalled: fall back to a guaranteed bracket. N = 0 at d = 0 (f = -1 exactly, no
-    // evaluation needed) if some f > 0 is known; otherwise double d until N exceeds the load.
-    if (f1 > 0.0) {
-      d0 = 0.0;
-      f0 = -1.0;
-    } else {
-      while (f1 <= 0.0 && evaluations < options.max_evaluations) {
-        d0 = d1;
-        f0 = f1;
-        d1 *= 2.0;
-        f1 = f(d1);
-      }
-    }
-  }
-
-  double d = std::abs(f0) <= std::abs(f1) ? d0 : d1;
-  double fd = std::abs(f0) <= std::abs(f1) ? f0 : f1;
-  if (std::abs(fd) > tol && (f1 > 0.0) != (f0 > 0.0)) {
-    // Phase 2 terminates on |f| <= load_tolerance, or on a bracket below 1e-13 of d (N jumps
-    // there, where two contact regions merge), or at max_evaluations.
-    const detail::RootResult root = detail::find_root_bracketed(
-        f, d0, f0, d1, f1, tol, 1e-13 * std::max(d0, d1), options.max_evaluations - evaluations);
-    d = root.x;
-    fd = root.fx;
-  }
-
-  fill_result(gap, m.h + d, eps, E_star, cache, result);
-  result.evaluations = evaluations;
-  if (std::abs(fd) <= options.load_tolerance) {
-    result.status = KpStatus::converged;
-    result.message.clear();
-  } else {
-    result.status = KpStatus::not_converged;
-    result.message =
-        "normal force " + std::to_string(result.normal_force) + " N instead of " +
-        std::to_string(N) + " N after " + std::to_string(evaluations) +
-        " evaluations (N(delta) jumps where contact regions merge, or the evaluation budget ran"
-        " out)";
-  }
-}
-
-KpResult solve_kp_load(const GapStrips& gap, double E_star, double N, const KpOptions& options) {
-  KpResult result;
-  solve_kp_load(gap, E_star, N, options, result);
-  return result;
-}
-
 void solve_kp_approach(const GapStrips& gap, double E_star, double delta, const KpOptions& options,
                        KpResult& result) {
   gap.validate();
   options.validate();
-  check_modulus(E_star);
+  detail::check_modulus(E_star);
   require_finite("delta", delta);
   result.evaluations = 0;
-  const GapMinimum m = gap_minimum(gap);
+  const detail::LowestStrip m = detail::lowest_strip(gap);
   if (m.index == gap.size()) {
-    set_no_contact(result, delta, "no strip has a finite gap: no potential contact");
+    detail::set_no_contact(result, delta, "no strip has a finite gap: no potential contact");
     return;
   }
   if (!(delta > m.h)) {
-    set_no_contact(result, delta, "the approach does not reach the gap minimum");
+    detail::set_no_contact(result, delta, "the approach does not reach the gap minimum");
     return;
   }
-  fill_result(gap, delta, options.epsilon, E_star, EvaluationCache{}, result);
+  detail::fill_result(gap, delta, options.epsilon, E_star, detail::EvaluationCache{}, result);
   result.evaluations = 1;
   if (result.patches.empty()) {
-    set_no_contact(result, delta, "the virtual penetration is too small to reach any strip centre");
+    detail::set_no_contact(result, delta,
+                           "the virtual penetration is too small to reach any strip centre");
     return;
   }
   result.status = KpStatus::converged;

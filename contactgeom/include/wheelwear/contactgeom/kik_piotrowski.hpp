@@ -66,8 +66,9 @@ struct GapStrips {
 struct KpOptions {
   /// Virtual penetration factor eps [-] in (0, 1] (Piotrowski & Kik 2008 recommend 0.55).
   double epsilon = 0.55;
-  /// Prescribed load: terminates when |(N/N_target)^(2/3) - 1| <= load_tolerance, i.e. N within
-  /// about 1.5 load_tolerance relative.
+  /// Prescribed load: the iteration stops when |N/N_target - 1| <= load_tolerance, in (0, 0.01],
+  /// and the status is converged if and only if the result's N meets this. (The wheel/rail
+  /// solves use WheelRailOptions::load_tolerance instead, the same test on Fz.)
   double load_tolerance = 1e-10;
   /// Prescribed load: at most this many evaluations of N(delta) (bracketing included).
   int max_evaluations = 60;
@@ -125,7 +126,8 @@ struct KpResult {
 /// (N(delta)/N)^(2/3) - 1 = 0, which is nearly linear in delta (Hertz: N ~ delta^(3/2)): secant
 /// steps from KP's closed form for the gap's local curvatures until the root is met or
 /// bracketed, then regula falsi with the Anderson-Bjorck modification, safeguarded by
-/// bisection. Typically 3 to 5 evaluations of N(delta), each one pass over the strips.
+/// bisection, until |N(delta)/N - 1| <= options.load_tolerance. Typically 3 to 5 evaluations
+/// of N(delta), each one pass over the strips.
 /// Throws InputError on bad input.
 KpResult solve_kp_load(const GapStrips& gap, double E_star, double N,
                        const KpOptions& options = {});

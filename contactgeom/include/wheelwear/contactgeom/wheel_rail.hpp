@@ -52,7 +52,11 @@ struct WheelRailOptions {
   /// lies within min(0.3 mm, this) of its minimum and again to this margin when the approach
   /// comes within 0.1 mm of that.
   double scan_margin = 2e-3;
-  double load_tolerance = 1e-9;     ///< stop when |Fz/Fz_target - 1| is below this
+  /// Prescribed vertical force: the iteration stops when |Fz/Fz_target - 1| <= load_tolerance,
+  /// in (0, 0.01], and the status is not_converged when the final Fz misses this. The single-
+  /// region fast path hands it to solve_kp_load as its load_tolerance (there N/N_target =
+  /// Fz/Fz_target); kp.load_tolerance is not used by the wheel/rail solves.
+  double load_tolerance = 1e-9;
   double max_contact_angle = 1.35;  ///< steeper contact is reported as flange climb [rad]
   /// Prescribed lateral force (solve_wheel_rail_lateral): stop when |Fy/Fz - target/Fz| is
   /// below this.

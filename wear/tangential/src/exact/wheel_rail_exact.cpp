@@ -149,7 +149,7 @@ WheelRailExactSolution wheel_rail_exact(const contactgeom::WheelRailPair& pair,
   // surfaces are taken as flat in that plane's direction over the patch: the element at
   // (x, s) lies above the track-plane point (x, y_O - s cos(delta)), and its distance along
   // the contact normal is the vertical distance times cos(delta). This is contactgeom's own
-  // reduction (strips_of in wheel_rail.cpp), so the exact solution sees the gap the
+  // reduction (strips_of in wheel_rail_patches.cpp), so the exact solution sees the gap the
   // Kik-Piotrowski patch saw; it holds to second order in the change of the surfaces' slope
   // across the patch and is crude where that change is large (flange contact).
   const double y_O = -patch.y_rail;
