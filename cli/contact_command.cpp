@@ -72,8 +72,8 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
       .add("N", p.normal_force)
       .add("pmax", p.pmax)
       .add("rolling_radius", p.rolling_radius);
-  if (p.hertz_valid) {
-    o.add("hertz_a", p.hertz.a).add("hertz_b", p.hertz.b).add("hertz_p0", p.hertz.p0);
+  if (p.hertz) {
+    o.add("hertz_a", p.hertz->a).add("hertz_b", p.hertz->b).add("hertz_p0", p.hertz->p0);
   }
   if (args.creep) {
     const tangential::TangentialSolution s =

@@ -10,15 +10,15 @@
 #include <string>
 
 #include "commands.hpp"
-#include "wheelwear/core/input_error.hpp"
 #include "json_writer.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
-#include "wheelwear/tangential/tangential.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
 #include "wheelwear/tangential/grid_choice.hpp"
 #include "wheelwear/tangential/linear_theory.hpp"
 #include "wheelwear/tangential/table_correction.hpp"
+#include "wheelwear/tangential/tangential.hpp"
 
 namespace wheelwear::cli {
 
@@ -111,9 +111,9 @@ void add_exact_json(JsonObject& out, const tangential::ExactSolution& s, const C
       .add("status", tangential::status_name(s.status))
       .add("iterations", s.iterations)
       .add("adhesion_elements", s.adhesion_elements)
-      .add("adhesion_fraction",
-           s.contact_elements > 0 ? static_cast<double>(s.adhesion_elements) / s.contact_elements
-                                  : 0.0)
+      .add("adhesion_fraction", s.contact_elements > 0
+                                    ? static_cast<double>(s.adhesion_elements) / s.contact_elements
+                                    : 0.0)
       .add("N_grid", s.normal_force)
       .add("frictional_work", s.frictional_work)
       // The work of the rigid slip: what sum |p| |s| dA tends to as the grid is refined (the

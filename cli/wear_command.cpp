@@ -49,7 +49,7 @@ double wheel_y(const profiles::Profile& wheel, double s) {
 ModelWear wear_of(const WearArgs& args, const contactgeom::WheelRailPatch& p,
                   tangential::ContactModel model, const wear::WearLaw& law) {
   std::optional<contactgeom::Sdec> hertz;
-  if (p.hertz_valid) hertz = contactgeom::Sdec{p.hertz.a, p.hertz.b, 0.0};
+  if (p.hertz) hertz = contactgeom::Sdec{p.hertz->a, p.hertz->b, 0.0};
   const tangential::ModelPatch mp = tangential::model_patch(model, p.sdec, hertz);
   tangential::FastsimOptions options;
   options.nx = options.ny = args.cells;
@@ -159,7 +159,7 @@ void run_wear(const WearArgs& args) {
     std::vector<ModelWear> models;
     if (args.compare) {
       for (tangential::ContactModel m : tangential::kContactModels) {
-        if (m == tangential::ContactModel::hertz && !p.hertz_valid) continue;
+        if (m == tangential::ContactModel::hertz && !p.hertz) continue;
         models.push_back(wear_of(args, p, m, *law));
       }
     } else {

@@ -13,7 +13,7 @@ import random
 
 SEED = 20221
 WHEEL_LOAD_N = 55e3  # static wheel load: 11.2 t axle load
-HALF_GAUGE_M = 0.75  # lateral arm of the contacts
+LATERAL_ARM_M = 0.75  # e0: half the lateral distance of the nominal contact points
 CG_HEIGHT_M = 1.6  # car body centre of gravity above the rail
 G = 9.81
 SEMI_WHEELBASE_M = 1.25  # bogie wheelbase 2.5 m
@@ -41,7 +41,7 @@ def tangent_state(rng):
     """Kinematic oscillation (Klingel) of a bogie wheelset, constrained in yaw."""
     amplitude = rng.uniform(0.0, 3.5e-3)
     phase = rng.uniform(0.0, 2.0 * math.pi)
-    wavelength = 2.0 * math.pi * math.sqrt(R0_M * HALF_GAUGE_M / CONICITY) * 2.0
+    wavelength = 2.0 * math.pi * math.sqrt(R0_M * LATERAL_ARM_M / CONICITY) * 2.0
     k = 2.0 * math.pi / wavelength
     speed = 44.0
     dy = amplitude * math.sin(phase)
@@ -56,10 +56,10 @@ def curve_state(rng, radius, speed, cant):
     """Leading wheelset of a bogie in steady curving, with scatter from track irregularities."""
     # Cant deficiency loads the outer (left in a right-hand curve) wheel.
     lateral_acc = speed**2 / radius - G * cant / 1.5
-    dq = WHEEL_LOAD_N * CG_HEIGHT_M * lateral_acc / (G * HALF_GAUGE_M) * 0.5
+    dq = WHEEL_LOAD_N * CG_HEIGHT_M * lateral_acc / (G * LATERAL_ARM_M) * 0.5
     dq += rng.gauss(0.0, 0.04) * WHEEL_LOAD_N
     # Pure-rolling shift, increased for an under-radial leading axle, limited by the flange.
-    pure_rolling = HALF_GAUGE_M * R0_M / (CONICITY * radius)
+    pure_rolling = LATERAL_ARM_M * R0_M / (CONICITY * radius)
     dy = min(1.6 * pure_rolling + rng.gauss(0.0, 0.8e-3), FLANGE_CLEARANCE_M + 1.5e-3)
     yaw = SEMI_WHEELBASE_M / radius * rng.uniform(0.6, 1.0)  # angle of attack towards the flange
     lateral_force = None

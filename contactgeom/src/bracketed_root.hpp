@@ -47,15 +47,21 @@ RootResult find_root_bracketed_until(F&& f, double lo, double f_lo, double hi, d
   };
   if (accept(result.fx)) return finish();
   int side = 0;  // which end was replaced last: -1 lo, +1 hi, 0 by bisection
-  double width_before = std::abs(hi - lo);
+  // Progress since the last reference: the bracket's width and the least |f| then, and the
+  // secant steps taken since. Two secant steps that neither halve the bracket nor cut the least
+  // |f| to a quarter are followed by a bisection: a superlinear sequence never stalls that way,
+  // while at a jump of f (where |f| cannot fall and regula falsi creeps towards one end) every
+  // third step halves the bracket, closing it to x_tol in about 3 log2(width / x_tol) steps.
+  double width_ref = std::abs(hi - lo);
+  double f_ref = std::abs(result.fx);
+  int secant_steps = 0;
   while (result.evaluations < max_evaluations && std::abs(hi - lo) > x_tol) {
     double x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-    // Safeguard: bisect when the secant point falls outside the open bracket or the bracket
-    // has not halved in the last three steps (regula falsi stagnation).
+    // Safeguard: bisect when the secant point falls outside the open bracket or two secant
+    // steps have not halved the bracket (regula falsi stagnation).
     const bool outside = !(x > std::fmin(lo, hi) && x < std::fmax(lo, hi));
-    const bool stagnant = result.evaluations % 3 == 2 && std::abs(hi - lo) > 0.5 * width_before;
-    if (result.evaluations % 3 == 2) width_before = std::abs(hi - lo);
-    if (outside || stagnant) {
+    const bool bisect = outside || secant_steps >= 2;
+    if (bisect) {
       x = 0.5 * (lo + hi);
       side = 0;
     }
@@ -87,6 +93,13 @@ RootResult find_root_bracketed_until(F&& f, double lo, double f_lo, double hi, d
       f_hi = fx;
       true_hi = fx;
       side = +1;
+    }
+    if (bisect || std::abs(hi - lo) <= 0.5 * width_ref || std::abs(result.fx) <= 0.25 * f_ref) {
+      width_ref = std::abs(hi - lo);
+      f_ref = std::abs(result.fx);
+      secant_steps = 0;
+    } else {
+      ++secant_steps;
     }
   }
   if (!accept(result.fx) && std::abs(hi - lo) <= x_tol) {

@@ -67,7 +67,6 @@ WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch
   const double longitudinal = c / (2.0 * p.rolling_radius);
   if (lateral_curvature > 0.0) {
     p.hertz = hertz_from_load(longitudinal, lateral_curvature, E_star, patch.normal_force);
-    p.hertz_valid = true;
   }
   return p;
 }

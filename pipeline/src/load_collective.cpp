@@ -47,9 +47,9 @@ const std::vector<Column>& columns() {
        [](auto& s, double v) { s.load_right = v; }, 1.0, kMaxLoad},
       {"axle_load_N", "vertical axle force, split evenly [N]",
        [](auto& s, double v) { s.load_left = s.load_right = 0.5 * v; }, 2.0, 2 * kMaxLoad},
-      {"lateral_force_left_N", "lateral force of the left wheel on its rail [N]",
+      {"lateral_force_left_N", "lateral force of the left rail on its wheel, + towards the track centre [N]",
        [](auto& s, double v) { s.lateral_force_left = v; }, -kMaxLoad, kMaxLoad},
-      {"lateral_force_right_N", "lateral force of the right wheel on its rail [N]",
+      {"lateral_force_right_N", "lateral force of the right rail on its wheel, + towards the track centre [N]",
        [](auto& s, double v) { s.lateral_force_right = v; }, -kMaxLoad, kMaxLoad},
       {"speed_m_s", "forward speed [m/s]", [](auto& s, double v) { s.speed = v; }, 1e-3, kMaxSpeed},
       {"curve_radius_m", "curve radius, 0 on tangent track, + right-hand [m]",
@@ -155,8 +155,8 @@ std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
     std::size_t start = 0;
     while (true) {
       const std::size_t comma = row.find(',', start);
-      cells.emplace_back(core::trim(
-          row.substr(start, comma == std::string_view::npos ? comma : comma - start)));
+      cells.emplace_back(
+          core::trim(row.substr(start, comma == std::string_view::npos ? comma : comma - start)));
       if (comma == std::string_view::npos) break;
       start = comma + 1;
     }

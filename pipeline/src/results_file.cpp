@@ -312,8 +312,8 @@ std::optional<std::string> ResultsFile::root_attribute(const std::string& name) 
     attribute.read(attribute.getStrType(), value);
     return value;
   } catch (const H5::Exception& error) {
-    throw InputError("results file " + path_.string() + ": cannot read attribute " + name +
-                     " (" + error.getDetailMsg() + ")");
+    throw InputError("results file " + path_.string() + ": cannot read attribute " + name + " (" +
+                     error.getDetailMsg() + ")");
   }
 }
 

@@ -9,8 +9,10 @@
 #include <sstream>
 
 #include "load_collective.hpp"
+#include "scene_keys.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
+#include "wheelwear/tangential/tangential.hpp"
 #include "wheelwear/wear/wear_law.hpp"
 
 namespace wheelwear::pipeline {
@@ -19,86 +21,39 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string where(const toml::source_region& source, std::string_view key) {
-  std::ostringstream out;
-  out << "scene line " << source.begin.line << ": " << key;
-  return out.str();
-}
+using detail::boolean;
+using detail::format;
+using detail::integer;
+using detail::KeyHandler;
+using detail::number;
+using detail::read_table;
+using detail::text;
+using detail::where;
 
-std::string format(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
-
-// One key's reader: it receives the node and the key's full name for messages.
-using KeyHandler = std::function<void(const toml::node&, const std::string&)>;
-
-double number(const toml::node& node, const std::string& key, double lo, double hi,
-              std::string_view meaning) {
-  const auto value = node.value<double>();  // integers convert too
-  if (!value || node.is_boolean()) {
-    throw InputError(where(node.source(), key) + ": expected a number (" + std::string(meaning) +
-                     ")");
-  }
-  if (!std::isfinite(*value) || *value < lo || *value > hi) {
-    throw InputError(where(node.source(), key) + " = " + format(*value) + ": " +
-                     std::string(meaning) + " must lie in [" + format(lo) + ", " + format(hi) +
-                     "]");
-  }
-  return *value;
-}
-
-int integer(const toml::node& node, const std::string& key, int lo, int hi,
-            std::string_view meaning) {
-  const auto value = node.value_exact<int64_t>();
-  if (!value || *value < lo || *value > hi) {
-    throw InputError(where(node.source(), key) + ": expected a whole number in [" +
-                     std::to_string(lo) + ", " + std::to_string(hi) + "] (" + std::string(meaning) +
-                     ")");
-  }
-  return static_cast<int>(*value);
-}
-
-std::string text(const toml::node& node, const std::string& key) {
-  const auto value = node.value_exact<std::string>();
-  if (!value) throw InputError(where(node.source(), key) + ": expected a quoted string");
-  return *value;
-}
-
-bool boolean(const toml::node& node, const std::string& key) {
-  const auto value = node.value_exact<bool>();
-  if (!value) throw InputError(where(node.source(), key) + ": expected true or false");
-  return *value;
-}
-
-// A hint for a key that is unknown only by its unit suffix (radius_mm for radius_m).
-std::string unit_hint(std::string_view key, const std::map<std::string, KeyHandler>& known) {
-  const std::size_t cut = key.rfind('_');
-  if (cut == std::string_view::npos) return {};
-  const std::string_view stem = key.substr(0, cut);
-  for (const auto& [name, handler] : known) {
-    if (name.size() > stem.size() && name.compare(0, stem.size(), stem) == 0 &&
-        name[stem.size()] == '_') {
-      return "; did you mean '" + name + "'? Keys carry SI units (m, N, Pa, m/s as _m_s)";
-    }
-  }
-  return {};
-}
-
-void read_table(const toml::table& table, const std::string& section,
-                const std::map<std::string, KeyHandler>& handlers) {
-  for (auto&& [key, node] : table) {
-    const std::string name(key.str());
-    const auto handler = handlers.find(name);
-    if (handler == handlers.end()) {
-      std::string allowed;
-      for (const auto& [known, unused] : handlers) allowed += (allowed.empty() ? "" : ", ") + known;
-      throw InputError(where(key.source(), section.empty() ? name : section + "." + name) +
-                       ": unknown key" + unit_hint(name, handlers) + " (allowed here: " + allowed +
-                       ")");
-    }
-    handler->second(node, section.empty() ? name : section + "." + name);
+// contact.tangential_method: fastsim, best or exact, or a FASTSIM method of the command line's
+// names that also names the contact model (fastsim-sdec is fastsim with model sdec).
+std::optional<std::pair<TangentialMethod, std::optional<tangential::ContactModel>>>
+scene_tangential_method(const std::string& name) {
+  using M = TangentialMethod;
+  using C = tangential::ContactModel;
+  if (name == "fastsim") return std::pair{M::fastsim, std::optional<C>{}};
+  const auto method = tangential::parse_method(name);
+  if (!method) return std::nullopt;
+  switch (*method) {
+    case tangential::Method::best:
+      return std::pair{M::best, std::optional<C>{}};
+    case tangential::Method::exact:
+      return std::pair{M::exact, std::optional<C>{}};
+    case tangential::Method::fastsim_sdec:
+      return std::pair{M::fastsim, std::optional<C>{C::sdec}};
+    case tangential::Method::fastsim_eql:
+      return std::pair{M::fastsim, std::optional<C>{C::eql}};
+    case tangential::Method::fastsim_eqe:
+      return std::pair{M::fastsim, std::optional<C>{C::eqe}};
+    case tangential::Method::fastsim_eqe_shifted:
+      return std::pair{M::fastsim, std::optional<C>{C::eqe_shifted}};
+    default:  // no per-cell fields (linear, table) or no scene model (fastsim-elliptic)
+      return std::nullopt;
   }
 }
 
@@ -171,6 +126,8 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   bool inclination_given = false;
   std::optional<int> collective_line;
   int tangential_line = 0;
+  bool model_given = false;
+  std::optional<tangential::ContactModel> method_model;  // named by tangential_method
   std::string law_table;
 
   auto section = [&](const std::string& name, std::map<std::string, KeyHandler> handlers) {
@@ -239,6 +196,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                                   "hertz");
                }
                s.model = *model;
+               model_given = true;
              }},
             {"friction",
              [&](const auto& n, const auto& k) {
@@ -267,16 +225,15 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
             {"tangential_method",
              [&](const auto& n, const auto& k) {
                const std::string name = text(n, k);
-               if (name == "fastsim") {
-                 s.tangential = TangentialMethod::fastsim;
-               } else if (name == "best") {
-                 s.tangential = TangentialMethod::best;
-               } else if (name == "exact") {
-                 s.tangential = TangentialMethod::exact;
-               } else {
+               const auto method = scene_tangential_method(name);
+               if (!method) {
                  throw InputError(where(n.source(), k) + " = \"" + name +
-                                  "\": unknown tangential method; use fastsim, best or exact");
+                                  "\": unknown tangential method; use fastsim (with the contact "
+                                  "model), best or exact, or one of fastsim-sdec, fastsim-eql, "
+                                  "fastsim-eqe, fastsim-eqe-shifted (which name the model too)");
                }
+               s.tangential = method->first;
+               method_model = method->second;
                tangential_line = static_cast<int>(n.source().begin.line);
              }},
             {"strip_width_m",
@@ -370,6 +327,16 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   read_table(root, "", top);
 
   if (!inclination_given) s.rail_inclination.reset();
+  if (method_model) {
+    if (model_given && s.model != *method_model) {
+      throw InputError("scene line " + std::to_string(tangential_line) +
+                       ": contact.tangential_method names the contact model " +
+                       std::string(tangential::model_name(*method_model)) +
+                       " but contact.model = \"" + std::string(tangential::model_name(s.model)) +
+                       "\"; give one of them");
+    }
+    s.model = *method_model;
+  }
   if (s.tangential != TangentialMethod::fastsim && s.model != tangential::ContactModel::sdec) {
     const char* name = s.tangential == TangentialMethod::best ? "best" : "exact";
     throw InputError("scene line " + std::to_string(tangential_line) +

@@ -8,11 +8,12 @@
 #include <cmath>
 #include <ctime>
 
+#include "step_record.hpp"
+#include "wheelwear/contactgeom/equivalent_conicity.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
-#include "wheelwear/contactgeom/equivalent_conicity.hpp"
-#include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/profiles/wear_update.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
 
@@ -21,6 +22,9 @@ namespace wheelwear::pipeline {
 namespace fs = std::filesystem;
 
 namespace {
+
+using detail::scalar;
+using detail::vector;
 
 constexpr double kConicityAmplitude = 3e-3;  // EN 15302's reference amplitude [m]
 constexpr double kDeltaRRange = 6e-3;        // Delta r is sampled over +-6 mm ...
@@ -48,7 +52,8 @@ struct LoopStart {
 };
 
 std::vector<WornProfile> new_profiles(const Scene& scene) {
-  const profiles::Profile initial = profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius);
+  const profiles::Profile initial =
+      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius);
   WornProfile w{"wheel", initial.info(), initial.curve_options(), initial.knot_points()};
   // The profile is re-interpolated through its knots: smoothing was applied once, on reading.
   w.curve.smoothing_length = 0.0;
@@ -57,16 +62,6 @@ std::vector<WornProfile> new_profiles(const Scene& scene) {
   left.name = "wheel_left";
   right.name = "wheel_right";
   return {left, right};
-}
-
-ArrayRecord scalar(std::string name, double value, std::string units, std::string description) {
-  return {std::move(name), {value}, {}, std::move(units), std::move(description)};
-}
-
-ArrayRecord vector(std::string name, std::vector<double> values, std::string units,
-                   std::string description) {
-  const std::size_t n = values.size();
-  return {std::move(name), std::move(values), {n}, std::move(units), std::move(description)};
 }
 
 // The rate smoothed along the arc length by a Gaussian of standard deviation `length`: each
@@ -109,135 +104,6 @@ profiles::WearDepth depth_on_y(const profiles::Profile& profile, const wear::Wea
     depth.depth.push_back(rate.depth[k] * distance);
   }
   return depth;
-}
-
-void add_summaries(GroupRecord& g, const StateSummaries& s) {
-  const std::vector<std::size_t> per_wheel = {s.states, 2};
-  const std::vector<std::size_t> per_patch = {s.states, 2, static_cast<std::size_t>(kPatchSlots)};
-  auto add = [&](const char* name, const std::vector<double>& v, const char* units,
-                 const char* what, bool patch) {
-    g.arrays.push_back(
-        {std::string("states/") + name, v, patch ? per_patch : per_wheel, units, what});
-  };
-  add("status", s.status, "1",
-      "[state, wheel (left, right)] contact status: 0 ok, 1 no contact, 2 flange climb, 3 not "
-      "converged, 4 load jump, 5 profile end",
-      false);
-  add("patches", s.patches, "1", "[state, wheel] number of contact patches", false);
-  add("dy", s.dy, "m", "[state, wheel] lateral shift of the wheel, + towards its flange", false);
-  g.arrays.push_back({"states/roll",
-                      s.roll,
-                      {s.states},
-                      "rad",
-                      "[state] wheelset roll, + when the left wheel goes down"});
-  add("vertical_force", s.vertical_force, "N", "[state, wheel] vertical force of the contact",
-      false);
-  add("lateral_force", s.lateral_force, "N",
-      "[state, wheel] lateral force of the contact, + pushing the wheel to the track centre",
-      false);
-  add("lateral_fit", s.lateral_fit, "1",
-      "[state, wheel] prescribed lateral force: 0 not given, 1 matched, 2 position kept, 3 "
-      "flange just unloaded, 4 not matched",
-      false);
-  add("normal_force", s.normal_force, "N", "[state, wheel, patch] normal force", true);
-  add("a", s.a, "m", "[state, wheel, patch] SDEC semi-axis along x (Eq. 13)", true);
-  add("b", s.b, "m", "[state, wheel, patch] SDEC semi-axis along y (Eq. 13)", true);
-  add("psi", s.psi, "1", "[state, wheel, patch] SDEC asymmetry psi (Eq. 14)", true);
-  add("y_wheel", s.y_wheel, "m", "[state, wheel, patch] O on the wheel, + towards the flange",
-      true);
-  add("contact_angle", s.contact_angle, "rad", "[state, wheel, patch] contact angle", true);
-  add("vx", s.vx, "1", "[state, wheel, patch] longitudinal creepage at O", true);
-  add("vy", s.vy, "1", "[state, wheel, patch] lateral creepage at O, + to the gauge side", true);
-  add("phi", s.phi, "1/m", "[state, wheel, patch] spin creepage at O", true);
-  add("Fx", s.Fx, "N", "[state, wheel, patch] longitudinal creep force on the wheel", true);
-  add("Fy", s.Fy, "N", "[state, wheel, patch] lateral creep force on the wheel", true);
-  add("frictional_work", s.frictional_work, "J/m",
-      "[state, wheel, patch] frictional work per metre rolled", true);
-  add("worn_area", s.worn_area, "m^2/m",
-      "[state, wheel, patch] worn cross-section per metre running of this contact", true);
-  add("from_table", s.from_table, "1",
-      "[state, wheel, patch] 1: Fx, Fy and the frictional work from the book of tables of "
-      "Kalker's exact theory (tangential_method = best), 0: not from the table",
-      true);
-}
-
-void add_maps(GroupRecord& g, const TgammaMaps& m, std::size_t states) {
-  const std::vector<std::size_t> shape = {states, 2, static_cast<std::size_t>(kPatchSlots),
-                                          static_cast<std::size_t>(m.ny),
-                                          static_cast<std::size_t>(m.nx)};
-  g.arrays.push_back({"tgamma/work", m.work, shape, "J/m^2/m",
-                      "[state, wheel, patch, strip, cell] frictional work density T gamma per "
-                      "metre rolled"});
-  g.arrays.push_back({"tgamma/x", m.x, shape, "m", "cell centre along x (rolling) relative to O"});
-  g.arrays.push_back(
-      {"tgamma/y", m.y, shape, "m", "cell centre along y relative to O, + towards the flange"});
-}
-
-// The states as the run resolved them (from the scene, a CSV or an HDF5 file).
-GroupRecord collective_record(const Scene& scene) {
-  const std::size_t n = scene.states.size();
-  std::vector<double> dy(n), yaw(n), ql(n), qr(n), yl(n), yr(n), v(n), radius(n), vlat(n), w(n),
-      line(n);
-  std::string labels;
-  for (std::size_t i = 0; i < n; ++i) {
-    const WheelsetStateSpec& s = scene.states[i];
-    dy[i] = s.dy;
-    yaw[i] = s.yaw;
-    ql[i] = s.load_left;
-    qr[i] = s.load_right;
-    yl[i] = s.lateral_force_left.value_or(kNaN);
-    yr[i] = s.lateral_force_right.value_or(kNaN);
-    v[i] = s.speed;
-    radius[i] = s.curve_radius;
-    vlat[i] = s.lateral_velocity;
-    w[i] = s.weight;
-    line[i] = s.line;
-    labels += s.label + '\n';
-  }
-  GroupRecord g;
-  g.arrays.push_back(vector("dy_m", dy, "m", "wheelset lateral shift, + to the left"));
-  g.arrays.push_back(vector("yaw_rad", yaw, "rad", "yaw angle"));
-  g.arrays.push_back(vector("load_left_N", ql, "N", "vertical force on the left wheel"));
-  g.arrays.push_back(vector("load_right_N", qr, "N", "vertical force on the right wheel"));
-  g.arrays.push_back(vector("lateral_force_left_N", yl, "N",
-                            "prescribed lateral force of the left wheel (NaN: not given)"));
-  g.arrays.push_back(vector("lateral_force_right_N", yr, "N",
-                            "prescribed lateral force of the right wheel (NaN: not given)"));
-  g.arrays.push_back(vector("speed_m_s", v, "m/s", "forward speed"));
-  g.arrays.push_back(vector("curve_radius_m", radius, "m", "0 tangent, + right-hand curve"));
-  g.arrays.push_back(vector("lateral_velocity_m_s", vlat, "m/s", "dy/dt, + to the left"));
-  g.arrays.push_back(vector("weight", w, "1", "share of the running distance (unnormalised)"));
-  g.arrays.push_back(vector("line", line, "1", "line of the state in its scene or file"));
-  g.texts.push_back({"label", labels, "the states' labels, one per line"});
-  return g;
-}
-
-std::string now_iso8601() {
-  const std::time_t t = std::time(nullptr);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
-  return text;
-}
-
-GroupRecord run_info(const fs::path& scene_directory, bool builtin, double elapsed,
-                     std::size_t evaluations, int resumed_from) {
-  char host[256] = "unknown";
-  ::gethostname(host, sizeof host - 1);
-  GroupRecord info;
-  info.texts.push_back({"scene_directory", scene_directory.string(),
-                        "directory the scene's relative file names are resolved in"});
-  info.texts.push_back({"host", host, "machine the run (or its last part) ran on"});
-  info.texts.push_back({"written", now_iso8601(), "time of writing (UTC)"});
-  info.arrays.push_back(scalar("builtin_scene", builtin ? 1.0 : 0.0, "1",
-                               "1 when the run uses the built-in default scene"));
-  info.arrays.push_back(scalar("threads", tbb::this_task_arena::max_concurrency(), "1",
-                               "worker threads available to this process"));
-  info.arrays.push_back(scalar("elapsed", elapsed, "s", "wall time of this process"));
-  info.arrays.push_back(scalar("evaluations", static_cast<double>(evaluations), "1",
-                               "wheelset states evaluated by this process"));
-  info.arrays.push_back(scalar("resumed_from_step", resumed_from, "1",
-                               "step this process resumed after; -1 for a run from the start"));
-  return info;
 }
 
 RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, ResultsFile& file,
@@ -289,6 +155,9 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
                               "1",
                               "exact solves (tangential_method = exact) stopped at their "
                               "iteration cap; their last iterate is used"));
+    g.arrays.push_back(scalar("hertz_dropped", static_cast<double>(cw.hertz_dropped), "1",
+                              "patches not solved nor worn: the contact model is hertz and they "
+                              "have no Hertz ellipse (lateral relative curvature not positive)"));
     std::vector<profiles::WearDepth> increments;
     for (std::size_t p = 0; p < worn.size(); ++p) {
       const std::string& n = worn[p].name;
@@ -335,12 +204,13 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     const contactgeom::WheelRailPair right = evaluator.pair(wheels.back());
     const contactgeom::RollingRadiusDifference dr =
         contactgeom::rolling_radius_difference(left, right, kDeltaRRange, kDeltaRSamples);
-    g.arrays.push_back(scalar("equivalent_conicity", contactgeom::equivalent_conicity(dr, kConicityAmplitude),
-                              "1", "tan(gamma_e) at 3 mm amplitude (EN 15302, Annex C)"));
+    g.arrays.push_back(scalar("equivalent_conicity",
+                              contactgeom::equivalent_conicity(dr, kConicityAmplitude), "1",
+                              "tan(gamma_e) at 3 mm amplitude (EN 15302, Annex C)"));
     g.arrays.push_back(vector("delta_r/dy", dr.dy, "m", "wheelset shift, + to the left"));
     g.arrays.push_back(vector("delta_r/value", dr.delta_r, "m", "r_left - r_right"));
-    if (scene.state_summaries) add_summaries(g, cw.summaries);
-    if (cw.maps) add_maps(g, *cw.maps, scene.states.size());
+    if (scene.state_summaries) detail::add_state_summaries(g, cw.states);
+    if (scene.tgamma_maps) detail::add_tgamma_maps(g, cw.states, scene.grid_nx, scene.grid_ny);
     file.append_step(g);
 
     summary.steps = step;
@@ -367,8 +237,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     ++step;
   }
   summary.elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
-  file.write_run_info(run_info(scene_directory, builtin, summary.elapsed, summary.evaluations,
-                               start.step == 0 ? -1 : start.step - 1));
+  file.write_run_info(detail::run_info(scene_directory, builtin, summary.elapsed,
+                                       summary.evaluations, start.step == 0 ? -1 : start.step - 1));
   return summary;
 }
 
@@ -382,8 +252,8 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
   LoopStart start{0, 0.0, new_profiles(scene)};
   for (const WornProfile& w : start.worn) evaluator.pair(w.build());
   ResultsFile file =
-      ResultsFile::create(output, scene_text, options.overwrite, collective_record(scene));
-  file.write_run_info(run_info(scene_directory, builtin_scene, 0.0, 0, -1));
+      ResultsFile::create(output, scene_text, options.overwrite, detail::collective_record(scene));
+  file.write_run_info(detail::run_info(scene_directory, builtin_scene, 0.0, 0, -1));
   return loop(scene, evaluator, file, std::move(start), scene_directory, builtin_scene, options);
 }
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "support/csv_table.hpp"
+#include "support/contact_cases.hpp"
 #include "support/reference_profiles.hpp"
 #include "support/run_command.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
@@ -55,15 +55,15 @@ TEST(CreepExact, PrintsTheLibrarysExactSolution) {
 // phi = 1): within 1 % of mu N (the library's 40 x 40 error on these cases, measured 0.6 %,
 // exact_contact_reference_test.cpp).
 TEST(CreepExact, DefaultGridAgreesWithContact) {
-  const testing::CsvTable table(testing::test_data("contact/b_pure_spin_mx80.csv"));
+  constexpr double kCoarseGrid = 0.01;  // [mu N], see above
   const auto r = run_wheelwear(kSpin);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   int checked = 0;
-  for (const auto& row : table.rows()) {
-    if (row.text("set") != "b1" || row.number("phi_per_m") != 1.0) continue;
+  for (const testing::contact::PureSpinCase& c : testing::contact::pure_spin_cases()) {
+    if (c.set != "b1" || c.creepages.phi != 1.0) continue;
     ++checked;
-    EXPECT_NEAR(*json_number(r.out, "Fx_muN"), row.number("Fx_over_muN"), 0.01);
-    EXPECT_NEAR(*json_number(r.out, "Fy_muN"), row.number("Fy_over_muN"), 0.01);
+    EXPECT_NEAR(*json_number(r.out, "Fx_muN"), c.Fx_muN, kCoarseGrid);
+    EXPECT_NEAR(*json_number(r.out, "Fy_muN"), c.Fy_muN, kCoarseGrid);
   }
   EXPECT_EQ(checked, 1);
   EXPECT_EQ(json_number(r.out, "exact_grid"), 40);

@@ -9,9 +9,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <tuple>
+#include <vector>
 
 #include "support/run_command.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/pipeline/state_kernel.hpp"
 
 namespace wheelwear::pipeline {
 namespace {
@@ -168,6 +171,32 @@ TEST_F(SceneTest, TangentialMethodIsFastsimUnlessAnotherIsAsked) {
   }
 }
 
+// The command line's method names name the contact model with the method; each maps onto the
+// same tangential method the kernel calls (scene_method).
+TEST_F(SceneTest, TangentialMethodTakesTheCommandLineNames) {
+  const std::vector<std::tuple<const char*, tangential::ContactModel, tangential::Method>> cases = {
+      {"fastsim-sdec", tangential::ContactModel::sdec, tangential::Method::fastsim_sdec},
+      {"fastsim-eql", tangential::ContactModel::eql, tangential::Method::fastsim_eql},
+      {"fastsim-eqe", tangential::ContactModel::eqe, tangential::Method::fastsim_eqe},
+      {"fastsim-eqe-shifted", tangential::ContactModel::eqe_shifted,
+       tangential::Method::fastsim_eqe_shifted}};
+  int compared = 0;
+  for (const auto& [name, model, method] : cases) {
+    const Scene s = parse_scene(
+        "[contact]\ntangential_method = \"" + std::string(name) + "\"\n" + kState, dir_);
+    EXPECT_EQ(s.tangential, TangentialMethod::fastsim) << name;
+    EXPECT_EQ(s.model, model) << name;
+    EXPECT_EQ(scene_method(s.model, s.tangential), method) << name;
+    EXPECT_EQ(tangential::method_name(method), name);
+    ++compared;
+  }
+  EXPECT_EQ(compared, 4);
+  EXPECT_EQ(scene_method(tangential::ContactModel::hertz, TangentialMethod::fastsim),
+            tangential::Method::fastsim_elliptic);
+  EXPECT_EQ(scene_method(tangential::ContactModel::sdec, TangentialMethod::best),
+            tangential::Method::best);
+}
+
 class BadSceneTest : public SceneTest, public ::testing::WithParamInterface<BadScene> {};
 
 TEST_P(BadSceneTest, IsRejectedNamingTheKeyAndLine) {
@@ -201,6 +230,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"UnknownTangentialMethod",
                  "[contact]\ntangential_method = \"kalker\"\n" + std::string(kState),
                  "contact.tangential_method = \"kalker\": unknown tangential method"},
+        BadScene{"MethodDisagreesWithModel",
+                 "[contact]\nmodel = \"eqe\"\ntangential_method = \"fastsim-sdec\"\n" +
+                     std::string(kState),
+                 "names the contact model sdec but contact.model = \"eqe\""},
+        BadScene{"MethodWithoutCells",
+                 "[contact]\ntangential_method = \"linear-sdec\"\n" + std::string(kState),
+                 "contact.tangential_method = \"linear-sdec\": unknown tangential method"},
         BadScene{"ExactGridTooFine",
                  "[contact]\ngrid_nx = 500\ntangential_method = \"exact\"\n" + std::string(kState),
                  "500 x 30 is beyond 400 x 400"},

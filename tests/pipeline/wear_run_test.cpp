@@ -1,6 +1,6 @@
 // The wear-evolution run end to end: determinism across threads, kill and resume, the worn
-// area against the accumulated wear, monotone growth, stability under large steps, and golden
-// results of a small scene.
+// area against the accumulated wear, monotone growth, stability under large steps (golden
+// results and the default scene: wear_run_golden_test.cpp).
 
 #include "wheelwear/pipeline/wear_run.hpp"
 
@@ -20,6 +20,7 @@
 
 #include "support/csv_table.hpp"
 #include "support/run_command.hpp"
+#include "wear_run_support.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/profiles/profile.hpp"
@@ -33,46 +34,6 @@ namespace wheelwear::pipeline {
 namespace {
 
 namespace fs = std::filesystem;
-
-// A small scene: tangent and curve states on both hands, flange contact with a lateral force.
-std::string small_scene(double distance, double step, double max_depth, int grid = 12) {
-  return "[contact]\ngrid_nx = " + std::to_string(grid) + "\ngrid_ny = " + std::to_string(grid) +
-         "\nstrip_width_m = 0.2e-3\n"
-         "[run]\ndistance_m = " +
-         std::to_string(distance) + "\nstep_distance_m = " + std::to_string(step) +
-         "\nmax_depth_step_m = " + std::to_string(max_depth) +
-         "\n"
-         "[[load_collective.state]]\nlabel = \"tangent\"\ndy_m = 0.001\nyaw_rad = 2e-4\n"
-         "axle_load_N = 110e3\nspeed_m_s = 40\nlateral_velocity_m_s = 0.01\nweight = 3\n"
-         "[[load_collective.state]]\nlabel = \"tangent\"\ndy_m = -0.002\nyaw_rad = -3e-4\n"
-         "axle_load_N = 110e3\nspeed_m_s = 40\nweight = 3\n"
-         "[[load_collective.state]]\nlabel = \"R1000\"\ndy_m = 0.004\nyaw_rad = 1e-3\n"
-         "load_left_N = 60e3\nload_right_N = 50e3\nspeed_m_s = 30\ncurve_radius_m = 1000\n"
-         "weight = 1\n"
-         "[[load_collective.state]]\nlabel = \"R500\"\ndy_m = -0.0065\nyaw_rad = -2e-3\n"
-         "load_left_N = 50e3\nload_right_N = 60e3\nlateral_force_right_N = 25e3\n"
-         "speed_m_s = 22\ncurve_radius_m = -500\nweight = 1\n";
-}
-
-class WearRunTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("wheelwear_run_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name) << text;
-    return dir_ / name;
-  }
-  RunSummary run(const std::string& scene_text, const fs::path& out) const {
-    return run_scene(parse_scene(scene_text, dir_), scene_text, dir_, false, out, {});
-  }
-  fs::path dir_;
-};
 
 // Every array of every step that a run records, for exact comparisons.
 std::vector<std::string> step_arrays(const ResultsFile& file) {
@@ -187,32 +148,6 @@ TEST_F(WearRunTest, KilledRunResumesToIdenticalResults) {
   EXPECT_EQ(testing::run_wheelwear("run -q --resume " + killed.string()).exit_code, 2);
 }
 
-profiles::PointList points(const std::vector<double>& y, const std::vector<double>& z) {
-  profiles::PointList p;
-  for (std::size_t i = 0; i < y.size(); ++i) p.emplace_back(y[i], z[i]);
-  return p;
-}
-
-// Arc length on `profile` between lateral positions y0 < y1 (on its upward-facing part).
-double arc_between(const profiles::Profile& profile, double y0, double y1) {
-  const auto a = profile.surface_at(y0), b = profile.surface_at(y1);
-  return b->s - a->s;
-}
-
-// Area of the polygon between two profiles that share their unworn ends [m^2].
-double area_between(const std::vector<double>& y0, const std::vector<double>& z0,
-                    const std::vector<double>& y1, const std::vector<double>& z1) {
-  std::vector<double> y = y0, z = z0;
-  y.insert(y.end(), y1.rbegin(), y1.rend());
-  z.insert(z.end(), z1.rbegin(), z1.rend());
-  double twice = 0.0;
-  for (std::size_t i = 0; i < y.size(); ++i) {
-    const std::size_t j = (i + 1) % y.size();
-    twice += y[i] * z[j] - y[j] * z[i];
-  }
-  return std::abs(0.5 * twice);
-}
-
 TEST_F(WearRunTest, WornAreaEqualsAccumulatedWearAndGrowsMonotonically) {
   const fs::path out = dir_ / "run.h5";
   run(small_scene(2e6, 250e3, 1e-3), out);
@@ -269,7 +204,7 @@ TEST_F(WearRunTest, BestTakesTotalsFromTheTableWhereItReaches) {
              work = column("frictional_work");
   const Scene scene = parse_scene(text, dir_);
   const tangential::Material material{scene.youngs_modulus / (2.0 * (1.0 + scene.poisson)),
-                                scene.poisson};
+                                      scene.poisson};
   std::size_t tabled = 0, patches = 0;
   for (std::size_t i = 0; i < from_table.size(); ++i) {
     if (std::isnan(from_table[i])) continue;
@@ -312,7 +247,7 @@ TEST_F(WearRunTest, ExactSolvesEveryPatchWithTheExactTheory) {
              fy = column("Fy"), work = column("frictional_work"), area = column("worn_area");
   const Scene scene = parse_scene(text, dir_);
   const tangential::Material material{scene.youngs_modulus / (2.0 * (1.0 + scene.poisson)),
-                                scene.poisson};
+                                      scene.poisson};
   tangential::SdecGridOptions options;
   options.nx = scene.grid_nx;
   options.ny = scene.grid_ny;
@@ -435,108 +370,6 @@ TEST_F(WearRunTest, LargeStepsWithFlangeContactStaySmooth) {
     // No step exceeds its depth limit (the smoothed increment is what the limit applies to).
     EXPECT_LE(*std::max_element(depth.begin(), depth.end()), 0.25e-3 * (1 + 1e-12));
   }
-}
-
-// Golden tolerances. The same build on the same CPU reproduces the file bit for bit (threads
-// and resume tests above); these cover another compiler or CPU, whose floating-point
-// contraction moves the last digits of iterative solves.
-// Profile coordinates [m]: 1e-12 m, a thousandth of a nanometre, far below any wear depth.
-constexpr double kGoldenLengthTolerance = 1e-12;
-// Everything else, relative to the largest magnitude in the same array (so entries near zero
-// are judged on the array's scale): 1e-9.
-constexpr double kGoldenRelativeTolerance = 1e-9;
-
-bool is_profile_length(const std::string& name) {
-  for (const char* suffix : {"/y", "/z", "/wear_rate/s"})
-    if (name.size() >= std::string_view(suffix).size() &&
-        name.compare(name.size() - std::string_view(suffix).size(), std::string::npos, suffix) ==
-            0 &&
-        name.rfind("wheel", 0) == 0)
-      return true;
-  return false;
-}
-
-// Golden results of the small scene: tests/data/pipeline/golden_small_run.h5 is the results
-// file of this scene, written by this test with WHEELWEAR_UPDATE_GOLDEN=1 (see
-// docs/developing.md) and checked then by the physical tests above (worn area against the
-// accumulated wear, conicity against the cone). Every array of every step is compared whole:
-// the same datasets, shapes and NaN pattern, values within the tolerances above.
-TEST_F(WearRunTest, SmallSceneMatchesGoldenResults) {
-  const fs::path out = dir_ / "golden.h5";
-  run(small_scene(30e3, 10e3, 1e-3), out);
-  const std::string golden_path = testing::test_data("pipeline/golden_small_run.h5");
-  if (std::getenv("WHEELWEAR_UPDATE_GOLDEN")) {
-    fs::copy_file(out, golden_path, fs::copy_options::overwrite_existing);
-    GTEST_SKIP() << "golden results rewritten: " << golden_path;
-  }
-  const ResultsFile file = ResultsFile::read(out);
-  const ResultsFile golden = ResultsFile::read(golden_path);
-  ASSERT_EQ(file.completed_steps(), golden.completed_steps());
-  EXPECT_EQ(file.format_version(), golden.format_version());
-  std::size_t arrays = 0, values = 0;
-  for (int step = 0; step < golden.completed_steps(); ++step) {
-    const std::vector<std::string> names = golden.step_array_names(step);
-    ASSERT_EQ(file.step_array_names(step), names) << "step " << step;
-    for (const std::string& name : names) {
-      const auto expected = golden.read_step_array(step, name);
-      const auto actual = file.read_step_array(step, name);
-      ASSERT_EQ(actual.size(), expected.size()) << "step " << step << ' ' << name;
-      double scale = 0.0;
-      for (double v : expected)
-        if (std::isfinite(v)) scale = std::max(scale, std::abs(v));
-      const double tolerance = is_profile_length(name) ? kGoldenLengthTolerance
-                                                       : kGoldenRelativeTolerance * scale;
-      for (std::size_t i = 0; i < expected.size(); ++i) {
-        if (std::isnan(expected[i])) {
-          EXPECT_TRUE(std::isnan(actual[i])) << "step " << step << ' ' << name << '[' << i << ']';
-          continue;
-        }
-        EXPECT_NEAR(actual[i], expected[i], tolerance)
-            << "step " << step << ' ' << name << '[' << i << ']';
-        ++values;
-      }
-      ++arrays;
-    }
-  }
-  // Three steps of about 60 arrays: a comparison of fewer means the file lost its content.
-  EXPECT_GT(arrays, 100u);
-  EXPECT_GT(values, 10000u);
-  RecordProperty("golden_arrays", static_cast<int>(arrays));
-  RecordProperty("golden_values", static_cast<int>(values));
-}
-
-// The main job: the built-in default scene runs a wear step end to end (as scripts/run-default.sh
-// runs it, shortened to one step), and its worn cross-section equals the applied depth
-// integrated along the profile (as WornAreaEqualsAccumulatedWearAndGrowsMonotonically checks on
-// the small scene).
-TEST_F(WearRunTest, DefaultSceneRunsAWearStep) {
-  Scene scene = default_scene();
-  // One longest step (step control may split it): at least two profiles, before and after.
-  scene.distance = scene.step_distance;
-  const fs::path out = dir_ / "default.h5";
-  const RunSummary summary = run_scene(scene, default_scene_text(), {}, true, out, {});
-  EXPECT_GE(summary.steps, 1);
-  const ResultsFile file = ResultsFile::read(out);
-  ASSERT_GE(file.completed_steps(), 2);
-  EXPECT_EQ(file.format_version(), kFormatVersion);
-  // One contact of the collective has no usable patch (counted, not worn); it is a tiny share
-  // of the distance.
-  EXPECT_LT(file.read_step_array(0, "failed_weight").at(0), 0.01);
-  const auto y = file.read_step_array(0, "wheel/wear_step/y");
-  const auto depth = file.read_step_array(0, "wheel/wear_step/depth");
-  const profiles::Profile before(
-      points(file.read_step_array(0, "wheel/y"), file.read_step_array(0, "wheel/z")),
-      {"step", profiles::Body::wheel});
-  double applied = 0.0;
-  for (std::size_t i = 0; i + 1 < y.size(); ++i)
-    applied += 0.5 * (depth[i] + depth[i + 1]) * arc_between(before, y[i], y[i + 1]);
-  ASSERT_GT(applied, 0.0);
-  const double area =
-      area_between(file.read_step_array(0, "wheel/y"), file.read_step_array(0, "wheel/z"),
-                   file.read_step_array(1, "wheel/y"), file.read_step_array(1, "wheel/z"));
-  // As in the small scene's test: curvature of the normal offset, the flange back and the
-  // re-interpolated ends stay within 1 %.
-  EXPECT_NEAR(area, applied, 0.01 * applied);
 }
 
 }  // namespace

@@ -14,7 +14,7 @@
 #include <numbers>
 #include <string>
 
-#include "support/csv_table.hpp"
+#include "support/contact_cases.hpp"
 #include "support/reference_profiles.hpp"
 #include "wheelwear/core/input_error.hpp"
 
@@ -22,8 +22,10 @@ namespace wheelwear::tangential {
 namespace {
 
 using testing::benchmark_pair;
-using testing::CsvTable;
-using testing::test_data;
+namespace contact = testing::contact;
+
+// The exact normal solve imposes the patch's normal force; its iteration stops at 1e-8 N.
+constexpr double kImposedNormalForce = 1e-6;  // [relative]
 
 // The single patch of the benchmark pair at lateral shift dy [m] under 55 kN.
 contactgeom::WheelRailPatch only_patch(double dy) {
@@ -60,20 +62,21 @@ Extent extent(const ExactSolution& s) {
 TEST(WheelRailExact, TreadContactMatchesHertz) {
   for (double y_ws : {4e-3, 6e-3, 8e-3}) {
     const contactgeom::WheelRailPatch p = only_patch(-y_ws);
-    ASSERT_TRUE(p.hertz_valid);
+    ASSERT_TRUE(p.hertz.has_value());
     contactgeom::WheelsetPose pose;
     pose.dy = -y_ws;
     const WheelRailExactSolution s = wheel_rail_exact(benchmark_pair(), pose, p, {}, 0.35);
     ASSERT_EQ(s.rolling.status, ExactStatus::converged) << s.rolling.message;
-    const contactgeom::HertzSolution& hz = p.hertz;
+    const contactgeom::HertzSolution& hz = *p.hertz;
     const ElementGrid& g = s.rolling.grid;
     // The exact theory's approach and peak pressure for a quadratic gap on elements of about
     // a/15 lie within 0.4 % of Hertz (exact_normal_test: 0.1 % and 0.4 % on a/8), and the
     // gap departs from the quadratic by its cubic terms over the patch (psi ~ 0.1); measured
     // 0.3 % and 0.2 % at y_ws = 4 mm: bound 1.5 %.
-    EXPECT_NEAR(s.approach / hz.delta, 1.0, 0.015) << "y_ws " << y_ws;
+    constexpr double kNearlyHertz = 0.015;  // [relative]
+    EXPECT_NEAR(s.approach / hz.delta, 1.0, kNearlyHertz) << "y_ws " << y_ws;
     const double pmax = *std::max_element(s.rolling.pn.begin(), s.rolling.pn.end());
-    EXPECT_NEAR(pmax / hz.p0, 1.0, 0.015) << "y_ws " << y_ws;
+    EXPECT_NEAR(pmax / hz.p0, 1.0, kNearlyHertz) << "y_ws " << y_ws;
     // Semi-axes to the element (the edge lies somewhere in the outermost contact element) plus
     // 3 % for the asymmetric gap (measured at y_ws = 4 mm: a -0.08 mm, b +0.19 mm, with
     // elements of 0.38 and 0.35 mm).
@@ -83,8 +86,7 @@ TEST(WheelRailExact, TreadContactMatchesHertz) {
     // Area: one ring of boundary elements (perimeter times half an element) plus 3 %.
     const double ring = std::numbers::pi * (hz.a + hz.b) * 0.5 * std::max(g.dx, g.dy);
     EXPECT_NEAR(s.contact_area, hz.area(), ring + 0.03 * hz.area()) << "y_ws " << y_ws;
-    // The normal force is imposed (the iteration stops at 1e-8 N).
-    EXPECT_NEAR(s.rolling.normal_force, p.normal_force, 1e-6 * p.normal_force);
+    EXPECT_NEAR(s.rolling.normal_force, p.normal_force, kImposedNormalForce * p.normal_force);
   }
 }
 
@@ -101,7 +103,7 @@ TEST(WheelRailExact, GapIsLeastAtTheInitialContactPoint) {
   EXPECT_LE(std::abs(g.y(e / g.nx)), g.dy);
   EXPECT_LE(std::abs(g.x(e % g.nx)), g.dx);
   const double one_element =
-      p.hertz.delta * (std::pow(g.dx / p.hertz.a, 2.0) + std::pow(g.dy / p.hertz.b, 2.0));
+      p.hertz->delta * (std::pow(g.dx / p.hertz->a, 2.0) + std::pow(g.dy / p.hertz->b, 2.0));
   EXPECT_GE(*least, -1e-12);
   EXPECT_LE(*least, one_element);
 }
@@ -120,32 +122,33 @@ TEST(WheelRailExact, GapIsLeastAtTheInitialContactPoint) {
 // wide over an almost flat gap whose far end differs in shape (at y_ws = 0, 11 mm from O:
 // 23 um ours, 8.5 um CONTACT's), so the areas (y_ws = -2: +20 %) and forces differ more.
 TEST(WheelRailExact, ForcesMatchContactsWheelRailCases) {
-  const CsvTable patches(test_data("contact/d_wheelrail_patches_dx0.2.csv"));
-  ASSERT_EQ(patches.rows().size(), 10u);
-  for (const auto& row : patches.rows()) {
-    const double y_ws = row.number("y_ws_mm");
+  // 1 % of mu N where the gaps agree in shape (CONTACT's own 0.2 -> 0.1 mm change: 0.65 %;
+  // measured <= 0.75 %); 3.5 % where they do not (see above; measured 2.7 %).
+  constexpr double kSameGapShape = 0.01, kOtherGapShape = 0.035;  // [mu N]
+  std::size_t compared = 0;
+  for (const contact::WheelRailCase& c : contact::wheel_rail_cases()) {
+    const int y_ws = c.y_ws_mm;
     contactgeom::WheelsetPose pose;
-    pose.dy = -y_ws * 1e-3;
+    pose.dy = -c.y_ws;
     const contactgeom::WheelRailPatch p = only_patch(pose.dy);
-    const double phi = row.number("cphi_per_mm") * 1e3;
-    const double s_icp = row.number("s_icp_mm") * 1e-3;
-    const Creepages at_O{row.number("cksi") - phi * s_icp, row.number("ceta"), phi};
+    const Creepages at_O{c.creepages.vx - c.creepages.phi * c.s_icp, c.creepages.vy,
+                         c.creepages.phi};
     WheelRailExactOptions options;
     // At y_ws = -2 the exact area reaches 1.3 times the Kik-Piotrowski patch on its field side.
-    if (y_ws == -2.0) options.margin = 2.0;
+    if (y_ws == -2) options.margin = 2.0;
     const WheelRailExactSolution s =
-        wheel_rail_exact(benchmark_pair(), pose, p, at_O, 0.35, options);
+        wheel_rail_exact(benchmark_pair(), pose, p, at_O, c.mu, options);
     ASSERT_EQ(s.rolling.status, ExactStatus::converged) << s.rolling.message;
-    const double ours = 0.35 * p.normal_force, theirs = 0.35 * row.number("FN_N");
-    const double dx = std::abs(s.rolling.forces.Fx / ours - row.number("FX_N") / theirs);
-    const double ds = std::abs(s.rolling.forces.Fy / ours - row.number("FS_N") / theirs);
-    // 1 % of mu N where the gaps agree in shape (CONTACT's own 0.2 -> 0.1 mm change: 0.65 %;
-    // measured <= 0.75 %); 3.5 % where they do not (see above; measured 2.7 %).
-    const double bound = (y_ws == 0.0 || y_ws == -2.0) ? 0.035 : 0.01;
+    const double ours = c.mu * p.normal_force, theirs = c.mu * c.FN;
+    const double dx = std::abs(s.rolling.forces.Fx / ours - c.FX / theirs);
+    const double ds = std::abs(s.rolling.forces.Fy / ours - c.FS / theirs);
+    const double bound = (y_ws == 0 || y_ws == -2) ? kOtherGapShape : kSameGapShape;
     EXPECT_LT(dx, bound) << "y_ws " << y_ws;
     EXPECT_LT(ds, bound) << "y_ws " << y_ws;
-    EXPECT_NEAR(s.rolling.normal_force, p.normal_force, 1e-6 * p.normal_force);
+    EXPECT_NEAR(s.rolling.normal_force, p.normal_force, kImposedNormalForce * p.normal_force);
+    ++compared;
   }
+  EXPECT_EQ(compared, contact::kWheelRailCases);
 }
 
 // The row minima of the sampled gap against CONTACT's (d_wheelrail_rows_dx0.2.csv, from O,
@@ -154,20 +157,17 @@ TEST(WheelRailExact, ForcesMatchContactsWheelRailCases) {
 // 1.11 at y_ws = 2 mm falling to 1.02 ... 1.03 at 10 mm (see above). Bound: the factor within
 // [1, 1.15] and its spread over one patch's rows below 0.05 (measured 0.027).
 TEST(WheelRailExact, GapAgreesWithContactsOnTheTread) {
-  const CsvTable patches(test_data("contact/d_wheelrail_patches_dx0.2.csv"));
-  const CsvTable rows(test_data("contact/d_wheelrail_rows_dx0.2.csv"));
-  for (const auto& row : patches.rows()) {
-    const double y_ws = row.number("y_ws_mm");
-    if (y_ws < 2.0) continue;
+  int tread_cases = 0;
+  for (const contact::WheelRailCase& c : contact::wheel_rail_cases()) {
+    const int y_ws = c.y_ws_mm;
+    if (y_ws < 2) continue;
+    ++tread_cases;
     contactgeom::WheelsetPose pose;
-    pose.dy = -y_ws * 1e-3;
+    pose.dy = -c.y_ws;
     const contactgeom::WheelRailPatch p = only_patch(pose.dy);
-    const WheelRailExactSolution s = wheel_rail_exact(benchmark_pair(), pose, p, {}, 0.35);
-    const double s_icp = row.number("s_icp_mm") * 1e-3;
+    const WheelRailExactSolution s = wheel_rail_exact(benchmark_pair(), pose, p, {}, c.mu);
     std::map<double, double> reference;  // s from O [m] -> least distance of the row [m]
-    for (const auto& r : rows.rows())
-      if (r.number("y_ws_mm") == y_ws)
-        reference[r.number("s_mm") * 1e-3 - s_icp] = r.number("h_min_row_mm") * 1e-3;
+    for (const contact::WheelRailRow& r : c.rows) reference[r.s - c.s_icp] = r.h_min;
     const ElementGrid& g = s.rolling.grid;
     double lo = 10.0, hi = 0.0;
     int compared = 0;
@@ -190,6 +190,7 @@ TEST(WheelRailExact, GapAgreesWithContactsOnTheTread) {
     EXPECT_LE(hi, 1.15) << "y_ws " << y_ws;
     EXPECT_LE(hi - lo, 0.05) << "y_ws " << y_ws;
   }
+  EXPECT_EQ(tread_cases, 5);  // y_ws = 2, 4, ..., 10 mm
 }
 
 // Bad input is refused with a message that names it.

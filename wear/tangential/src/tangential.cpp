@@ -37,8 +37,8 @@ void totals_only(const CreepForces& forces, TangentialSolution& solution) {
   solution.frictional_work = 0.0;
 }
 
-void solve_exact(const contactgeom::Sdec& sdec, const Creepages& creepages,
-                 const ContactLoad& load, const Material& material, const SolveOptions& options,
+void solve_exact(const contactgeom::Sdec& sdec, const Creepages& creepages, const ContactLoad& load,
+                 const Material& material, const SolveOptions& options,
                  TangentialSolution& solution) {
   ExactSolution exact =
       exact_sdec(sdec, creepages, load, material, options.exact_grid, options.exact_solver);
@@ -60,8 +60,8 @@ void solve_exact(const contactgeom::Sdec& sdec, const Creepages& creepages,
 
 // best: the table's totals inside its range; with cell fields FASTSIM-SDEC's distribution
 // carried to them, without them the table alone (FASTSIM would only be thrown away).
-void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages,
-                const ContactLoad& load, const Material& material, const SolveOptions& options,
+void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages, const ContactLoad& load,
+                const Material& material, const SolveOptions& options,
                 TangentialSolution& solution) {
   solution.table_outside = creep_table_outside(sdec, creepages, load, material);
   if (!solution.table_outside && !options.fastsim.cell_fields) {
@@ -76,13 +76,17 @@ void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages,
 
 }  // namespace
 
-std::string_view method_name(Method method) { return core::name_of(kMethodNames, method); }
+std::string_view method_name(Method method) {
+  return core::name_of(kMethodNames, method);
+}
 
 std::optional<Method> parse_method(std::string_view name) {
   return core::value_named(kMethodNames, name);
 }
 
-std::string_view status_name(SolveStatus status) { return core::name_of(kStatusNames, status); }
+std::string_view status_name(SolveStatus status) {
+  return core::name_of(kStatusNames, status);
+}
 
 std::optional<FastsimMethod> fastsim_variant(Method method) {
   switch (method) {
@@ -106,7 +110,9 @@ std::optional<FastsimMethod> fastsim_variant(Method method) {
   return std::nullopt;
 }
 
-bool has_cell_fields(Method method) { return fastsim_variant(method) || method == Method::exact; }
+bool has_cell_fields(Method method) {
+  return fastsim_variant(method) || method == Method::exact;
+}
 
 void SolveOptions::validate() const {
   fastsim.validate();
@@ -156,8 +162,7 @@ void solve_patch(Method method, const contactgeom::Sdec& sdec, const Creepages& 
     case Method::fastsim_eqe:
     case Method::fastsim_eqe_shifted:
     case Method::fastsim_elliptic:
-      fastsim(*fastsim_variant(method), sdec, creepages, load, material, options.fastsim,
-              solution);
+      fastsim(*fastsim_variant(method), sdec, creepages, load, material, options.fastsim, solution);
       return;
   }
 }

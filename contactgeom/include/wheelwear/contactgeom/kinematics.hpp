@@ -10,7 +10,10 @@ namespace wheelwear::contactgeom {
 struct WheelsetMotion {
   double speed = 0.0;             ///< forward speed V of the wheelset centre [m/s], > 0
   double lateral_velocity = 0.0;  ///< dy/dt [m/s], + towards this wheel's flange
-  double yaw_rate = 0.0;          ///< d(yaw)/dt [rad/s], + when this wheel moves ahead
+  /// Yaw rate of the wheelset in this wheel's frame [rad/s], + when this wheel moves ahead of
+  /// the axle's centre (for the left wheel -d(yaw)/dt, yaw being + counter-clockwise seen from
+  /// above; in a right-hand curve of radius R the left, outer wheel has +V/R).
+  double yaw_rate = 0.0;
   double angular_velocity = 0.0;  ///< wheel spin about the axle [rad/s]; 0: free rolling on
                                   ///< the nominal radius, V / r0
   double lateral_arm = 0.75;      ///< distance from the wheelset centre to the contact [m]

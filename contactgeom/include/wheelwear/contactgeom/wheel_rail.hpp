@@ -4,6 +4,7 @@
 /// the Kik-Piotrowski normal problem).
 
 #include <string>
+#include <optional>
 #include <vector>
 
 #include "wheelwear/contactgeom/hertz.hpp"
@@ -73,8 +74,9 @@ struct WheelRailPatch {
   KpPatch kp;                ///< the Kik-Piotrowski strips (s: lateral, + towards the gauge side)
   PatchMeasures measures;    ///< area, length, width, W1, W2 in the contact plane
   Sdec sdec;                 ///< Eq. 13-14 regularisation
-  HertzSolution hertz;       ///< Hertz ellipse from the curvatures at O, same normal force
-  bool hertz_valid = false;  ///< false where the lateral relative curvature is not positive
+  /// Hertz ellipse from the curvatures at O at the same normal force; none where the lateral
+  /// relative curvature is not positive.
+  std::optional<HertzSolution> hertz;
   double y_wheel = 0.0;      ///< O on the (unrolled) wheel profile, from its origin, + towards the
                              ///< flange [m]
   double y_rail = 0.0;   ///< O on the rail profile, from its origin, + towards the gauge side [m]

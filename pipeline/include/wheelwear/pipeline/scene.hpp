@@ -22,10 +22,12 @@ namespace wheelwear::pipeline {
 struct WheelsetStateSpec {
   std::string label;        ///< free text (e.g. the track section)
   double dy = 0.0;          ///< lateral shift [m], + to the left
-  double yaw = 0.0;         ///< yaw angle [rad], + turns the left wheel's flange ahead
+  double yaw = 0.0;         ///< yaw angle [rad], + counter-clockwise seen from above (heads left)
   double load_left = 0.0;   ///< vertical force on the left wheel [N], > 0
   double load_right = 0.0;  ///< vertical force on the right wheel [N], > 0
-  std::optional<double> lateral_force_left;   ///< lateral force on the left rail [N], + outwards
+  /// Lateral force of the left rail on its wheel [N], + towards the track centre (the same
+  /// number as the wheel's force on its rail, + outwards).
+  std::optional<double> lateral_force_left;
   std::optional<double> lateral_force_right;  ///< same for the right wheel [N]
   double speed = 0.0;                         ///< forward speed [m/s], > 0
   double curve_radius = 0.0;      ///< [m]; 0 on tangent track, > 0 right-hand, < 0 left-hand
@@ -45,7 +47,8 @@ enum class TangentialMethod {
   /// (wear/table_correction.hpp); FASTSIM-SDEC alone outside the table. Needs model sdec.
   best,
   /// Kalker's exact theory on the SDEC patch (exact_sdec on grid_nx x grid_ny elements,
-  /// tangential/exact/exact_fields.hpp): the reference, at milliseconds per patch. Needs model sdec.
+  /// tangential/exact/exact_fields.hpp): the reference, at milliseconds per patch. Needs model
+  /// sdec.
   exact,
 };
 

@@ -7,7 +7,7 @@
 
 namespace wheelwear::profiles {
 
-/// Standard rail inclinations (cant of the rail towards the track centre).
+/// Standard rail inclinations (the rail tilted towards the track centre; not the track's cant).
 enum class RailInclination { none, one_in_40, one_in_20 };
 
 /// Inclination angle [rad]: atan(1/40), atan(1/20) or 0.
@@ -33,7 +33,7 @@ std::vector<HeadArc> rail_60e1_arcs();
 /// Parameters of a generated 60E1 rail head.
 struct Rail60E1Options {
   /// Inclination towards the track centre [rad], in [0, 0.1]; see inclination_angle(). Default
-  /// atan(1/40), the usual cant of standard-gauge track.
+  /// atan(1/40), the usual rail inclination of standard-gauge track.
   double inclination = 0.024994793618920156;
   /// Depth below the crown to which the head flanks are generated [m], in [0.0145, 0.0375]
   /// (0.0375: the extent of CONTACT's MBench UIC60 file).

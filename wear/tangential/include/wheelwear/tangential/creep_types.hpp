@@ -40,8 +40,8 @@ struct CoefficientFlags {
 /// Total tangential forces on body 1 (the wheel) in Kalker's convention: they oppose the
 /// creepages, so positive vx gives negative Fx (Liu, Fu & Bruni 2022, Eq. 11).
 struct CreepForces {
-  double Fx = 0.0;         ///< longitudinal force [N]
-  double Fy = 0.0;         ///< lateral force [N]
+  double Fx = 0.0;  ///< longitudinal force [N]
+  double Fy = 0.0;  ///< lateral force [N]
   /// Spin moment about O [N m]; none from the linear theory, which does not define it for
   /// the SDEC.
   std::optional<double> Mz;

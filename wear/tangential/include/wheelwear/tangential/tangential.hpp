@@ -75,8 +75,8 @@ struct SolveOptions {
 /// sdec.a, sdec.b) with creepages at O. Throws InputError on invalid input (|psi| >= 1,
 /// a or b <= 0, N <= 0, mu <= 0, NaN, a patch outside the book of tables with Method::table).
 TangentialSolution solve_patch(Method method, const contactgeom::Sdec& sdec,
-                          const Creepages& creepages, const ContactLoad& load,
-                          const Material& material, const SolveOptions& options = {});
+                               const Creepages& creepages, const ContactLoad& load,
+                               const Material& material, const SolveOptions& options = {});
 
 /// As above, reusing `solution`'s per-cell storage (no allocation once a grid size has been
 /// seen; for loops over many patches).

@@ -1,0 +1,34 @@
+#pragma once
+// The results file's layout of what a run computes: per-step scalars and arrays, per-state
+// summaries and T gamma maps from the kernel's outcomes, the collective and the run's
+// information (docs/results.md). The physics knows nothing of it.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "wheelwear/pipeline/results_file.hpp"
+#include "wheelwear/pipeline/scene.hpp"
+#include "wheelwear/pipeline/state_kernel.hpp"
+
+namespace wheelwear::pipeline::detail {
+
+ArrayRecord scalar(std::string name, double value, std::string units, std::string description);
+ArrayRecord vector(std::string name, std::vector<double> values, std::string units,
+                   std::string description);
+
+// states/...: per state and wheel, and per state, wheel and patch (shape [states, 2, P], P the
+// largest patch count of the step, NaN where a wheel has fewer patches).
+void add_state_summaries(GroupRecord& g, const std::vector<StateOutcome>& states);
+
+// tgamma/...: every patch's cells, shape [states, 2, P, ny, nx], NaN where there is no patch.
+void add_tgamma_maps(GroupRecord& g, const std::vector<StateOutcome>& states, int nx, int ny);
+
+// The states as the run resolved them (from the scene, a CSV or an HDF5 file).
+GroupRecord collective_record(const Scene& scene);
+
+// /run_info: host, time, threads, timings (the only place they appear).
+GroupRecord run_info(const std::filesystem::path& scene_directory, bool builtin, double elapsed,
+                     std::size_t evaluations, int resumed_from);
+
+}  // namespace wheelwear::pipeline::detail

@@ -1,0 +1,86 @@
+#pragma once
+// What the wear-run tests share: a small scene, a fixture with its own folder, and profile
+// geometry to check worn areas with.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "wheelwear/pipeline/wear_run.hpp"
+#include "wheelwear/profiles/profile.hpp"
+
+namespace wheelwear::pipeline {
+
+namespace fs = std::filesystem;
+
+// A small scene: tangent and curve states on both hands, flange contact with a lateral force.
+inline std::string small_scene(double distance, double step, double max_depth, int grid = 12) {
+  return "[contact]\ngrid_nx = " + std::to_string(grid) + "\ngrid_ny = " + std::to_string(grid) +
+         "\nstrip_width_m = 0.2e-3\n"
+         "[run]\ndistance_m = " +
+         std::to_string(distance) + "\nstep_distance_m = " + std::to_string(step) +
+         "\nmax_depth_step_m = " + std::to_string(max_depth) +
+         "\n"
+         "[[load_collective.state]]\nlabel = \"tangent\"\ndy_m = 0.001\nyaw_rad = 2e-4\n"
+         "axle_load_N = 110e3\nspeed_m_s = 40\nlateral_velocity_m_s = 0.01\nweight = 3\n"
+         "[[load_collective.state]]\nlabel = \"tangent\"\ndy_m = -0.002\nyaw_rad = -3e-4\n"
+         "axle_load_N = 110e3\nspeed_m_s = 40\nweight = 3\n"
+         "[[load_collective.state]]\nlabel = \"R1000\"\ndy_m = 0.004\nyaw_rad = 1e-3\n"
+         "load_left_N = 60e3\nload_right_N = 50e3\nspeed_m_s = 30\ncurve_radius_m = 1000\n"
+         "weight = 1\n"
+         "[[load_collective.state]]\nlabel = \"R500\"\ndy_m = -0.0065\nyaw_rad = -2e-3\n"
+         "load_left_N = 50e3\nload_right_N = 60e3\nlateral_force_right_N = 25e3\n"
+         "speed_m_s = 22\ncurve_radius_m = -500\nweight = 1\n";
+}
+
+class WearRunTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("wheelwear_run_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+  RunSummary run(const std::string& scene_text, const fs::path& out) const {
+    return run_scene(parse_scene(scene_text, dir_), scene_text, dir_, false, out, {});
+  }
+  fs::path dir_;
+};
+
+inline profiles::PointList points(const std::vector<double>& y, const std::vector<double>& z) {
+  profiles::PointList p;
+  for (std::size_t i = 0; i < y.size(); ++i) p.emplace_back(y[i], z[i]);
+  return p;
+}
+
+// Arc length on `profile` between lateral positions y0 < y1 (on its upward-facing part).
+inline double arc_between(const profiles::Profile& profile, double y0, double y1) {
+  const auto a = profile.surface_at(y0), b = profile.surface_at(y1);
+  return b->s - a->s;
+}
+
+// Area of the polygon between two profiles that share their unworn ends [m^2].
+inline double area_between(const std::vector<double>& y0, const std::vector<double>& z0,
+                           const std::vector<double>& y1, const std::vector<double>& z1) {
+  std::vector<double> y = y0, z = z0;
+  y.insert(y.end(), y1.rbegin(), y1.rend());
+  z.insert(z.end(), z1.rbegin(), z1.rend());
+  double twice = 0.0;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    const std::size_t j = (i + 1) % y.size();
+    twice += y[i] * z[j] - y[j] * z[i];
+  }
+  return std::abs(0.5 * twice);
+}
+
+}  // namespace wheelwear::pipeline
