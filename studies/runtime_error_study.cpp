@@ -116,7 +116,7 @@
 #include <vector>
 
 #include "study_csv.hpp"
-#include "support/csv_table.hpp"
+#include "support/contact_cases.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
@@ -129,10 +129,9 @@ using wheelwear::bench::split;
 using wheelwear::bench::StudyCsv;
 
 using namespace wheelwear;
-using wheelwear::testing::CsvTable;
-using wheelwear::testing::test_data;
+namespace contact = wheelwear::testing::contact;
 
-const tangential::Material kSteel{80e9, 0.25};  // CONTACT: GG = 80 000 N/mm^2, POISS = 0.25
+const tangential::Material kSteel = contact::kMaterial;  // CONTACT's: G = 80 GPa, nu = 0.25
 
 /// One solver call with CONTACT's answer.
 struct Case {
@@ -153,18 +152,12 @@ struct CaseSet {
   std::vector<Case> cases;
 };
 
+// The catalogue's loaders throw when a file is missing or holds fewer or more cases than the
+// README lists, so every set below is complete.
 CaseSet pure_spin_cases() {
   CaseSet set{"pure_spin", Measure::max_component_over_mu_n, {}};
-  const CsvTable table(test_data("contact/b_pure_spin_mx80.csv"));
-  for (const auto& row : table.rows()) {
-    const double phi = row.number("phi_per_m");
-    if (phi == 0.0) continue;
-    set.cases.push_back({{row.number("a_mm") * 1e-3, row.number("b_mm") * 1e-3, row.number("psi")},
-                         {0, 0, phi},
-                         {row.number("N_N"), row.number("mu")},
-                         row.number("Fx_N"),
-                         row.number("Fy_N")});
-  }
+  for (const contact::PureSpinCase& c : contact::pure_spin_cases_with_spin())
+    set.cases.push_back({c.patch, c.creepages, c.load, c.Fx, c.Fy});
   return set;
 }
 
@@ -172,23 +165,14 @@ CaseSet pure_spin_cases() {
 // tests/data/contact, section 3: C11s = -Fx(dvx)/(G c^2 dvx), C13s = -Fx(dphi)/(G c^3 dphi), ...).
 CaseSet linear_cases() {
   CaseSet set{"linear", Measure::vector_relative, {}};
-  const CsvTable table(test_data("contact/a_linear_coeffs_mx80.csv"));
-  for (const auto& row : table.rows()) {
-    const contactgeom::Sdec patch{row.number("a_mm") * 1e-3, row.number("b_mm") * 1e-3,
-                                  row.number("psi")};
-    const tangential::ContactLoad load{row.number("N_N"), 0.35};
+  for (const contact::LinearCoefficientCase& k : contact::linear_coefficient_cases()) {
+    const contactgeom::Sdec& patch = k.patch;
     const double c = std::sqrt(patch.a * patch.b), g = kSteel.G;
-    const double dv = row.number("dvx_dvy"), dphi = row.number("dphi_per_m");
+    const double dv = k.dv, dphi = k.dphi;
     const double c2 = g * c * c, c3 = g * c * c * c;
-    set.cases.push_back(
-        {patch, {dv, 0, 0}, load, -c2 * row.number("C11s") * dv, -c2 * row.number("C21s") * dv});
-    set.cases.push_back(
-        {patch, {0, dv, 0}, load, -c2 * row.number("C12s") * dv, -c2 * row.number("C22s") * dv});
-    set.cases.push_back({patch,
-                         {0, 0, dphi},
-                         load,
-                         -c3 * row.number("C13s") * dphi,
-                         -c3 * row.number("C23s") * dphi});
+    set.cases.push_back({patch, {dv, 0, 0}, k.load, -c2 * k.c11s * dv, -c2 * k.c21s * dv});
+    set.cases.push_back({patch, {0, dv, 0}, k.load, -c2 * k.c12s * dv, -c2 * k.c22s * dv});
+    set.cases.push_back({patch, {0, 0, dphi}, k.load, -c3 * k.c13s * dphi, -c3 * k.c23s * dphi});
   }
   return set;
 }
@@ -466,7 +450,13 @@ int main(int argc, char** argv) {
     for (const int n : {250, 300, 400, 500, 600, 800, 1000}) fit_grids.push_back(n);
   const int n_fit_fine = quick ? 400 : 3200;
 
-  const std::vector<CaseSet> sets = {pure_spin_cases(), linear_cases()};
+  std::vector<CaseSet> sets;
+  try {
+    sets = {pure_spin_cases(), linear_cases()};
+  } catch (const std::exception& error) {
+    std::cerr << "wheelwear_runtime_error_study: " << error.what() << "\n";
+    return 1;
+  }
   const std::vector<Solver> solvers = plotted_solvers();
 
   if (!merge || only.contains("table")) {

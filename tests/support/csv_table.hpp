@@ -17,6 +17,7 @@ class CsvRow {
       : columns_(columns), cells_(std::move(cells)) {}
   const std::string& text(const std::string& column) const { return cells_.at(index(column)); }
   double number(const std::string& column) const { return std::stod(text(column)); }
+  std::size_t size() const { return cells_.size(); }  ///< cells in this row
 
  private:
   std::size_t index(const std::string& column) const {
@@ -43,6 +44,7 @@ class CsvTable {
   }
   CsvTable(const CsvTable&) = delete;  // rows point at columns_
   const std::vector<CsvRow>& rows() const { return rows_; }
+  std::size_t column_count() const { return columns_.size(); }
 
  private:
   static std::vector<std::string> split(const std::string& line) {

@@ -11,35 +11,13 @@
 #include <tuple>
 #include <vector>
 
-#include "support/csv_table.hpp"
+#include "support/contact_cases.hpp"
 #include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::tangential {
 namespace {
 
-using testing::CsvTable;
-using testing::test_data;
-
-const Material kSteel{80e9, 0.25};
-
-struct SpinCase {
-  contactgeom::Sdec patch;
-  Creepages spin;
-  ContactLoad load;
-};
-
-std::vector<SpinCase> pure_spin_cases() {
-  const CsvTable table(test_data("contact/b_pure_spin_mx80.csv"));
-  std::vector<SpinCase> cases;
-  for (const auto& row : table.rows()) {
-    const double phi = row.number("phi_per_m");
-    if (phi == 0.0) continue;
-    cases.push_back({{row.number("a_mm") * 1e-3, row.number("b_mm") * 1e-3, row.number("psi")},
-                     {0, 0, phi},
-                     {row.number("N_N"), row.number("mu")}});
-  }
-  return cases;
-}
+namespace contact = testing::contact;
 
 FastsimOptions grid(int n, FastsimScheme scheme, TractionBound bound) {
   FastsimOptions o;
@@ -69,16 +47,17 @@ TEST_P(GridChoiceMeetsTarget, OnThePureSpinCases) {
   const Combination& c = GetParam();
   const GridErrorModel model = grid_error_model(c.method, c.scheme, c.bound);
   const double r = 1.0 / (std::pow(2.0, model.order) - 1.0);
-  const auto cases = pure_spin_cases();
-  ASSERT_EQ(cases.size(), 17u);
+  const auto cases = contact::pure_spin_cases_with_spin();
+  ASSERT_EQ(cases.size(), contact::kPureSpinCasesWithSpin);
   std::vector<CreepForces> converged;
   const int n_fine = c.scheme == FastsimScheme::kalker ? 1600 : 800;
-  for (const SpinCase& s : cases) {
-    const CreepForces f1 =
-        fastsim(c.method, s.patch, s.spin, s.load, kSteel, grid(n_fine / 2, c.scheme, c.bound))
-            .forces;
+  for (const contact::PureSpinCase& s : cases) {
+    const CreepForces f1 = fastsim(c.method, s.patch, s.creepages, s.load, s.material,
+                                   grid(n_fine / 2, c.scheme, c.bound))
+                               .forces;
     const CreepForces f2 =
-        fastsim(c.method, s.patch, s.spin, s.load, kSteel, grid(n_fine, c.scheme, c.bound)).forces;
+        fastsim(c.method, s.patch, s.creepages, s.load, s.material, grid(n_fine, c.scheme, c.bound))
+            .forces;
     CreepForces f;
     f.Fx = f2.Fx + (f2.Fx - f1.Fx) * r;
     f.Fy = f2.Fy + (f2.Fy - f1.Fy) * r;
@@ -87,15 +66,17 @@ TEST_P(GridChoiceMeetsTarget, OnThePureSpinCases) {
   for (const double target : c.targets) {
     const GridChoice choice = choose_grid(c.method, c.scheme, c.bound, target);
     double error = 0.0;
+    std::size_t compared = 0;
     for (std::size_t k = 0; k < cases.size(); ++k) {
-      const SpinCase& s = cases[k];
-      const CreepForces f =
-          fastsim(c.method, s.patch, s.spin, s.load, kSteel, grid(choice.nx, c.scheme, c.bound))
-              .forces;
-      const double mu_n = s.load.mu * s.load.N;
-      error = std::max({error, std::abs(f.Fx - converged[k].Fx) / mu_n,
-                        std::abs(f.Fy - converged[k].Fy) / mu_n});
+      const contact::PureSpinCase& s = cases[k];
+      const CreepForces f = fastsim(c.method, s.patch, s.creepages, s.load, s.material,
+                                    grid(choice.nx, c.scheme, c.bound))
+                                .forces;
+      error = std::max({error, std::abs(f.Fx - converged[k].Fx) / s.mu_N(),
+                        std::abs(f.Fy - converged[k].Fy) / s.mu_N()});
+      ++compared;
     }
+    EXPECT_EQ(compared, contact::kPureSpinCasesWithSpin);
     RecordProperty("n_for_" + std::to_string(target), choice.nx);
     EXPECT_LE(error, target + kReferenceAllowance)
         << method_name(c.method) << " target " << target << " n = " << choice.nx;

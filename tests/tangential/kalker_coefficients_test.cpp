@@ -5,51 +5,55 @@
 #include <cmath>
 #include <numbers>
 
-#include "support/csv_table.hpp"
+#include "support/contact_cases.hpp"
 #include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::tangential {
 namespace {
 
-using testing::CsvTable;
-using testing::test_data;
+namespace contact = testing::contact;
 
 // The table is stored with 3 significant digits; equality to far below that is exact recall.
 constexpr double kTableExact = 1e-12;
+// Quantities that are equal in closed form, computed along different paths: rounding only.
+constexpr double kRounding = 1e-12;
 
 // Kalker's values for nu = 0.25 as printed in Table 1 of Liu, Fu & Bruni (2022), copied into
 // the reference file's C*_kalker columns: an independent transcription of the same table.
 TEST(KalkerCoefficients, MatchTable1TranscriptionAtEveryRow) {
-  const CsvTable fit(test_data("contact/a_linear_fit_mx80.csv"));
-  ASSERT_EQ(fit.rows().size(), 10u);
-  for (const auto& row : fit.rows()) {
-    const double g = testing::ellipticity_from_label(row.text("g_label"));
-    const KalkerCoefficients k = kalker_coefficients(g, 0.25);
-    EXPECT_NEAR(k.c11, row.number("C11_kalker"), kTableExact) << "a/b = " << g;
-    EXPECT_NEAR(k.c22, row.number("C22_kalker"), kTableExact) << "a/b = " << g;
-    EXPECT_NEAR(k.c23, row.number("C23_kalker"), kTableExact) << "a/b = " << g;
+  std::size_t compared = 0;
+  for (const contact::LinearFitCase& row : contact::linear_fit_cases()) {
+    const double g = row.ellipticity;
+    const KalkerCoefficients k = kalker_coefficients(g, contact::kMaterial.nu);
+    EXPECT_NEAR(k.c11, row.kalker_c11, kTableExact) << "a/b = " << g;
+    EXPECT_NEAR(k.c22, row.kalker_c22, kTableExact) << "a/b = " << g;
+    EXPECT_NEAR(k.c23, row.kalker_c23, kTableExact) << "a/b = " << g;
     EXPECT_FALSE(k.extrapolated);
+    ++compared;
   }
+  EXPECT_EQ(compared, contact::kLinearFitCases);
 }
 
 // CONTACT's exact-theory values at psi = 0 differ from Kalker's table by at most 0.86 % for
 // a/b <= 10/3 and 1.6 % at b/a = 0.1 (reference README, section 4); 1.7 % covers both.
 TEST(KalkerCoefficients, AgreeWithExactTheoryWithinItsKnownSpread) {
-  const CsvTable fit(test_data("contact/a_linear_fit_mx80.csv"));
-  for (const auto& row : fit.rows()) {
-    const KalkerCoefficients k =
-        kalker_coefficients(testing::ellipticity_from_label(row.text("g_label")), 0.25);
-    EXPECT_NEAR(k.c11 / row.number("C11_psi0"), 1.0, 0.017);
-    EXPECT_NEAR(k.c22 / row.number("C22_psi0"), 1.0, 0.017);
-    EXPECT_NEAR(k.c23 / row.number("C23_psi0"), 1.0, 0.017);
+  constexpr double kKnownSpread = 0.017;  // [relative]
+  std::size_t compared = 0;
+  for (const contact::LinearFitCase& row : contact::linear_fit_cases()) {
+    const KalkerCoefficients k = kalker_coefficients(row.ellipticity, contact::kMaterial.nu);
+    EXPECT_NEAR(k.c11 / row.c11, 1.0, kKnownSpread) << row.g_label;
+    EXPECT_NEAR(k.c22 / row.c22, 1.0, kKnownSpread) << row.g_label;
+    EXPECT_NEAR(k.c23 / row.c23, 1.0, kKnownSpread) << row.g_label;
+    ++compared;
   }
+  EXPECT_EQ(compared, contact::kLinearFitCases);
 }
 
 // For nu = 0 the elastic problem makes C11 = C22 exactly (Kalker 1990, Table E.3).
 TEST(KalkerCoefficients, LongitudinalEqualsLateralForZeroPoisson) {
   for (double g : {0.1, 0.25, 0.5, 1.0, 1.5, 3.0, 10.0}) {
     const KalkerCoefficients k = kalker_coefficients(g, 0.0);
-    EXPECT_NEAR(k.c11, k.c22, 1e-12) << "a/b = " << g;
+    EXPECT_NEAR(k.c11, k.c22, kRounding) << "a/b = " << g;
   }
 }
 
@@ -84,10 +88,10 @@ TEST(KalkerCoefficients, FollowsKalkersAsymptotesForWidePatches) {
   const KalkerCoefficients k1 = kalker_coefficients(1e-2, nu);
   const KalkerCoefficients k2 = kalker_coefficients(1e-3, nu);
   EXPECT_TRUE(k1.extrapolated);
-  EXPECT_NEAR(k1.c11, k2.c11, 1e-12);
-  EXPECT_NEAR(k1.c22, k2.c22, 1e-12);
+  EXPECT_NEAR(k1.c11, k2.c11, kRounding);
+  EXPECT_NEAR(k1.c22, k2.c22, kRounding);
   auto shape = [nu](double g) { return std::sqrt(g) * (1 + nu * (std::log(16 / g) - 5)); };
-  EXPECT_NEAR(k1.c23 / k2.c23, shape(1e-2) / shape(1e-3), 1e-12);
+  EXPECT_NEAR(k1.c23 / k2.c23, shape(1e-2) / shape(1e-3), kRounding);
 }
 
 // For b/a -> 0, C23 grows like g^-1.5 / ((1-nu) ln(16/g^2) - 2 + 4 nu) with g = b/a.
@@ -99,22 +103,23 @@ TEST(KalkerCoefficients, FollowsKalkersAsymptotesForSlenderPatches) {
   auto shape = [nu](double g) {
     return std::pow(g, -1.5) / ((1 - nu) * std::log(16 / (g * g)) - 2 + 4 * nu);
   };
-  EXPECT_NEAR(k1.c23 / k2.c23, shape(1.0 / 20) / shape(1.0 / 40), 1e-12);
+  EXPECT_NEAR(k1.c23 / k2.c23, shape(1.0 / 20) / shape(1.0 / 40), kRounding);
   EXPECT_GT(k2.c11, k1.c11);
 }
 
 // The asymptotes are matched to the end rows, so no coefficient jumps where the table ends
 // (1e-6 relative: the change over a step of 1e-9 in a/b).
 TEST(KalkerCoefficients, IsContinuousWhereTheTableEnds) {
+  constexpr double kStep = 1e-6;  // [relative], see above
   for (double nu : {0.0, 0.25, 0.28, 0.5}) {
     for (double edge : {0.1, 10.0}) {
       const KalkerCoefficients in =
           kalker_coefficients(edge * (edge < 1 ? 1 + 1e-9 : 1 - 1e-9), nu);
       const KalkerCoefficients out =
           kalker_coefficients(edge * (edge < 1 ? 1 - 1e-9 : 1 + 1e-9), nu);
-      EXPECT_NEAR(out.c11 / in.c11, 1.0, 1e-6);
-      EXPECT_NEAR(out.c22 / in.c22, 1.0, 1e-6);
-      EXPECT_NEAR(out.c23 / in.c23, 1.0, 1e-6);
+      EXPECT_NEAR(out.c11 / in.c11, 1.0, kStep);
+      EXPECT_NEAR(out.c22 / in.c22, 1.0, kStep);
+      EXPECT_NEAR(out.c23 / in.c23, 1.0, kStep);
       EXPECT_TRUE(out.extrapolated);
       EXPECT_FALSE(in.extrapolated);
     }

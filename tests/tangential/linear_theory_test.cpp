@@ -24,8 +24,9 @@ TEST(LinearSdec, EvaluatesEquation11) {
       -G * c * c * (4.12 + 0.143 * psi2) * v.vx - G * c * c * c * (-3.18 * 0.5) * v.phi;
   const double fy =
       -G * c * c * (3.67 + 0.109 * psi2) * v.vy - G * c * c * c * (1.47 + 0.063 * psi2) * v.phi;
-  EXPECT_NEAR(f.Fx, fx, 1e-9 * std::abs(fx));
-  EXPECT_NEAR(f.Fy, fy, 1e-9 * std::abs(fy));
+  constexpr double kSameFormula = 1e-9;  // [relative] the same sums in another order
+  EXPECT_NEAR(f.Fx, fx, kSameFormula * std::abs(fx));
+  EXPECT_NEAR(f.Fy, fy, kSameFormula * std::abs(fy));
   EXPECT_FALSE(f.Mz.has_value());
 }
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "support/csv_table.hpp"
+#include "support/contact_cases.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 #include "wheelwear/tangential/linear_theory.hpp"
 #include "wheelwear/tangential/sdec_coefficients.hpp"
@@ -52,6 +52,9 @@ std::vector<GeneratedRow> generated_rows() {
   return rows;
 }
 
+// The generated file's rows: 5 Poisson's ratios x the 19 ellipticities of Table 1.
+constexpr std::size_t kGeneratedRows = 95;
+
 const GeneratedRow* find(const std::vector<GeneratedRow>& rows, double nu, double a_over_b) {
   for (const auto& r : rows)
     if (std::abs(r.nu - nu) < 1e-9 && std::abs(r.a_over_b / a_over_b - 1) < 1e-9) return &r;
@@ -67,7 +70,7 @@ const GeneratedRow* find(const std::vector<GeneratedRow>& rows, double nu, doubl
 // b/a = 0.1, 0.0008 in B22 from the two codes' discretisations of the slender patch).
 TEST(SdecCoefficientsNu, GeneratedColumnAtQuarterReproducesTable1) {
   const auto rows = generated_rows();
-  ASSERT_EQ(rows.size(), 95u);
+  ASSERT_EQ(rows.size(), kGeneratedRows);
   int checked = 0;
   for (int k = 1; k <= 19; ++k) {
     const double g = k <= 10 ? k / 10.0 : 10.0 / (20 - k);
@@ -88,33 +91,38 @@ TEST(SdecCoefficientsNu, GeneratedColumnAtQuarterReproducesTable1) {
     }
   }
   EXPECT_EQ(checked, 15);
-  const testing::CsvTable contact(testing::test_data("contact/a_linear_fit_mx80.csv"));
-  ASSERT_EQ(contact.rows().size(), 10u);
-  for (const auto& row : contact.rows()) {
-    const double g = testing::ellipticity_from_label(row.text("g_label"));
+  constexpr double kContactK13 = 0.002;  // [relative], see above
+  constexpr double kContactB = 0.001;    // see above
+  std::size_t compared = 0;
+  for (const testing::contact::LinearFitCase& row : testing::contact::linear_fit_cases()) {
+    const double g = row.ellipticity;
     const GeneratedRow* r = find(rows, 0.25, g);
     ASSERT_NE(r, nullptr) << "a/b = " << g;
-    EXPECT_NEAR(r->k13 / row.number("K13_fit"), 1.0, 0.002) << "K13 at a/b = " << g;
-    EXPECT_NEAR(r->b11, row.number("B11_fit"), 0.001) << "B11 at a/b = " << g;
-    EXPECT_NEAR(r->b22, row.number("B22_fit"), 0.001) << "B22 at a/b = " << g;
-    EXPECT_NEAR(r->b23, row.number("B23_fit"), 0.001) << "B23 at a/b = " << g;
+    EXPECT_NEAR(r->k13 / row.k13, 1.0, kContactK13) << "K13 at a/b = " << g;
+    EXPECT_NEAR(r->b11, row.b11, kContactB) << "B11 at a/b = " << g;
+    EXPECT_NEAR(r->b22, row.b22, kContactB) << "B22 at a/b = " << g;
+    EXPECT_NEAR(r->b23, row.b23, kContactB) << "B23 at a/b = " << g;
+    ++compared;
   }
+  EXPECT_EQ(compared, testing::contact::kLinearFitCases);
 }
 
 // The compiled table is the file: at every tabulated nu and row, sdec_table_row is Table 1
 // carried by the file's change from 0.25 (K13 by ratio, B's by difference). The file has four
 // decimals, the compiled table the same digits: 1e-12.
 TEST(SdecCoefficientsNu, CompiledTableIsTheDataFile) {
+  constexpr double kSameDigits = 1e-12;  // see above
   const auto rows = generated_rows();
+  ASSERT_EQ(rows.size(), kGeneratedRows);
   for (const auto& r : rows) {
     const GeneratedRow* base = find(rows, 0.25, r.a_over_b);
     ASSERT_NE(base, nullptr);
     const SdecTableRow paper = sdec_table_row(r.a_over_b, 0.25);
     const SdecTableRow t = sdec_table_row(r.a_over_b, r.nu);
-    EXPECT_NEAR(t.k13, paper.k13 * r.k13 / base->k13, 1e-12) << r.nu << " " << r.a_over_b;
-    EXPECT_NEAR(t.b11, paper.b11 + r.b11 - base->b11, 1e-12) << r.nu << " " << r.a_over_b;
-    EXPECT_NEAR(t.b22, paper.b22 + r.b22 - base->b22, 1e-12) << r.nu << " " << r.a_over_b;
-    EXPECT_NEAR(t.b23, paper.b23 + r.b23 - base->b23, 1e-12) << r.nu << " " << r.a_over_b;
+    EXPECT_NEAR(t.k13, paper.k13 * r.k13 / base->k13, kSameDigits) << r.nu << " " << r.a_over_b;
+    EXPECT_NEAR(t.b11, paper.b11 + r.b11 - base->b11, kSameDigits) << r.nu << " " << r.a_over_b;
+    EXPECT_NEAR(t.b22, paper.b22 + r.b22 - base->b22, kSameDigits) << r.nu << " " << r.a_over_b;
+    EXPECT_NEAR(t.b23, paper.b23 + r.b23 - base->b23, kSameDigits) << r.nu << " " << r.a_over_b;
   }
 }
 
@@ -155,15 +163,16 @@ TEST_P(SdecLinearAgainstExact, LinearLimitForces) {
     // The exact theory on a 48 x 48 grid differs from Kalker's C11, C22, C23 by up to 1.5 %
     // (the grid's error, exact_linear_theory_test.cpp) and the SDEC terms carry the 1.5 % of
     // Table 1's fit: 2.5 % of the dominant component, and for the spin's Fx (K13 psi) 3 %.
+    constexpr double kDominant = 0.025, kSpinFx = 0.03;  // [relative]
     if (v.vx != 0) {
-      EXPECT_NEAR(linear.Fx / exact.forces.Fx, 1.0, 0.025) << "Fx from vx";
+      EXPECT_NEAR(linear.Fx / exact.forces.Fx, 1.0, kDominant) << "Fx from vx";
     }
     if (v.vy != 0) {
-      EXPECT_NEAR(linear.Fy / exact.forces.Fy, 1.0, 0.025) << "Fy from vy";
+      EXPECT_NEAR(linear.Fy / exact.forces.Fy, 1.0, kDominant) << "Fy from vy";
     }
     if (v.phi != 0) {
-      EXPECT_NEAR(linear.Fy / exact.forces.Fy, 1.0, 0.025) << "Fy from phi";
-      EXPECT_NEAR(linear.Fx / exact.forces.Fx, 1.0, 0.03) << "Fx from phi";
+      EXPECT_NEAR(linear.Fy / exact.forces.Fy, 1.0, kDominant) << "Fy from phi";
+      EXPECT_NEAR(linear.Fx / exact.forces.Fx, 1.0, kSpinFx) << "Fx from phi";
     }
     RecordProperty("scale", std::to_string(scale));
   }

@@ -5,28 +5,32 @@
 #include <algorithm>
 #include <cmath>
 
-#include "support/csv_table.hpp"
+#include "support/contact_cases.hpp"
 #include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::tangential {
 namespace {
 
 using contactgeom::Sdec;
-using testing::CsvTable;
-using testing::test_data;
+namespace contact = testing::contact;
+
+// The stored table has the paper's digits; equality to far below them is exact recall.
+constexpr double kTableExact = 1e-12;
 
 // The reference file carries the paper's Table 1 (K13, B11, B22, B23) as printed; the stored
 // table must reproduce it to the last digit.
 TEST(SdecCoefficients, MatchTable1TranscriptionAtEveryRow) {
-  const CsvTable fit(test_data("contact/a_linear_fit_mx80.csv"));
-  for (const auto& row : fit.rows()) {
-    const double g = testing::ellipticity_from_label(row.text("g_label"));
-    const SdecTableRow t = sdec_table_row(g, 0.25);
-    EXPECT_NEAR(t.k13, row.number("K13_paper"), 1e-12) << "a/b = " << g;
-    EXPECT_NEAR(t.b11, row.number("B11_paper"), 1e-12) << "a/b = " << g;
-    EXPECT_NEAR(t.b22, row.number("B22_paper"), 1e-12) << "a/b = " << g;
-    EXPECT_NEAR(t.b23, row.number("B23_paper"), 1e-12) << "a/b = " << g;
+  std::size_t compared = 0;
+  for (const contact::LinearFitCase& row : contact::linear_fit_cases()) {
+    const double g = row.ellipticity;
+    const SdecTableRow t = sdec_table_row(g, contact::kMaterial.nu);
+    EXPECT_NEAR(t.k13, row.paper_k13, kTableExact) << "a/b = " << g;
+    EXPECT_NEAR(t.b11, row.paper_b11, kTableExact) << "a/b = " << g;
+    EXPECT_NEAR(t.b22, row.paper_b22, kTableExact) << "a/b = " << g;
+    EXPECT_NEAR(t.b23, row.paper_b23, kTableExact) << "a/b = " << g;
+    ++compared;
   }
+  EXPECT_EQ(compared, contact::kLinearFitCases);
 }
 
 // Eq. 12 against CONTACT's exact-theory coefficients for 10 ellipticities x 9 shape numbers.
@@ -35,26 +39,29 @@ TEST(SdecCoefficients, MatchTable1TranscriptionAtEveryRow) {
 // 0.8 at g = 1, README) and CONTACT's grid error at b/a = 0.1 (0.6 % in C22s, 1.9 % in K13
 // at 80x80).
 TEST(SdecCoefficients, AgreeWithExactTheoryOverTheWholeGrid) {
-  const CsvTable coeffs(test_data("contact/a_linear_coeffs_mx80.csv"));
-  ASSERT_EQ(coeffs.rows().size(), 90u);
+  constexpr double kC11C22C23 = 0.018;  // [relative]
+  constexpr double kC13 = 0.025;        // [relative]
   double worst_c = 0.0, worst_c13 = 0.0;
-  for (const auto& row : coeffs.rows()) {
-    const Sdec patch{row.number("a_mm") * 1e-3, row.number("b_mm") * 1e-3, row.number("psi")};
-    const SdecCoefficients k = sdec_coefficients(patch, 0.25);
-    const double dc11 = std::abs(k.c11s / row.number("C11s") - 1);
-    const double dc22 = std::abs(k.c22s / row.number("C22s") - 1);
-    const double dc23 = std::abs(k.c23s / row.number("C23s") - 1);
-    EXPECT_LT(std::max({dc11, dc22, dc23}), 0.018)
-        << "a/b " << row.text("g_label") << " psi " << patch.psi;
+  std::size_t compared = 0;
+  for (const contact::LinearCoefficientCase& row : contact::linear_coefficient_cases()) {
+    const Sdec& patch = row.patch;
+    const SdecCoefficients k = sdec_coefficients(patch, row.material.nu);
+    const double dc11 = std::abs(k.c11s / row.c11s - 1);
+    const double dc22 = std::abs(k.c22s / row.c22s - 1);
+    const double dc23 = std::abs(k.c23s / row.c23s - 1);
+    EXPECT_LT(std::max({dc11, dc22, dc23}), kC11C22C23)
+        << "a/b " << row.g_label << " psi " << patch.psi;
     worst_c = std::max({worst_c, dc11, dc22, dc23});
     if (patch.psi != 0.0) {
-      const double dc13 = std::abs(k.c13s / row.number("C13s") - 1);
-      EXPECT_LT(dc13, 0.025) << "a/b " << row.text("g_label") << " psi " << patch.psi;
+      const double dc13 = std::abs(k.c13s / row.c13s - 1);
+      EXPECT_LT(dc13, kC13) << "a/b " << row.g_label << " psi " << patch.psi;
       worst_c13 = std::max(worst_c13, dc13);
     } else {
       EXPECT_EQ(k.c13s, 0.0);
     }
+    ++compared;
   }
+  EXPECT_EQ(compared, contact::kLinearCoefficientCases);
   RecordProperty("worst_C11s_C22s_C23s_rel", std::to_string(worst_c));
   RecordProperty("worst_C13s_rel", std::to_string(worst_c13));
 }

@@ -25,6 +25,8 @@ using contactgeom::Sdec;
 using stability::Case;
 using stability::Margins;
 constexpr double pi = std::numbers::pi;
+// The bound's node sums may exceed mu N by their quadrature error: 1 % at 30 x 30 cells.
+constexpr double kBoundQuadrature = 0.01;
 
 std::string describe(const Case& c) {
   char text[512];
@@ -143,7 +145,8 @@ TEST(StabilityDegenerate, ExtremelySlenderPatches) {
            {Creepages{1e-2, 0, 0}, Creepages{0, 1, 0}, Creepages{1e-3, -1e-3, 5.0}}) {
         const TangentialSolution s = fastsim(m, patch, v, load, {}, options);
         ASSERT_TRUE(all_finite(s)) << name << " g " << g;
-        EXPECT_LE(std::hypot(s.forces.Fx, s.forces.Fy), load.mu * load.N * 1.01) << name;
+        EXPECT_LE(std::hypot(s.forces.Fx, s.forces.Fy), load.mu * load.N * (1 + kBoundQuadrature))
+            << name;
       }
       if (m == FastsimMethod::sdec && options.scheme == FastsimScheme::kalker) {
         const Creepages tiny{1e-12, 0, 0};
@@ -170,8 +173,8 @@ TEST(StabilityDegenerate, VanishingLoadAndFriction) {
          {ContactLoad{1e-6, 0.3}, ContactLoad{1.0, 0.3}, ContactLoad{1e4, 1e-12}}) {
       const TangentialSolution s = fastsim(m, patch, v, load, {}, options);
       ASSERT_TRUE(all_finite(s)) << name;
-      // 1 %: the quadrature error of the bound's node sums at 30 x 30 cells.
-      EXPECT_LE(std::hypot(s.forces.Fx, s.forces.Fy), load.mu * load.N * 1.01) << name;
+      EXPECT_LE(std::hypot(s.forces.Fx, s.forces.Fy), load.mu * load.N * (1 + kBoundQuadrature))
+          << name;
       WearDistribution w = WearDistribution::zeros(-10e-3, 0.1e-3, 201);
       accumulate_wear(*s.fields, 20.0, law, {0.0, 0.46}, 1.0, w);
       EXPECT_TRUE(std::isfinite(w.area())) << name;

@@ -50,11 +50,11 @@ std::map<double, double> model_power(ContactModel model, const contactgeom::Whee
   std::optional<contactgeom::Sdec> hertz;
   if (p.hertz) hertz = contactgeom::Sdec{p.hertz->a, p.hertz->b, 0.0};
   const ModelPatch mp = model_patch(model, p.sdec, hertz);
-  FastsimOptions options;
-  options.nx = options.ny = 80;
-  options.cell_fields = true;
+  SolveOptions options;
+  options.fastsim.nx = options.fastsim.ny = 80;
+  options.fastsim.cell_fields = true;
   const TangentialSolution s =
-      fastsim(mp.method, mp.region, at_O, {p.normal_force, 0.35}, {80e9, 0.25}, options);
+      solve_patch(mp.method, mp.region, at_O, {p.normal_force, 0.35}, {80e9, 0.25}, options);
   std::map<double, double> power;
   const CellFields& f = *s.fields;
   for (int j = 0; j < f.ny; ++j) {

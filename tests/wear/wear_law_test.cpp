@@ -18,6 +18,8 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // A depth is a product and quotient of a few doubles: a handful of roundings of 1.1e-16 each.
 constexpr double kRoundingTolerance = 1e-14;
+// K on the catastrophic branch, 61.9 x - 4778.7 of order 1e3: the rounding of that product.
+constexpr double kBranchRounding = 1e-9;  // [ug/(m mm^2)]
 
 // A cell whose frictional work density |tau||s| is x N/mm^2 (x 1e6 N/m^2), at slip 0.1.
 CellState cell_with_work(double x_N_per_mm2) {
@@ -61,8 +63,8 @@ TEST(UsfdLaw, WearRateFollowsThePublishedBranches) {
   EXPECT_EQ(law.wear_rate(40.0), 55.0);
   EXPECT_EQ(law.wear_rate(std::nextafter(77.2, 0.0)), 55.0);
   // Above the crossing x* = (4778.7 + 55) / 61.9 = 78.09 the published line itself applies.
-  EXPECT_NEAR(law.wear_rate(100.0), 61.9 * 100.0 - 4778.7, 1e-9);  // 1411.3; 1e-9: K ~ 1e3
-  EXPECT_NEAR(law.wear_rate(200.0), 61.9 * 200.0 - 4778.7, 1e-9);  // 7601.3
+  EXPECT_NEAR(law.wear_rate(100.0), 61.9 * 100.0 - 4778.7, kBranchRounding);  // 1411.3
+  EXPECT_NEAR(law.wear_rate(200.0), 61.9 * 200.0 - 4778.7, kBranchRounding);  // 7601.3
 }
 
 // The published catastrophic branch is 61.9 x - 4778.7 = -0.02 at x = 77.2: without a fix K
@@ -77,15 +79,15 @@ TEST(UsfdLaw, FloorRemovesTheDropAt77p2) {
   EXPECT_EQ(law.wear_rate(78.0), 55.0);  // published line: 49.5
   const double crossing = (4778.7 + 55.0) / 61.9;
   EXPECT_NEAR(crossing, 78.0888, 1e-4);
-  EXPECT_NEAR(law.wear_rate(crossing), 55.0, 1e-9);  // 1e-9: rounding of a 61.9 * 78 product
-  EXPECT_NEAR(law.wear_rate(crossing + 1.0), 55.0 + 61.9, 1e-9);
+  EXPECT_NEAR(law.wear_rate(crossing), 55.0, kBranchRounding);
+  EXPECT_NEAR(law.wear_rate(crossing + 1.0), 55.0 + 61.9, kBranchRounding);
   // Continuous and non-decreasing from the severe regime on (10.4 ... 200 N/mm^2).
   double previous = law.wear_rate(10.4);
   for (double x = 10.4; x <= 200.0; x += 0.001) {
     const double k = law.wear_rate(x);
     EXPECT_GE(k, previous) << "x = " << x;
     // 61.9 * 0.001 plus rounding: the largest step the steepest branch can take.
-    EXPECT_LE(k - previous, 61.9 * 0.001 + 1e-9) << "x = " << x;
+    EXPECT_LE(k - previous, 61.9 * 0.001 + kBranchRounding) << "x = " << x;
     previous = k;
   }
 }
