@@ -11,9 +11,9 @@
 
 #include "commands.hpp"
 #include "contact_inputs.hpp"
+#include "json_writer.hpp"
 #include "wheelwear/contactgeom/wheel_rail.hpp"
 #include "wheelwear/core/input_error.hpp"
-#include "json_writer.hpp"
 #include "wheelwear/tangential/exact/wheel_rail_exact.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
 
@@ -34,13 +34,13 @@ struct ContactArgs {
 
 // Kalker's exact theory on `p`, from the wheel/rail undeformed distance (wheel_rail_exact.hpp).
 tangential::WheelRailExactSolution exact_patch(const contactgeom::WheelRailPair& pair,
-                                         const contactgeom::WheelRailPatch& p,
-                                         const ContactArgs& args) {
+                                               const contactgeom::WheelRailPatch& p,
+                                               const ContactArgs& args) {
   tangential::WheelRailExactOptions options;
   options.nx = options.ny = args.exact_grid;
   options.margin = args.exact_margin;
   return tangential::wheel_rail_exact(pair, args.in.pose, p, args.in.creepages_at(p), args.in.mu,
-                                options);
+                                      options);
 }
 
 void check_exact_options(const ContactArgs& args) {
@@ -78,7 +78,7 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
   if (args.creep) {
     const tangential::TangentialSolution s =
         tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, args.in.creepages_at(p),
-                      {p.normal_force, args.in.mu}, args.in.material());
+                            {p.normal_force, args.in.mu}, args.in.material());
     const tangential::Creepages c = args.in.creepages_at(p);
     o.add("vx", c.vx).add("vy", c.vy).add("phi", c.phi);
     o.add("Fx", s.forces.Fx).add("Fy", s.forces.Fy).add("Mz", s.forces.Mz.value_or(0.0));
@@ -141,9 +141,10 @@ void run_contact(const ContactArgs& args) {
           p.sdec.psi);
       if (args.creep) {
         const tangential::Creepages c = args.in.creepages_at(p);
-        const tangential::CreepForces f = tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, c,
-                                                  {p.normal_force, args.in.mu}, args.in.material())
-                                        .forces;
+        const tangential::CreepForces f =
+            tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, c,
+                                {p.normal_force, args.in.mu}, args.in.material())
+                .forces;
         std::printf("  creepages vx %.4g, vy %.4g, phi %.4g 1/m: Fx %.6g N, Fy %.6g N\n", c.vx,
                     c.vy, c.phi, f.Fx, f.Fy);
         if (args.tangential == "exact") {

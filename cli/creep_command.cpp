@@ -87,10 +87,9 @@ tangential::SolveOptions solve_options(const CreepArgs& args, tangential::Method
                                        std::optional<tangential::GridChoice>& chosen) {
   tangential::SolveOptions options;
   options.fastsim = args.options;
-  options.fastsim.bound = args.bound == "semi-elliptic" ? tangential::TractionBound::semi_elliptic
-                                                        : tangential::TractionBound::parabolic;
-  options.fastsim.scheme = args.scheme == "second-order" ? tangential::FastsimScheme::second_order
-                                                         : tangential::FastsimScheme::kalker;
+  // The option's check admits only the tables' names.
+  options.fastsim.bound = *core::value_named(tangential::kBoundNames, args.bound);
+  options.fastsim.scheme = *core::value_named(tangential::kSchemeNames, args.scheme);
   // The exact theory on 1.02 times the patch (CONTACT's SDEC option).
   options.exact_grid.nx = options.exact_grid.ny = args.exact_grid;
   if (args.target_error) {
@@ -223,9 +222,7 @@ void add_creep_command(CLI::App& app) {
                   "muN of the exact theory in about 1 us; a/b 0.2-5, |psi| <= 0.8, nu\n"
                   "0.25-0.28; an error outside its range) or best (the table inside its\n"
                   "range, fastsim-sdec outside; the JSON's \"source\" says which)")
-      ->check(
-          CLI::IsMember({"fastsim-sdec", "fastsim-eql", "fastsim-eqe", "fastsim-eqe-shifted",
-                         "fastsim-elliptic", "linear-sdec", "she-sdec", "table", "best", "exact"}));
+      ->check(CLI::IsMember(core::all_names(tangential::kMethodNames)));
   cmd->add_option("--a", args->sdec.a, "semi-length along x [m]")->required();
   cmd->add_option("--b", args->sdec.b, "semi-width along y [m]")->required();
   cmd->add_option("--psi", args->sdec.psi, "shape number, |psi| < 1 [-]")->capture_default_str();
@@ -253,12 +250,12 @@ void add_creep_command(CLI::App& app) {
   args->ny = ny;
   args->bound_option =
       cmd->add_option("--bound", args->bound, "traction bound: parabolic (Eq. 18) or semi-elliptic")
-          ->check(CLI::IsMember({"parabolic", "semi-elliptic"}))
+          ->check(CLI::IsMember(core::all_names(tangential::kBoundNames)))
           ->capture_default_str();
   args->scheme_option =
       cmd->add_option("--scheme", args->scheme,
                       "FASTSIM marching: kalker (first order, Kalker 1982) or second-order")
-          ->check(CLI::IsMember({"kalker", "second-order"}))
+          ->check(CLI::IsMember(core::all_names(tangential::kSchemeNames)))
           ->capture_default_str();
   args->exact_grid_option =
       cmd->add_option("--exact-grid", args->exact_grid,

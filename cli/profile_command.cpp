@@ -12,8 +12,8 @@
 #include <string>
 
 #include "commands.hpp"
-#include "wheelwear/core/input_error.hpp"
 #include "json_writer.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/columns_format.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"

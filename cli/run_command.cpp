@@ -11,11 +11,11 @@
 #include <string>
 
 #include "commands.hpp"
-#include "wheelwear/core/input_error.hpp"
 #include "json_writer.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/pipeline/wear_run.hpp"
-#include "wheelwear/core/text.hpp"
 
 namespace wheelwear::cli {
 

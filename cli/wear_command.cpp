@@ -13,8 +13,8 @@
 
 #include "commands.hpp"
 #include "contact_inputs.hpp"
-#include "wheelwear/core/input_error.hpp"
 #include "json_writer.hpp"
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/tangential/contact_model.hpp"
 #include "wheelwear/wear/wear_distribution.hpp"
 
@@ -51,14 +51,15 @@ ModelWear wear_of(const WearArgs& args, const contactgeom::WheelRailPatch& p,
   std::optional<contactgeom::Sdec> hertz;
   if (p.hertz) hertz = contactgeom::Sdec{p.hertz->a, p.hertz->b, 0.0};
   const tangential::ModelPatch mp = tangential::model_patch(model, p.sdec, hertz);
-  tangential::FastsimOptions options;
-  options.nx = options.ny = args.cells;
-  options.cell_fields = true;
+  tangential::SolveOptions options;
+  options.fastsim.nx = options.fastsim.ny = args.cells;
+  options.fastsim.cell_fields = true;
   // The Tgamma map needs the cells' positions; the wear alone needs work, slip and pressure.
-  options.field_set = args.map.empty() ? tangential::CellFieldSet::wear : tangential::CellFieldSet::all;
+  options.fastsim.field_set =
+      args.map.empty() ? tangential::CellFieldSet::wear : tangential::CellFieldSet::all;
   ModelWear out{model,
-                tangential::fastsim(mp.method, mp.region, args.in.creepages_at(p),
-                              {p.normal_force, args.in.mu}, args.in.material(), options),
+                tangential::solve_patch(mp.method, mp.region, args.in.creepages_at(p),
+                                        {p.normal_force, args.in.mu}, args.in.material(), options),
                 {},
                 {}};
   // A grid on the wheel wide enough for every model's region around O, 0.1 mm bins.
@@ -140,8 +141,8 @@ void run_wear(const WearArgs& args) {
   if (!law) throw InputError("--law " + args.law + ": unknown wear law; use usfd or archard");
   const auto chosen = tangential::parse_contact_model(args.model);
   if (!chosen) {
-    throw InputError("--model " + args.model +
-                     ": unknown contact model; use sdec, eql, eqe, eqe-shifted or hertz");
+    throw InputError("--model " + args.model + ": unknown contact model; use " +
+                     core::list_names(tangential::kContactModelNames));
   }
   const SolvedContact solved = solve_contact(args.in);
   const auto& contact = solved.contact;
@@ -230,7 +231,8 @@ void add_wear_command(CLI::App& app) {
   cmd->add_option("--law-table", args->law_table,
                   "your own table for the law (CSV, the format of data/wear/usfd.csv for usfd,\n"
                   "data/wear/archard.csv for archard)");
-  cmd->add_option("--model", args->model, "contact model: sdec, eql, eqe, eqe-shifted, hertz")
+  cmd->add_option("--model", args->model,
+                  "contact model: " + core::list_names(tangential::kContactModelNames))
       ->capture_default_str();
   cmd->add_flag("--compare", args->compare, "all five contact models side by side");
   cmd->add_option("--cells", args->cells, "FASTSIM cells per direction")->capture_default_str();

@@ -6,6 +6,7 @@
 
 #include "wheel_rail_gap.hpp"
 #include "wheel_rail_solve.hpp"
+#include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
@@ -47,22 +48,21 @@ void WheelRailOptions::validate() const {
   kp.validate();
 }
 
+namespace {
+// As the command line, the messages and docs/results.md name them.
+constexpr core::NameTable<WheelRailStatus, 6> kStatusNames = {{
+    {WheelRailStatus::ok, "ok"},
+    {WheelRailStatus::no_contact, "no contact"},
+    {WheelRailStatus::flange_climb, "flange climb"},
+    {WheelRailStatus::not_converged, "not converged"},
+    {WheelRailStatus::load_jump, "load jump"},
+    {WheelRailStatus::profile_end, "profile end"},
+}};
+}  // namespace
+
+// The table's names are string literals: data() is null-terminated.
 const char* status_name(WheelRailStatus status) {
-  switch (status) {
-    case WheelRailStatus::ok:
-      return "ok";
-    case WheelRailStatus::no_contact:
-      return "no contact";
-    case WheelRailStatus::flange_climb:
-      return "flange climb";
-    case WheelRailStatus::not_converged:
-      return "not converged";
-    case WheelRailStatus::load_jump:
-      return "load jump";
-    case WheelRailStatus::profile_end:
-      return "profile end";
-  }
-  return "unknown";
+  return core::name_of(kStatusNames, status).data();
 }
 
 namespace detail {

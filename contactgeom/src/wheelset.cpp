@@ -8,6 +8,7 @@
 #include "bracketed_root.hpp"
 #include "wheel_rail_gap.hpp"
 #include "wheel_rail_solve.hpp"
+#include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
@@ -222,20 +223,19 @@ void validate_state(const WheelsetOnTrack& track, const WheelsetState& s) {
 
 }  // namespace
 
+namespace {
+constexpr core::NameTable<LateralFit, 5> kFitNames = {{
+    {LateralFit::not_prescribed, "not prescribed"},
+    {LateralFit::matched, "matched"},
+    {LateralFit::kept_position, "kept position"},
+    {LateralFit::flange_unloaded, "flange unloaded"},
+    {LateralFit::not_matched, "not matched"},
+}};
+}  // namespace
+
+// The table's names are string literals: data() is null-terminated.
 const char* lateral_fit_name(LateralFit fit) {
-  switch (fit) {
-    case LateralFit::not_prescribed:
-      return "not prescribed";
-    case LateralFit::matched:
-      return "matched";
-    case LateralFit::kept_position:
-      return "kept position";
-    case LateralFit::flange_unloaded:
-      return "flange unloaded";
-    case LateralFit::not_matched:
-      return "not matched";
-  }
-  return "unknown";
+  return core::name_of(kFitNames, fit).data();
 }
 
 WheelRailLateral solve_wheel_rail_lateral(const WheelRailPair& pair, const WheelsetPose& pose,

@@ -192,8 +192,8 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                const auto model = tangential::parse_contact_model(name);
                if (!model) {
                  throw InputError(where(n.source(), k) + " = \"" + name +
-                                  "\": unknown contact model; use sdec, eql, eqe, eqe-shifted or "
-                                  "hertz");
+                                  "\": unknown contact model; use " +
+                                  core::list_names(tangential::kContactModelNames));
                }
                s.model = *model;
                model_given = true;
@@ -213,14 +213,13 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
             {"scheme",
              [&](const auto& n, const auto& k) {
                const std::string name = text(n, k);
-               if (name == "kalker") {
-                 s.scheme = tangential::FastsimScheme::kalker;
-               } else if (name == "second-order") {
-                 s.scheme = tangential::FastsimScheme::second_order;
-               } else {
+               const auto scheme = core::value_named(tangential::kSchemeNames, name);
+               if (!scheme) {
                  throw InputError(where(n.source(), k) + " = \"" + name +
-                                  "\": unknown FASTSIM scheme; use kalker or second-order");
+                                  "\": unknown FASTSIM scheme; use " +
+                                  core::list_names(tangential::kSchemeNames));
                }
+               s.scheme = *scheme;
              }},
             {"tangential_method",
              [&](const auto& n, const auto& k) {

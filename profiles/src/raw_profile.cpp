@@ -1,12 +1,19 @@
 #include "wheelwear/profiles/raw_profile.hpp"
 
+#include "wheelwear/core/enum_names.hpp"
+
 namespace wheelwear::profiles {
 
+namespace {
+constexpr core::NameTable<LengthUnit, 3> kUnitNames = {{
+    {LengthUnit::automatic, "auto"},
+    {LengthUnit::millimetre, "mm"},
+    {LengthUnit::metre, "m"},
+}};
+}  // namespace
+
 std::optional<LengthUnit> parse_length_unit(std::string_view text) {
-  if (text == "auto") return LengthUnit::automatic;
-  if (text == "mm") return LengthUnit::millimetre;
-  if (text == "m") return LengthUnit::metre;
-  return std::nullopt;
+  return core::value_named(kUnitNames, text);
 }
 
 std::string RawProfile::where(std::size_t i) const {

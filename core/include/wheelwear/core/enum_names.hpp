@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace wheelwear::core {
 
@@ -29,6 +30,14 @@ constexpr std::optional<Enum> value_named(const NameTable<Enum, N>& table, std::
   for (const auto& [v, text] : table)
     if (text == name) return v;
   return std::nullopt;
+}
+
+/// Every name, in the table's order (for a command line's list of choices).
+template <class Enum, std::size_t N>
+std::vector<std::string> all_names(const NameTable<Enum, N>& table) {
+  std::vector<std::string> out;
+  for (const auto& [v, name] : table) out.emplace_back(name);
+  return out;
 }
 
 /// "a, b, c": the names for a message that lists the choices.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::tangential {
@@ -41,16 +42,17 @@ void ExactSolverOptions::validate() const {
   require(max_iterations >= 1, "max_iterations", max_iterations, "must be at least 1");
 }
 
+namespace {
+constexpr core::NameTable<ExactStatus, 3> kStatusNames = {{
+    {ExactStatus::converged, "converged"},
+    {ExactStatus::not_converged, "not converged"},
+    {ExactStatus::no_contact, "no contact"},
+}};
+}  // namespace
+
+// The table's names are string literals: data() is null-terminated.
 const char* status_name(ExactStatus status) {
-  switch (status) {
-    case ExactStatus::converged:
-      return "converged";
-    case ExactStatus::not_converged:
-      return "not converged";
-    case ExactStatus::no_contact:
-      return "no contact";
-  }
-  return "unknown";
+  return core::name_of(kStatusNames, status).data();
 }
 
 }  // namespace wheelwear::tangential

@@ -6,7 +6,9 @@
 #include <string_view>
 
 #include "wheelwear/contactgeom/sdec.hpp"
+#include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
+#include "wheelwear/tangential/tangential.hpp"
 
 namespace wheelwear::tangential {
 
@@ -23,15 +25,24 @@ inline constexpr std::array<ContactModel, 5> kContactModels = {
     ContactModel::sdec, ContactModel::eql, ContactModel::eqe, ContactModel::eqe_shifted,
     ContactModel::hertz};
 
-/// "sdec", "eql", "eqe", "eqe-shifted", "hertz".
+/// The models' names in scenes, on the command line and in files.
+inline constexpr core::NameTable<ContactModel, 5> kContactModelNames = {{
+    {ContactModel::sdec, "sdec"},
+    {ContactModel::eql, "eql"},
+    {ContactModel::eqe, "eqe"},
+    {ContactModel::eqe_shifted, "eqe-shifted"},
+    {ContactModel::hertz, "hertz"},
+}};
+
+/// "sdec", "eql", "eqe", "eqe-shifted", "hertz" (kContactModelNames).
 std::string_view model_name(ContactModel model);
 /// The model named `name`, std::nullopt when unknown.
 std::optional<ContactModel> parse_contact_model(std::string_view name);
 
-/// The region and FASTSIM variant a model solves on, given the patch's SDEC and its Hertz
-/// ellipse (semi-axes a along x, b along y; needed by ContactModel::hertz only).
+/// The region and the FASTSIM method (solve_patch) a model solves on, given the patch's SDEC
+/// and its Hertz ellipse (semi-axes a along x, b along y; needed by ContactModel::hertz only).
 struct ModelPatch {
-  FastsimMethod method = FastsimMethod::sdec;
+  Method method = Method::fastsim_sdec;
   contactgeom::Sdec region;
 };
 ModelPatch model_patch(ContactModel model, const contactgeom::Sdec& sdec,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "wheelwear/contactgeom/sdec.hpp"
+#include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/tangential/creep_types.hpp"
 #include "wheelwear/tangential/solution.hpp"
 
@@ -37,6 +38,16 @@ enum class FastsimScheme {
   /// inside the cell, and the traction direction in slip advanced by a midpoint rule.
   second_order,
 };
+
+/// The names of the bounds and the schemes on the command line and in scenes.
+inline constexpr core::NameTable<TractionBound, 2> kBoundNames = {{
+    {TractionBound::parabolic, "parabolic"},
+    {TractionBound::semi_elliptic, "semi-elliptic"},
+}};
+inline constexpr core::NameTable<FastsimScheme, 2> kSchemeNames = {{
+    {FastsimScheme::kalker, "kalker"},
+    {FastsimScheme::second_order, "second-order"},
+}};
 
 /// Which per-cell fields a solve with FastsimOptions::cell_fields fills.
 enum class CellFieldSet {
