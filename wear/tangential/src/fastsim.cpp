@@ -76,7 +76,9 @@ void FastsimOptions::validate() const {
           "the grid must have at most 1e8 cells");
 }
 
-std::string_view method_name(FastsimMethod method) { return core::name_of(kNames, method); }
+std::string_view method_name(FastsimMethod method) {
+  return core::name_of(kNames, method);
+}
 
 std::optional<FastsimMethod> parse_fastsim_method(std::string_view name) {
   return core::value_named(kNames, name);
