@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "support/csv_table.hpp"
+#include "support/contact_cases.hpp"
 #include "support/reference_profiles.hpp"
 #include "wheelwear/contactgeom/kinematics.hpp"
 #include "wheelwear/core/input_error.hpp"
@@ -20,8 +20,7 @@ namespace wheelwear::contactgeom {
 namespace {
 
 using testing::benchmark_pair;
-using testing::CsvTable;
-using testing::test_data;
+namespace contact = testing::contact;
 
 struct Bounds {
   double area_rel, angle, position_mm, psi;
@@ -41,28 +40,29 @@ Bounds bounds_for(double y_ws) {
 }
 
 TEST(WheelRailVersusContact, PatchesMatchExactTheoryWithinTheMethodsAccuracy) {
-  const CsvTable reference(test_data("contact/d_wheelrail_patches_dx0.2.csv"));
-  ASSERT_EQ(reference.rows().size(), 10u);
-  for (const auto& row : reference.rows()) {
-    const double y_ws = row.number("y_ws_mm");
+  std::size_t compared = 0;
+  for (const contact::WheelRailCase& row : contact::wheel_rail_cases()) {
+    const double y_ws = row.y_ws_mm;
     WheelsetPose pose;
-    pose.dy = -y_ws * 1e-3;  // CONTACT's negative y_ws moves the left wheel towards its flange
+    pose.dy = -row.y_ws;  // CONTACT's negative y_ws moves the left wheel towards its flange
     const WheelRailContact c = solve_wheel_rail(benchmark_pair(), pose, 55e3);
     ASSERT_EQ(c.status, WheelRailStatus::ok) << "y_ws " << y_ws << ": " << c.message;
     ASSERT_EQ(c.patches.size(), 1u) << "y_ws " << y_ws;
     EXPECT_NEAR(c.vertical_force, 55e3, 1e-3);
     const WheelRailPatch& p = c.patches[0];
     const Bounds b = bounds_for(y_ws);
-    const double angle_ref = row.number("delta_cp_rad");
+    const double angle_ref = row.delta_cp;
     // O on the rail: CONTACT's reference point plus s_icp along its contact plane.
-    const double o_ref = row.number("ycp_r_mm") + row.number("s_icp_mm") * std::cos(angle_ref);
-    EXPECT_NEAR(p.measures.area * 1e6 / row.number("area_mm2"), 1.0, b.area_rel) << "y_ws " << y_ws;
+    const double o_ref = row.ycp_r + row.s_icp * std::cos(angle_ref);
+    EXPECT_NEAR(p.measures.area / row.area, 1.0, b.area_rel) << "y_ws " << y_ws;
     EXPECT_NEAR(p.contact_angle, angle_ref, b.angle) << "y_ws " << y_ws;
-    EXPECT_NEAR(p.y_rail * 1e3, o_ref, b.position_mm) << "y_ws " << y_ws;
-    EXPECT_NEAR(p.sdec.psi, row.number("psi_equiv"), b.psi) << "y_ws " << y_ws;
+    EXPECT_NEAR(p.y_rail * 1e3, o_ref * 1e3, b.position_mm) << "y_ws " << y_ws;
+    EXPECT_NEAR(p.sdec.psi, row.psi_equiv, b.psi) << "y_ws " << y_ws;
     EXPECT_GT(p.sdec.a, 0.0);
     EXPECT_GT(p.sdec.b, 0.0);
+    ++compared;
   }
+  EXPECT_EQ(compared, contact::kWheelRailCases);
 }
 
 // Sweeping the lateral position from -10 to +8 mm (flange side positive) in 0.1 mm steps: the
@@ -124,27 +124,26 @@ TEST(WheelRailSweep, IsContinuousAndFindsTwoPointContact) {
 // as body 1, so its creepages are ours with the opposite sign. Its values carry 4 digits:
 // 2e-3 relative.
 TEST(Kinematics, CreepagesMatchContactsForTheSameMotion) {
-  const CsvTable reference(test_data("contact/d_wheelrail_patches_dx0.2.csv"));
-  for (const auto& row : reference.rows()) {
+  std::size_t compared = 0;
+  for (const contact::WheelRailCase& row : contact::wheel_rail_cases()) {
     WheelsetMotion motion;
     motion.speed = 2.0;
     motion.lateral_velocity = 2e-3;
     motion.angular_velocity = 2.0 / 0.46 * (1 + 1e-3);
-    const double veloc = row.number("veloc_mm_s") * 1e-3;
     WheelRailPatch patch;
-    patch.contact_angle = row.number("delta_cp_rad");
-    patch.rolling_radius = (2 * veloc - motion.speed) / motion.angular_velocity;
+    patch.contact_angle = row.delta_cp;
+    patch.rolling_radius = (2 * row.speed - motion.speed) / motion.angular_velocity;
     const Creepages c = kinematic_creepages(patch, {}, motion, 0.46);
-    const double y_ws = row.number("y_ws_mm");
+    const int y_ws = row.y_ws_mm;
     // vx hangs on the rolling radius, which veloc (4 digits) fixes only to 1e-3 of V: not
     // compared here; FreeRollingOnTheNominalRadius checks it.
-    EXPECT_NEAR(c.vy, -row.number("ceta"), 2e-3 * std::abs(row.number("ceta"))) << y_ws;
+    EXPECT_NEAR(c.vy, -row.creepages.vy, 2e-3 * std::abs(row.creepages.vy)) << y_ws;
     // Spin agrees to 0.5 %, more than the printed digits explain (0.1 %): CONTACT's spin
     // also carries small terms of its full kinematics that ours leaves out.
-    EXPECT_NEAR(c.phi, -row.number("cphi_per_mm") * 1e3,
-                5e-3 * std::abs(row.number("cphi_per_mm") * 1e3))
-        << y_ws;
+    EXPECT_NEAR(c.phi, -row.creepages.phi, 5e-3 * std::abs(row.creepages.phi)) << y_ws;
+    ++compared;
   }
+  EXPECT_EQ(compared, contact::kWheelRailCases);
 }
 
 // Free rolling on the nominal radius, straight ahead: no creepage but the spin of the cone.
