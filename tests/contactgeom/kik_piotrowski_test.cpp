@@ -1,6 +1,6 @@
 // Kik-Piotrowski normal problem on strips: the Hertz limit (a gap that is exactly quadratic),
-// KP's own closed form for that gap, convergence as the strips shrink, several contact regions,
-// no-contact and bad input.
+// KP's own closed form for that gap, convergence as the strips shrink, flat and shifted gaps,
+// no-contact and bad input (several contact regions: kik_piotrowski_regions_test.cpp).
 
 #include "wheelwear/contactgeom/kik_piotrowski.hpp"
 
@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "kp_test_support.hpp"
 #include "wheelwear/contactgeom/hertz.hpp"
 #include "wheelwear/contactgeom/patch_measures.hpp"
 #include "wheelwear/contactgeom/sdec_regularisation.hpp"
@@ -26,37 +27,13 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 const double kEstar = combined_modulus(200e9, 0.25);
-constexpr double kLoad = 55e3;             // N, the reference data's wheel load
-constexpr double kA = 1.0 / (2.0 * 0.46);  // 1/m: a 460 mm wheel on a straight rail
-
-double rel(double a, double b) {
-  return std::abs(a / b - 1.0);
-}
-
-// Four significant digits, for RecordProperty and test names.
-std::string format_number(double v) {
-  std::ostringstream out;
-  out << std::setprecision(4) << v;
-  return out.str();
-}
-
-// Strips sampled from h(s) with a constant longitudinal coefficient; owns its storage.
-struct Strips {
-  std::vector<double> h, ax;
-  GapStrips gap;
-  Strips(std::function<double(double)> h_of_s, double s_lo, double s_hi, double ds, double a = kA,
-         double offset = 0.0) {
-    const int n = static_cast<int>(std::lround((s_hi - s_lo) / ds));
-    gap.s_first = s_lo + (0.5 + offset) * ds;
-    gap.ds = ds;
-    for (int j = 0; j < n; ++j) {
-      h.push_back(h_of_s(gap.s_first + j * ds));
-      ax.push_back(a);
-    }
-    gap.h = h;
-    gap.ax = ax;
-  }
-};
+using kp_test::double_well;
+using kp_test::format_number;
+using kp_test::kA;
+using kp_test::kLoad;
+using kp_test::rel;
+using kp_test::Strips;
+using kp_test::with_epsilon;
 
 // KP's own solution for the quadratic gap h = A x^2 + B s^2 (derived from the formulas in
 // kik_piotrowski.hpp): the virtual patch is the ellipse a' = sqrt(eps delta/A),
@@ -77,12 +54,6 @@ KpEllipse kp_closed_form(double A, double B, double eps, double N) {
   e.b = std::sqrt(eps * delta / B);
   e.p0 = 3.0 * N / (2.0 * kPi * e.a * e.b);
   return e;
-}
-
-KpOptions with_epsilon(double eps) {
-  KpOptions o;
-  o.epsilon = eps;
-  return o;
 }
 
 TEST(KikPiotrowski, HalfEpsilonOnACircularGapIsHertz) {
@@ -251,94 +222,6 @@ TEST(KikPiotrowski, GapDatumAndUnitsDoNotMatter) {
 
 // A double well: tread-like minimum at s = -6 mm (h = 0) and flange-like minimum at s = +9 mm
 // (h = h2), separated by a hump.
-double double_well(double s, double h2) {
-  const double left = 40.0 * (s + 6e-3) * (s + 6e-3);
-  const double right = h2 + 400.0 * (s - 9e-3) * (s - 9e-3);
-  return std::min(left, right);
-}
-
-TEST(KikPiotrowski, TwoSeparatedMinimaGiveTwoPatchesAtOneApproach) {
-  const double h2 = 5e-6;
-  const Strips s([h2](double y) { return double_well(y, h2); }, -20e-3, 20e-3, 1e-4);
-  const KpResult r = solve_kp_load(s.gap, kEstar, kLoad);
-  ASSERT_EQ(r.status, KpStatus::converged) << r.message;
-  ASSERT_EQ(r.patches.size(), 2u);
-  double sum = 0.0;
-  for (const KpPatch& p : r.patches) {
-    // Each patch's local approach is the common approach less its own gap minimum.
-    EXPECT_NEAR(p.approach + p.h_O, r.approach, 1e-15);
-    sum += p.normal_force;
-  }
-  EXPECT_LT(rel(sum, r.normal_force), 1e-14);
-  EXPECT_LT(rel(r.normal_force, kLoad), 2e-10);
-  EXPECT_NEAR(r.patches[0].s_O, -6e-3, 1e-12);
-  EXPECT_NEAR(r.patches[1].s_O, 9e-3, 1e-12);
-  EXPECT_NEAR(r.patches[1].h_O, h2, 1e-15);
-  // Each patch carries the load KP gives its region alone at that approach.
-  for (int side = 0; side < 2; ++side) {
-    const Strips alone(
-        [h2, side](double y) {
-          const bool left_region = y < 4e-3;  // the hump between the wells
-          return (left_region == (side == 0)) ? double_well(y, h2)
-                                              : std::numeric_limits<double>::infinity();
-        },
-        -20e-3, 20e-3, 1e-4);
-    const KpResult single = solve_kp_approach(alone.gap, kEstar, r.approach);
-    ASSERT_EQ(single.patches.size(), 1u);
-    EXPECT_LT(rel(single.normal_force, r.patches[side].normal_force), 1e-13);
-  }
-  // The stiffer, sharper flange-like well takes the larger share even though it starts later.
-  EXPECT_GT(r.patches[1].pmax, r.patches[0].pmax);
-}
-
-TEST(KikPiotrowski, SecondPatchAppearsContinuouslyWithLoad) {
-  // As the load grows, the second region enters with zero load: N_2 is continuous in N.
-  const double h2 = 3e-5;
-  const Strips s([h2](double y) { return double_well(y, h2); }, -20e-3, 20e-3, 1e-4);
-  double previous_n2 = 0.0;
-  int previous_count = 1;
-  ASSERT_EQ(solve_kp_load(s.gap, kEstar, 2e3).patches.size(), 1u);
-  for (double N = 2e3; N <= 120e3; N += 1e3) {
-    const KpResult r = solve_kp_load(s.gap, kEstar, N);
-    ASSERT_EQ(r.status, KpStatus::converged) << N;
-    const double n2 = r.patches.size() == 2 ? r.patches[1].normal_force : 0.0;
-    EXPECT_LT(n2 - previous_n2, 2.5e3) << N;  // no jump: at most 2.5 x the load step
-    EXPECT_GE(n2, previous_n2) << N;
-    EXPECT_GE(static_cast<int>(r.patches.size()), previous_count);
-    previous_n2 = n2;
-    previous_count = static_cast<int>(r.patches.size());
-  }
-  EXPECT_EQ(previous_count, 2);
-}
-
-TEST(KikPiotrowski, RegionsMergeWhenTheRigidApproachClearsTheRiseBetweenThem) {
-  // Two wells 4 mm apart with a rise of 0.371 mm between them: below that approach they are
-  // two regions (two patches, each with its own O), above it one run with O at the deeper
-  // minimum. There N(delta) drops (the shallower lobe loses its own contact point), so a load
-  // in that window has two solutions; the load solve must still converge to one of them.
-  auto gap = [](double y) {
-    return std::min(40.0 * (y + 2e-3) * (y + 2e-3), 1e-5 + 400.0 * (y - 2e-3) * (y - 2e-3));
-  };
-  const Strips s(gap, -20e-3, 20e-3, 1e-4);
-  double rise = 0.0;
-  for (std::size_t j = 0; j < s.h.size(); ++j) {
-    const double y = s.gap.s(j);
-    if (y > -2e-3 && y < 2e-3) rise = std::max(rise, s.h[j]);
-  }
-  const KpResult below = solve_kp_approach(s.gap, kEstar, 0.99 * rise);
-  const KpResult above = solve_kp_approach(s.gap, kEstar, 1.01 * rise);
-  ASSERT_EQ(below.patches.size(), 2u);
-  ASSERT_EQ(above.patches.size(), 1u);
-  EXPECT_NEAR(above.patches[0].s_O, -2e-3, 1e-12);
-  EXPECT_LT(above.normal_force, below.normal_force);
-  RecordProperty("merge_drop", format_number(above.normal_force / below.normal_force - 1.0));
-  for (double N = 0.5 * above.normal_force; N < 1.5 * below.normal_force; N *= 1.1) {
-    const KpResult r = solve_kp_load(s.gap, kEstar, N);
-    EXPECT_EQ(r.status, KpStatus::converged) << N << " " << r.message;
-    EXPECT_LT(rel(r.normal_force, N), 2e-10) << N;
-  }
-}
-
 TEST(KikPiotrowski, FlatGapHasNoNaNAndPutsOInTheMiddle) {
   // h = 0 over 6 mm, rising quadratically outside: O is undefined inside the flat part; the
   // solver takes the middle of the tie, and everything stays finite.
