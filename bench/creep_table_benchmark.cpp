@@ -71,10 +71,6 @@ double minimum(const std::vector<double>& v) {
 // the time per call.
 void BM_CreepTable(benchmark::State& state) {
   const std::vector<TableInput> inputs = table_inputs();
-  if (inputs.empty()) {
-    state.SkipWithError("the library was built without the creep table");
-    return;
-  }
   for (const TableInput& in : inputs) {
     if (!tangential::creep_table_covers(in.patch, in.creepages, in.load, kSteel)) {
       state.SkipWithError("an input is outside the creep table's range");

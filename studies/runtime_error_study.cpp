@@ -57,7 +57,7 @@
 //   an extrapolation needs is not known. The 120 x 120 answer has its own grid error, so
 //   err_converged understates the error of the finer grids (most at n = 80).
 //
-//   The table is the one compiled into the library, generated with the exact solver on the
+//   The table is the one the library loads at run time, generated with the exact solver on the
 //   grid creep_table_range().grid (printed on stderr, with its range); the reference cases'
 //   nu = 0.25 is the table's lowest tabulated nu, so its nu = 0.25 block is used alone,
 //   without interpolation or extrapolation in nu. Its err_contact therefore holds the table's

@@ -20,8 +20,13 @@ namespace {
 // Profile coordinates [m]: 1e-12 m, a thousandth of a nanometre, far below any wear depth.
 constexpr double kGoldenLengthTolerance = 1e-12;
 // Everything else, relative to the largest magnitude in the same array (so entries near zero
-// are judged on the array's scale): 1e-9.
+// are judged on the array's scale): 1e-9. Measured between a native and a portable build of
+// the same commit: at most 2.6e-10 (states/roll), profile coordinates 3.6e-13 m.
 constexpr double kGoldenRelativeTolerance = 1e-9;
+// The unsmoothed wear rate per 0.1 mm bin, relative to its peak: 1e-8. A bin at a patch's edge
+// takes cells whose centres move across the bin border with the last digits of the patch's
+// width; measured 2.7e-9 between a native and a portable build.
+constexpr double kGoldenWearRateTolerance = 1e-8;
 
 bool is_profile_length(const std::string& name) {
   for (const char* suffix : {"/y", "/z", "/wear_rate/s"})
@@ -61,8 +66,10 @@ TEST_F(WearRunTest, SmallSceneMatchesGoldenResults) {
       double scale = 0.0;
       for (double v : expected)
         if (std::isfinite(v)) scale = std::max(scale, std::abs(v));
-      const double tolerance =
-          is_profile_length(name) ? kGoldenLengthTolerance : kGoldenRelativeTolerance * scale;
+      const bool wear_rate = name.find("/wear_rate/depth") != std::string::npos;
+      const double tolerance = is_profile_length(name) ? kGoldenLengthTolerance
+                               : wear_rate             ? kGoldenWearRateTolerance * scale
+                                                       : kGoldenRelativeTolerance * scale;
       for (std::size_t i = 0; i < expected.size(); ++i) {
         if (std::isnan(expected[i])) {
           EXPECT_TRUE(std::isnan(actual[i])) << "step " << step << ' ' << name << '[' << i << ']';

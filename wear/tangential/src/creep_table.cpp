@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <vector>
 
 #include "creep_table_data.hpp"
 #include "wheelwear/core/input_error.hpp"
@@ -14,6 +15,7 @@ namespace wheelwear::tangential {
 namespace {
 
 using detail::CreepTableBlock;
+using detail::CreepTableData;
 
 constexpr double kSlack = 1e-12;  // relative slack on the range's ends (rounding of inputs)
 
@@ -46,7 +48,7 @@ struct Normalisation {
 };
 
 Normalisation normalisation(const CreepTableBlock& b, double g) {
-  const Stencil s = stencil(b.log_a_over_b, b.n_g, std::log(g));
+  const Stencil s = stencil(b.log_a_over_b.data(), b.n_g, std::log(g));
   Normalisation n{0.0, 0.0, 0.0};
   for (int i = 0; i < s.count; ++i) {
     n.c11 += s.w[i] * b.c11[s.start + i];
@@ -92,17 +94,16 @@ std::string range_text(double lo, double hi) {
 const std::string kFallback = "; use FASTSIM-SDEC (--method fastsim-sdec or best) there";
 
 // Empty message when covered, else the reason.
-std::string check(const contactgeom::Sdec& sdec, const Creepages& v, const ContactLoad& load,
-                  const Material& material, NuBlocks* out) {
+std::string check(const CreepTableData& table, const contactgeom::Sdec& sdec, const Creepages& v,
+                  const ContactLoad& load, const Material& material, NuBlocks* out) {
   sdec.validate();
   load.validate();
   material.validate();
   require_finite("vx", v.vx);
   require_finite("vy", v.vy);
   require_finite("phi", v.phi);
-  const int count = detail::kCreepTableBlockCount;
-  if (count == 0) return "the library was built without the creep table (data/creep_table.h5)";
-  const CreepTableBlock* blocks = detail::kCreepTableBlocks;
+  const int count = static_cast<int>(table.blocks.size());
+  const CreepTableBlock* blocks = table.blocks.data();
   const double nu_lo = blocks[0].nu, nu_hi = blocks[count - 1].nu;
   std::ostringstream why;
   if (material.nu < nu_lo - 1e-12 || material.nu > nu_hi + 1e-12) {
@@ -166,11 +167,11 @@ std::array<double, 3> evaluate(const CreepTableBlock& b, const contactgeom::Sdec
   if (r == 0.0) return {0.0, 0.0, 0.0};
   const double theta = std::acos(std::clamp(n.chi / r, -1.0, 1.0));
   const double beta = std::atan2(n.eta, n.xi);  // xi >= 0: in [-pi/2, pi/2]
-  const Stencil sg = stencil(b.log_a_over_b, b.n_g, std::log(sdec.ellipticity()));
-  const Stencil sp = stencil(b.psi, b.n_psi, psi);
-  const Stencil st = stencil(b.theta, b.n_theta, theta);
-  const Stencil sb = stencil(b.beta, b.n_beta, beta);
-  const Stencil sr = stencil(b.r, b.n_r, r);
+  const Stencil sg = stencil(b.log_a_over_b.data(), b.n_g, std::log(sdec.ellipticity()));
+  const Stencil sp = stencil(b.psi.data(), b.n_psi, psi);
+  const Stencil st = stencil(b.theta.data(), b.n_theta, theta);
+  const Stencil sb = stencil(b.beta.data(), b.n_beta, beta);
+  const Stencil sr = stencil(b.r.data(), b.n_r, r);
   double fx = 0.0, fy = 0.0, mz = 0.0;
   for (int ig = 0; ig < sg.count; ++ig) {
     for (int ip = 0; ip < sp.count; ++ip) {
@@ -186,7 +187,7 @@ std::array<double, 3> evaluate(const CreepTableBlock& b, const contactgeom::Sdec
                b.n_r) +
               sr.start;
           // The r-stencil's weighted sum first: one weight per node of the other four axes.
-          const float* node = b.values + 3 * base;
+          const float* node = b.values.data() + 3 * base;
           double sx = 0.0, sy = 0.0, sm = 0.0;
           for (int ir = 0; ir < sr.count; ++ir) {
             sx += sr.w[ir] * node[3 * ir];
@@ -203,21 +204,24 @@ std::array<double, 3> evaluate(const CreepTableBlock& b, const contactgeom::Sdec
   return {sign_x * fx, sign_y * fy, sign_y * mz};
 }
 
-bool has_moment() {
-  for (int i = 0; i < detail::kCreepTableBlockCount; ++i)
-    if (!detail::kCreepTableBlocks[i].has_mz) return false;
-  return detail::kCreepTableBlockCount > 0;
+bool has_moment(const CreepTableData& table) {
+  for (const CreepTableBlock& b : table.blocks)
+    if (!b.has_mz) return false;
+  return !table.blocks.empty();
+}
+
+const CreepTableData& data(const CreepTable& table) {
+  return detail::CreepTableAccess::data(table);
 }
 
 }  // namespace
 
-CreepTableRange creep_table_range() {
+CreepTableRange CreepTable::range() const {
   CreepTableRange range;
-  const int count = detail::kCreepTableBlockCount;
-  if (count == 0) return range;
-  const CreepTableBlock& first = detail::kCreepTableBlocks[0];
+  const std::vector<CreepTableBlock>& blocks = data_->blocks;
+  const CreepTableBlock& first = blocks.front();
   range.nu_min = first.nu;
-  range.nu_max = detail::kCreepTableBlocks[count - 1].nu;
+  range.nu_max = blocks.back().nu;
   range.a_over_b_min = first.a_over_b[0];
   range.a_over_b_max = first.a_over_b[first.n_g - 1];
   range.psi_max = psi_max(first);
@@ -227,10 +231,14 @@ CreepTableRange creep_table_range() {
   return range;
 }
 
+CreepTableRange creep_table_range() {
+  return creep_table().range();
+}
+
 double creep_table_magnitude(const contactgeom::Sdec& sdec, const Creepages& creepages,
                              const ContactLoad& load, const Material& material) {
   NuBlocks nb;
-  const std::string why = check(sdec, {0, 0, 0}, load, material, &nb);
+  const std::string why = check(data(creep_table()), sdec, {0, 0, 0}, load, material, &nb);
   if (!why.empty()) throw InputError(why);
   double r = normalise(*nb.lower, sdec, creepages, load, material).r();
   if (nb.upper) r = std::max(r, normalise(*nb.upper, sdec, creepages, load, material).r());
@@ -240,7 +248,7 @@ double creep_table_magnitude(const contactgeom::Sdec& sdec, const Creepages& cre
 std::optional<std::string> creep_table_outside(const contactgeom::Sdec& sdec,
                                                const Creepages& creepages, const ContactLoad& load,
                                                const Material& material) {
-  std::string reason = check(sdec, creepages, load, material, nullptr);
+  std::string reason = check(data(creep_table()), sdec, creepages, load, material, nullptr);
   if (reason.empty()) return std::nullopt;
   return reason;
 }
@@ -250,10 +258,12 @@ bool creep_table_covers(const contactgeom::Sdec& sdec, const Creepages& creepage
   return !creep_table_outside(sdec, creepages, load, material);
 }
 
-CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& creepages,
-                               const ContactLoad& load, const Material& material) {
+CreepForces creep_table_forces(const CreepTable& table, const contactgeom::Sdec& sdec,
+                               const Creepages& creepages, const ContactLoad& load,
+                               const Material& material) {
+  const CreepTableData& d = data(table);
   NuBlocks nb;
-  const std::string why = check(sdec, creepages, load, material, &nb);
+  const std::string why = check(d, sdec, creepages, load, material, &nb);
   if (!why.empty()) throw InputError(why);
   std::array<double, 3> f = evaluate(*nb.lower, sdec, creepages, load, material);
   if (nb.upper && nb.t > 0.0) {
@@ -264,12 +274,17 @@ CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& c
   CreepForces forces;
   forces.Fx = f[0] * mu_n;
   forces.Fy = f[1] * mu_n;
-  if (has_moment()) forces.Mz = f[2] * mu_n * sdec.c();
+  if (has_moment(d)) forces.Mz = f[2] * mu_n * sdec.c();
   return forces;
 }
 
+CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                               const ContactLoad& load, const Material& material) {
+  return creep_table_forces(creep_table(), sdec, creepages, load, material);
+}
+
 std::string creep_table_provenance() {
-  return detail::kCreepTableProvenance;
+  return creep_table().provenance();
 }
 
 }  // namespace wheelwear::tangential

@@ -1,19 +1,34 @@
 #pragma once
 /// Creep forces of SDEC patches interpolated in a book of tables of Kalker's exact theory, in
 /// the spirit of Kalker's book of tables (Kalker 1996) and of KBTNH (Piotrowski, Liu & Bruni
-/// 2017). The table (data/creep_table.h5, generators/creep_table_generator.cpp) is compiled into the
-/// library.
+/// 2017). The table (data/creep_table.h5, generators/creep_table_generator.cpp) is read at run
+/// time, once, on first use (creep_table), from the first of:
+///   1. $WHEELWEAR_DATA_DIR/creep_table.h5 when WHEELWEAR_DATA_DIR is set (then only there: a
+///      folder set on purpose must not be replaced silently by another table);
+///   2. <prefix>/share/wheelwear/creep_table.h5 of an installation, <prefix> the parent of the
+///      folder of the running program (or of the shared object holding this library);
+///   3. data/creep_table.h5 of the source tree the library was built from (programs run from
+///      the build tree).
+/// Every function below that needs the table throws InputError, naming each path tried, when
+/// none is found or the file is not a readable table.
 
+#include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
-#include <vector>
+#include <string_view>
 
 #include "wheelwear/contactgeom/sdec.hpp"
 #include "wheelwear/tangential/creep_types.hpp"
 
 namespace wheelwear::tangential {
 
-/// The parameter range the built-in table covers (for messages and for choosing a method).
+namespace detail {
+struct CreepTableData;
+struct CreepTableAccess;
+}  // namespace detail
+
+/// The parameter range a table covers (for messages and for choosing a method).
 struct CreepTableRange {
   double nu_min = 0.0, nu_max = 0.0;              ///< Poisson's ratio [-]
   double a_over_b_min = 0.0, a_over_b_max = 0.0;  ///< ellipticity a/b [-]
@@ -24,7 +39,46 @@ struct CreepTableRange {
   double spin_scale = 1.0;  ///< s of the normalised spin (creep_table_magnitude) [-]
 };
 
-/// The range of the built-in table; all zero when the library was built without it.
+/// A book of creep-force tables read from its file (load_creep_table): immutable; copies share
+/// the data.
+class CreepTable {
+ public:
+  CreepTableRange range() const;
+  const std::filesystem::path& path() const;  ///< the file read (absolute)
+  /// Lower-case hex SHA-256 of the file's bytes, the very bytes the table was read from.
+  const std::string& sha256() const;
+  const std::string& provenance() const;  ///< how the table was generated (the file's description)
+
+ private:
+  CreepTable() = default;  // only load_creep_table makes one: a table is never empty
+  friend struct detail::CreepTableAccess;
+  std::shared_ptr<const detail::CreepTableData> data_;
+};
+
+/// Reads the book of tables from `file` (the layout generators/creep_table_generator.cpp
+/// writes). Throws InputError naming the file and what is wrong when it cannot be read, is not
+/// HDF5 (e.g. truncated) or does not hold a consistent table.
+CreepTable load_creep_table(const std::filesystem::path& file);
+
+/// Searches creep_table.h5 now, in the order above; throws InputError naming every path tried
+/// when none exists.
+std::filesystem::path locate_creep_table();
+
+/// The table of the functions below: load_creep_table(locate_creep_table()) on the first call
+/// (thread-safe). A failure is kept: every later call throws the same InputError, so that one
+/// run never mixes results with and without the table.
+const CreepTable& creep_table();
+
+/// The file of creep_table() (for results files: which table a run used).
+std::filesystem::path creep_table_path();
+
+/// creep_table().sha256(): lower-case hex SHA-256 of the file of creep_table().
+std::string creep_table_sha256();
+
+/// Lower-case hex SHA-256 of `bytes` (OpenSSL).
+std::string sha256_hex(std::string_view bytes);
+
+/// The range of the table (creep_table().range()).
 CreepTableRange creep_table_range();
 
 /// The normalised creepage of the table: xi = G c^2 C11 vx/(mu N), eta = G c^2 C22 vy/(mu N),
@@ -38,19 +92,21 @@ CreepTableRange creep_table_range();
 double creep_table_magnitude(const contactgeom::Sdec& sdec, const Creepages& creepages,
                              const ContactLoad& load, const Material& material);
 
-/// True when (sdec, creepages, load, material) lie inside the built-in table's range.
+/// True when (sdec, creepages, load, material) lie inside the table's range. Throws
+/// InputError when there is no table (an installation without it is broken, not "outside").
 bool creep_table_covers(const contactgeom::Sdec& sdec, const Creepages& creepages,
                         const ContactLoad& load, const Material& material);
 
-/// Why the built-in table does not cover (sdec, creepages, load, material): which parameter is
-/// outside and the table's range; std::nullopt when it covers them.
+/// Why the table does not cover (sdec, creepages, load, material): which parameter is outside
+/// and the table's range; std::nullopt when it covers them. Throws InputError when there is no
+/// table.
 std::optional<std::string> creep_table_outside(const contactgeom::Sdec& sdec,
                                                const Creepages& creepages, const ContactLoad& load,
                                                const Material& material);
 
 /// Total creep forces Fx, Fy [N] and the spin moment Mz about O [N m] on the wheel (Kalker's
 /// convention: they oppose the creepages) of the SDEC patch `sdec` with creepages at O, from the
-/// built-in table of exact- theory solutions: local cubic (four-node Lagrange) interpolation in
+/// table of exact- theory solutions: local cubic (four-node Lagrange) interpolation in
 /// log(a/b), psi, the direction (theta, beta) and the magnitude r of the normalised creepage, and
 /// linear in nu between the tabulated ratios. psi < 0 uses the mirror image (vy, phi, Fy change
 /// sign) and creepages with vx < 0 the reversed ones (forces change sign). Mz is tabulated as
@@ -60,7 +116,12 @@ std::optional<std::string> creep_table_outside(const contactgeom::Sdec& sdec,
 CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& creepages,
                                const ContactLoad& load, const Material& material);
 
-/// The built-in table's provenance (how it was generated), empty without a table.
+/// The same with the table `table` (e.g. one read by load_creep_table from another file).
+CreepForces creep_table_forces(const CreepTable& table, const contactgeom::Sdec& sdec,
+                               const Creepages& creepages, const ContactLoad& load,
+                               const Material& material);
+
+/// The table's provenance (how it was generated).
 std::string creep_table_provenance();
 
 }  // namespace wheelwear::tangential

@@ -1,0 +1,288 @@
+// The book of creep-force tables as run-time data (creep_table.hpp): where it is found, its
+// SHA-256, the loader on good, truncated and damaged copies, and forces bit for bit as recorded
+// when the library embedded the table at build time (before it was loaded at run time).
+
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/tangential/creep_table.hpp"
+
+namespace wheelwear::tangential {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kShippedTable = fs::path(WHEELWEAR_SOURCE_DIR) / "data" / "creep_table.h5";
+
+// `sha256sum data/creep_table.h5` (GNU coreutils) of the shipped table; a new table changes it.
+const char kShippedSha256[] = "08274c975ad0223277c3eadf29ce0eb36abf350a921ff5c156ba544dafece654";
+
+struct Point {
+  contactgeom::Sdec sdec;
+  Creepages creepages;
+  ContactLoad load;
+  Material material;
+  std::array<double, 3> forces;  // Fx [N], Fy [N], Mz [N m]
+};
+
+// creep_table_forces of the library with the table compiled in (its values embedded as
+// single-precision literals), printed with %a: reading the file at run time must give the same
+// bits. Between the two nu, psi < 0, vx < 0, tiny and large creepage, a/b away from 1.
+const Point kPoints[] = {
+    {{4.25e-3, 4.25e-3, 0.6},
+     {0, 0, 1.0},
+     {37830, 0.35},
+     {80e9, 0.25},
+     {0x1.6001b2982e245p+12, -0x1.bd5b8c87f7304p+12, -0x1.ab11dbd30e1bap+4}},
+    {{6e-3, 4e-3, -0.3},
+     {1e-3, -5e-4, 0.3},
+     {2e4, 0.3},
+     {80e9, 0.265},
+     {-0x1.37928b5f3a185p+12, -0x1.2eb401ae5ac68p+10, -0x1.807fa101fba49p+3}},
+    {{3e-3, 7e-3, 0.2},
+     {-2e-3, 1e-3, -0.5},
+     {5e4, 0.3},
+     {80e9, 0.28},
+     {0x1.65694728eef03p+12, -0x1.dd4b1aa650f34p+9, 0x1.331f30127c3cp+4}},
+    {{5e-3, 5e-3, 0.0},
+     {1e-5, 2e-5, 0.01},
+     {2e4, 0.3},
+     {80e9, 0.27},
+     {-0x1.4d43525e161ddp+6, -0x1.2a35303f62aeap+8, -0x1.47e4b66ac505ap-2}},
+    {{9e-3, 3e-3, 0.45},
+     {1e-4, 2e-4, -0.2},
+     {3e4, 0.25},
+     {80e9, 0.25},
+     {-0x1.2e1f2b65788ebp+11, 0x1.318096c39b9b7p+12, 0x1.03ded542e74eep+4}},
+};
+
+// The recorded values came from a portable build; a build for this CPU (-march=native, the
+// project's own scripts) may contract the interpolation's products into fused multiply-adds,
+// which moves the last bits: 1e-13 relative admits that and nothing a change of the data or of
+// the interpolation would give.
+constexpr double kRecordedTolerance = 1e-13;
+
+void expect_recorded(const CreepForces& f, const Point& p) {
+  EXPECT_NEAR(f.Fx, p.forces[0], kRecordedTolerance * std::abs(p.forces[0]));
+  EXPECT_NEAR(f.Fy, p.forces[1], kRecordedTolerance * std::abs(p.forces[1]));
+  ASSERT_TRUE(f.Mz.has_value());
+  EXPECT_NEAR(*f.Mz, p.forces[2], kRecordedTolerance * std::abs(p.forces[2]));
+}
+
+void expect_bit_identical(const CreepForces& a, const CreepForces& b) {
+  EXPECT_EQ(a.Fx, b.Fx);
+  EXPECT_EQ(a.Fy, b.Fy);
+  EXPECT_EQ(a.Mz, b.Mz);
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// The message of the InputError `call` throws; nullopt when it throws none.
+template <class Call>
+std::optional<std::string> input_error(Call call) {
+  try {
+    call();
+  } catch (const InputError& e) {
+    return std::string(e.what());
+  }
+  return std::nullopt;
+}
+
+// A fresh folder under the system's temporary one, removed with the fixture.
+class CreepTableFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (fs::temp_directory_path() / "wheelwear_creep_table_XXXXXX").string();
+    ASSERT_NE(mkdtemp(pattern.data()), nullptr);
+    dir_ = pattern;
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+
+  // A copy of the shipped table's first `size` bytes (all of them by default).
+  fs::path copy(const std::string& name, std::size_t size = std::string::npos) const {
+    std::ifstream in(kShippedTable, std::ios::binary);
+    std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const fs::path file = dir_ / name;
+    std::ofstream(file, std::ios::binary) << bytes.substr(0, size);
+    return file;
+  }
+
+  fs::path dir_;
+};
+
+// Sets an environment variable for one scope, restoring it after.
+class ScopedEnvironment {
+ public:
+  ScopedEnvironment(const char* name, const std::string& value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    setenv(name, value.c_str(), 1);
+  }
+  ~ScopedEnvironment() {
+    if (old_)
+      setenv(name_, old_->c_str(), 1);
+    else
+      unsetenv(name_);
+  }
+  ScopedEnvironment(const ScopedEnvironment&) = delete;
+  ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+TEST(Sha256, KnownVectors) {
+  // FIPS 180-2, Appendix B.1 ("abc"), and the empty message.
+  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+}
+
+TEST(CreepTableData, RecordsTheShippedTablesSha256) {
+  EXPECT_EQ(creep_table_sha256(), kShippedSha256);
+  EXPECT_EQ(creep_table_path().filename(), "creep_table.h5");
+  if (!std::getenv("WHEELWEAR_DATA_DIR")) {
+    // The build tree has no <prefix>/share/wheelwear: the source tree's copy.
+    EXPECT_TRUE(fs::equivalent(creep_table_path(), kShippedTable)) << creep_table_path();
+  }
+}
+
+TEST(CreepTableData, ForcesMatchTheRecordedValues) {
+  for (const Point& p : kPoints)
+    expect_recorded(creep_table_forces(p.sdec, p.creepages, p.load, p.material), p);
+  const CreepTableRange range = creep_table_range();
+  EXPECT_EQ(range.nu_min, 0.25);
+  EXPECT_EQ(range.nu_max, 0.28);
+  EXPECT_EQ(range.a_over_b_min, 0.2);
+  EXPECT_EQ(range.a_over_b_max, 5.0);
+  EXPECT_EQ(range.psi_max, 0.8);
+  EXPECT_EQ(range.r_max, 6.0);
+  EXPECT_EQ(range.grid, 30);
+  EXPECT_EQ(range.spin_scale, 3.0);
+  EXPECT_TRUE(contains(creep_table_provenance(), "Book of creep-force tables"));
+}
+
+TEST_F(CreepTableFile, LoadsACopy) {
+  const fs::path file = copy("creep_table.h5");
+  const CreepTable table = load_creep_table(file);
+  EXPECT_EQ(table.path(), file);
+  EXPECT_EQ(table.sha256(), kShippedSha256);
+  EXPECT_EQ(table.provenance(), creep_table_provenance());
+  const CreepTableRange a = table.range(), b = creep_table_range();
+  EXPECT_EQ(a.nu_min, b.nu_min);
+  EXPECT_EQ(a.nu_max, b.nu_max);
+  EXPECT_EQ(a.r_max, b.r_max);
+  // The same build reads the same bits from a copy as from the shipped file.
+  for (const Point& p : kPoints)
+    expect_bit_identical(creep_table_forces(table, p.sdec, p.creepages, p.load, p.material),
+                         creep_table_forces(p.sdec, p.creepages, p.load, p.material));
+}
+
+TEST_F(CreepTableFile, RefusesMissingTruncatedAndDamagedFiles) {
+  const std::size_t size = fs::file_size(kShippedTable);
+  std::vector<fs::path> bad = {dir_ / "missing.h5", copy("empty.h5", 0), copy("head.h5", 4096),
+                               copy("half.h5", size / 2), copy("short.h5", size - 1)};
+  // Bytes in the middle (compressed values: zlib's checksum fails) and a text file.
+  const fs::path damaged = copy("damaged.h5");
+  {
+    std::fstream out(damaged, std::ios::binary | std::ios::in | std::ios::out);
+    out.seekp(static_cast<std::streamoff>(size / 2));
+    out << std::string(256, '\xff');
+  }
+  bad.push_back(damaged);
+  std::ofstream(dir_ / "text.h5") << "not HDF5\n";
+  bad.push_back(dir_ / "text.h5");
+  for (const fs::path& file : bad) {
+    const auto message = input_error([&] { load_creep_table(file); });
+    ASSERT_TRUE(message) << file;
+    EXPECT_TRUE(contains(*message, file.string())) << *message;
+    EXPECT_TRUE(contains(*message, "WHEELWEAR_DATA_DIR")) << *message;
+  }
+}
+
+TEST_F(CreepTableFile, EnvironmentFolderWithoutTheTableIsAnError) {
+  const ScopedEnvironment env("WHEELWEAR_DATA_DIR", dir_.string());
+  const auto message = input_error([] { locate_creep_table(); });
+  ASSERT_TRUE(message);
+  EXPECT_TRUE(contains(*message, (dir_ / "creep_table.h5").string())) << *message;
+  EXPECT_TRUE(contains(*message, "WHEELWEAR_DATA_DIR")) << *message;
+}
+
+TEST_F(CreepTableFile, EnvironmentFolderIsSearchedFirst) {
+  copy("creep_table.h5");
+  const ScopedEnvironment env("WHEELWEAR_DATA_DIR", dir_.string());
+  EXPECT_EQ(locate_creep_table(), dir_ / "creep_table.h5");
+}
+
+// In a fresh process (a re-executed test binary, so that no earlier test has loaded the
+// table), with WHEELWEAR_DATA_DIR set to `dir`, a folder without the table: exits 0 when every
+// function that needs the table throws InputError naming the file, every time. Removes `dir`
+// (exit skips the fixture's TearDown).
+[[noreturn]] void use_without_the_table(const fs::path& dir) {
+  setenv("WHEELWEAR_DATA_DIR", dir.c_str(), 1);
+  const std::string expected = (dir / "creep_table.h5").string();
+  const Point& p = kPoints[0];
+  const std::optional<std::string> messages[] = {
+      input_error([] { creep_table_range(); }),
+      input_error([&] { creep_table_forces(p.sdec, p.creepages, p.load, p.material); }),
+      input_error([&] { creep_table_covers(p.sdec, p.creepages, p.load, p.material); }),
+      input_error([] { creep_table_sha256(); }),
+      input_error([] { creep_table_range(); }),
+  };
+  int status = 0;
+  for (const auto& m : messages) {
+    if (!m || !contains(*m, expected)) {
+      std::fprintf(stderr, "%s\n", m ? m->c_str() : "no InputError");
+      status = 1;
+    }
+  }
+  std::error_code ignored;
+  fs::remove_all(dir, ignored);
+  std::exit(status);
+}
+
+TEST_F(CreepTableFile, FirstUseWithoutTheTableThrowsInputError) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(use_without_the_table(dir_), ::testing::ExitedWithCode(0), "");
+}
+
+// In a fresh process, threads that all use the table first: exits 0 when they get the same,
+// right forces (the table is loaded once, while the others wait).
+[[noreturn]] void first_use_from_threads() {
+  const Point& p = kPoints[1];
+  std::vector<CreepForces> forces(8);
+  std::vector<std::thread> threads;
+  for (CreepForces& f : forces)
+    threads.emplace_back([&] { f = creep_table_forces(p.sdec, p.creepages, p.load, p.material); });
+  for (std::thread& t : threads) t.join();
+  // All equal (bit for bit) and the recorded values (to the build's rounding).
+  for (const CreepForces& f : forces) {
+    if (f.Fx != forces[0].Fx || f.Fy != forces[0].Fy || f.Mz != forces[0].Mz) std::exit(1);
+    if (std::abs(f.Fx - p.forces[0]) > kRecordedTolerance * std::abs(p.forces[0])) std::exit(2);
+  }
+  std::exit(0);
+}
+
+TEST(CreepTableData, FirstUseFromManyThreads) {
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(first_use_from_threads(), ::testing::ExitedWithCode(0), "");
+}
+
+}  // namespace
+}  // namespace wheelwear::tangential
