@@ -16,6 +16,7 @@
 #include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/profiles/wear_update.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
+#include "wheelwear/tangential/creep_table.hpp"
 
 namespace wheelwear::pipeline {
 
@@ -242,6 +243,18 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   return summary;
 }
 
+// The SHA-256 of the book of creep-force tables the run uses. A run with tangential_method
+// best cannot go without it (creep_table_sha256 throws, naming where it looked); the other
+// methods do not read it, so a missing table is recorded, not fatal.
+std::string table_hash(const Scene& scene) {
+  if (scene.tangential == TangentialMethod::best) return tangential::creep_table_sha256();
+  try {
+    return tangential::creep_table_sha256();
+  } catch (const InputError& error) {
+    return std::string("none: ") + error.what();
+  }
+}
+
 }  // namespace
 
 RunSummary run_scene(const Scene& scene, std::string_view scene_text,
@@ -252,7 +265,8 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
   LoopStart start{0, 0.0, new_profiles(scene)};
   for (const WornProfile& w : start.worn) evaluator.pair(w.build());
   ResultsFile file =
-      ResultsFile::create(output, scene_text, options.overwrite, detail::collective_record(scene));
+      ResultsFile::create(output, scene_text, options.overwrite, detail::collective_record(scene),
+                          {{"creep_table_sha256", table_hash(scene)}});
   file.write_run_info(detail::run_info(scene_directory, builtin_scene, 0.0, 0, -1));
   return loop(scene, evaluator, file, std::move(start), scene_directory, builtin_scene, options);
 }

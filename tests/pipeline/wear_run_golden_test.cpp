@@ -10,6 +10,7 @@
 #include "support/csv_table.hpp"
 #include "wear_run_support.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
+#include "wheelwear/tangential/creep_table.hpp"
 
 namespace wheelwear::pipeline {
 namespace {
@@ -103,6 +104,8 @@ TEST_F(WearRunTest, DefaultSceneRunsAWearStep) {
   const ResultsFile file = ResultsFile::read(out);
   ASSERT_GE(file.completed_steps(), 2);
   EXPECT_EQ(file.format_version(), kFormatVersion);
+  // Which book of tables the run had (creep_table_data_test checks the hash against the file).
+  EXPECT_EQ(file.root_attribute("creep_table_sha256"), tangential::creep_table_sha256());
   // One contact of the collective has no usable patch (counted, not worn); it is a tiny share
   // of the distance.
   EXPECT_LT(file.read_step_array(0, "failed_weight").at(0), 0.01);
