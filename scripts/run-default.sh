@@ -5,7 +5,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-scripts/build.sh build
+# Only the tool: the tests, fuzz replays, benchmarks and studies are the test command's, which
+# builds them in the same directory with the same configuration.
+scripts/build.sh build --target wheelwear
 mkdir -p build/default-run
 build/wheelwear run -o build/default-run/run.h5 --overwrite
 # Debian's interpreter, which has h5py and matplotlib whatever python3 comes first on PATH.

@@ -1,20 +1,49 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs every test: the optimised build, then the same
-# suite built with AddressSanitizer and UndefinedBehaviorSanitizer.
+# suite built with AddressSanitizer and UndefinedBehaviorSanitizer, then a short fuzzing run.
+# Each stage prints its elapsed time, and a summary of all of them closes the output.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
 jobs=$(nproc)
 
-scripts/build.sh build
-ctest --test-dir build --output-on-failure -j "$jobs"
+summary=()
+# stage NAME COMMAND...: runs COMMAND, prints and records its wall-clock time; a failing stage
+# ends the script with its status, after the summary.
+stage() {
+  local name=$1 start=$SECONDS status=0
+  shift
+  echo "== stage: $name"
+  "$@" || status=$?
+  local elapsed=$((SECONDS - start))
+  local line
+  line=$(printf '%-18s %3dm%02ds' "$name" $((elapsed / 60)) $((elapsed % 60)))
+  ((status == 0)) || line+="  FAILED ($status)"
+  summary+=("$line")
+  echo "== stage time: $line"
+  if ((status != 0)); then
+    print_summary
+    exit "$status"
+  fi
+}
+print_summary() {
+  echo "== stage times (elapsed):"
+  printf '   %s\n' "${summary[@]}"
+}
 
-scripts/build.sh build-asan -DWHEELWEAR_SANITIZE=ON -DWHEELWEAR_BUILD_BENCH=OFF \
-  -DCMAKE_BUILD_TYPE=RelWithDebInfo
-ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest --test-dir build-asan --output-on-failure -j "$jobs"
+release_tests() { ctest --test-dir build --output-on-failure -j "$jobs"; }
+sanitizer_tests() {
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir build-asan --output-on-failure -j "$jobs"
+}
 
+stage "install deps" scripts/install-deps.sh
+stage "release build" scripts/build.sh build
+stage "release tests" release_tests
+stage "sanitizer build" scripts/build.sh build-asan -DWHEELWEAR_SANITIZE=ON \
+  -DWHEELWEAR_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+stage "sanitizer tests" sanitizer_tests
 # Fuzz the readers of untrusted input briefly (profile formats, the profile loader, the scene
 # parser): a clang build with libFuzzer in build-fuzz, each target for FUZZ_SECONDS (default 10)
 # with a fixed seed; scripts/fuzz.sh [SECONDS] runs them for longer.
-scripts/fuzz.sh "${FUZZ_SECONDS:-10}"
+stage "fuzz build+runs" scripts/fuzz.sh "${FUZZ_SECONDS:-10}"
+print_summary
