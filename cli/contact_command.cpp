@@ -89,7 +89,7 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
           .add("exact_N", r.normal_force)
           .add("exact_Fx", r.forces.Fx)
           .add("exact_Fy", r.forces.Fy)
-          .add("exact_Mz", *r.forces.Mz)
+          .add("exact_Mz", r.forces.Mz.value_or(0.0))
           .add("exact_approach", e.approach)
           .add("exact_area", e.contact_area)
           .add("exact_adhesion_fraction", e.adhesion_fraction)
@@ -155,7 +155,7 @@ void run_contact(const ContactArgs& args) {
               "Fy %.6g N, Mz %.6g N m\n"
               "    area %.4g mm2, %.1f %% adhesion, approach %.4g um\n",
               r.grid.nx, r.grid.ny, tangential::status_name(r.status), r.iterations, r.normal_force,
-              r.forces.Fx, r.forces.Fy, *r.forces.Mz, e.contact_area * 1e6,
+              r.forces.Fx, r.forces.Fy, r.forces.Mz.value_or(0.0), e.contact_area * 1e6,
               100.0 * e.adhesion_fraction, e.approach * 1e6);
         }
       }

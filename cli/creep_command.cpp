@@ -92,7 +92,11 @@ tangential::SolveOptions solve_options(const CreepArgs& args, tangential::Method
   options.fastsim.scheme = *core::value_named(tangential::kSchemeNames, args.scheme);
   // The exact theory on 1.02 times the patch (CONTACT's SDEC option).
   options.exact_grid.nx = options.exact_grid.ny = args.exact_grid;
-  if (args.target_error) {
+  // best answers from the table where it covers the patch: no FASTSIM grid to choose then.
+  const bool table_answers =
+      method == tangential::Method::best &&
+      tangential::creep_table_covers(args.sdec, args.creepages, args.load, args.material);
+  if (args.target_error && !table_answers) {
     try {
       chosen = tangential::choose_grid(*tangential::fastsim_variant(method), options.fastsim.scheme,
                                        options.fastsim.bound, *args.target_error);
@@ -141,7 +145,6 @@ void run_creep(const CreepArgs& args) {
   const tangential::SolveOptions options = solve_options(args, *method, chosen);
   const tangential::TangentialSolution s = tangential::solve_patch(
       *method, args.sdec, args.creepages, args.load, args.material, options);
-  if (s.from_table) chosen.reset();  // the table answered: no FASTSIM grid was used
   const tangential::CreepForces& forces = s.forces;
   const bool tabled = *method == tangential::Method::table || *method == tangential::Method::best;
   // For table and best: which method gave the forces.

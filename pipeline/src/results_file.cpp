@@ -150,6 +150,21 @@ void change_atomically(const fs::path& path, Change change) {
   }
 }
 
+// The numeric datasets below `group`, as paths relative to it ("wheel/y"). Walks the groups
+// with the C++ API, which is the same in HDF5 1.10 and later.
+void collect_numeric_datasets(const H5::Group& group, const std::string& prefix,
+                              std::vector<std::string>& names) {
+  for (hsize_t i = 0; i < group.getNumObjs(); ++i) {
+    const std::string name = group.getObjnameByIdx(i);
+    const H5G_obj_t type = group.getObjTypeByIdx(i);
+    if (type == H5G_GROUP) {
+      collect_numeric_datasets(group.openGroup(name), prefix + name + "/", names);
+    } else if (type == H5G_DATASET && group.openDataSet(name).getTypeClass() != H5T_STRING) {
+      names.push_back(prefix + name);
+    }
+  }
+}
+
 }  // namespace
 
 ResultsFile::ResultsFile(fs::path path, std::string scene_text, int completed_steps)
@@ -269,18 +284,7 @@ std::vector<std::string> ResultsFile::step_array_names(int step) const {
     H5::Exception::dontPrint();
     H5::H5File file(path_.string(), H5F_ACC_RDONLY);
     if (!file.nameExists(group)) throw InputError("results file: no step group " + group);
-    auto collect = [](hid_t object, const char* name, const H5O_info_t* info, void* out) {
-      if (info->type != H5O_TYPE_DATASET || std::string_view(name) == ".") return 0;
-      const hid_t data = H5Dopen2(object, name, H5P_DEFAULT);
-      const hid_t type = H5Dget_type(data);
-      if (H5Tget_class(type) != H5T_STRING)
-        static_cast<std::vector<std::string>*>(out)->emplace_back(name);
-      H5Tclose(type);
-      H5Dclose(data);
-      return 0;
-    };
-    const H5::Group g = file.openGroup(group);
-    H5Ovisit(g.getId(), H5_INDEX_NAME, H5_ITER_INC, collect, &names);
+    collect_numeric_datasets(file.openGroup(group), "", names);
   } catch (const H5::Exception& error) {
     throw InputError("results file " + path_.string() + ": cannot list " + group + " (" +
                      error.getDetailMsg() + ")");

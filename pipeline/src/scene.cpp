@@ -32,26 +32,30 @@ using detail::where;
 
 // contact.tangential_method: fastsim, best or exact, or a FASTSIM method of the command line's
 // names that also names the contact model (fastsim-sdec is fastsim with model sdec).
-std::optional<std::pair<TangentialMethod, std::optional<tangential::ContactModel>>>
-scene_tangential_method(const std::string& name) {
-  using M = TangentialMethod;
+struct SceneTangential {
+  TangentialMethod method = TangentialMethod::fastsim;
+  bool names_model = false;  // the name also gives the contact model
+  tangential::ContactModel model = tangential::ContactModel::sdec;
+};
+
+std::optional<SceneTangential> scene_tangential_method(const std::string& name) {
   using C = tangential::ContactModel;
-  if (name == "fastsim") return std::pair{M::fastsim, std::optional<C>{}};
+  if (name == "fastsim") return SceneTangential{};
   const auto method = tangential::parse_method(name);
   if (!method) return std::nullopt;
   switch (*method) {
     case tangential::Method::best:
-      return std::pair{M::best, std::optional<C>{}};
+      return SceneTangential{TangentialMethod::best, false, C::sdec};
     case tangential::Method::exact:
-      return std::pair{M::exact, std::optional<C>{}};
+      return SceneTangential{TangentialMethod::exact, false, C::sdec};
     case tangential::Method::fastsim_sdec:
-      return std::pair{M::fastsim, std::optional<C>{C::sdec}};
+      return SceneTangential{TangentialMethod::fastsim, true, C::sdec};
     case tangential::Method::fastsim_eql:
-      return std::pair{M::fastsim, std::optional<C>{C::eql}};
+      return SceneTangential{TangentialMethod::fastsim, true, C::eql};
     case tangential::Method::fastsim_eqe:
-      return std::pair{M::fastsim, std::optional<C>{C::eqe}};
+      return SceneTangential{TangentialMethod::fastsim, true, C::eqe};
     case tangential::Method::fastsim_eqe_shifted:
-      return std::pair{M::fastsim, std::optional<C>{C::eqe_shifted}};
+      return SceneTangential{TangentialMethod::fastsim, true, C::eqe_shifted};
     default:  // no per-cell fields (linear, table) or no scene model (fastsim-elliptic)
       return std::nullopt;
   }
@@ -231,8 +235,8 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                                   "model), best or exact, or one of fastsim-sdec, fastsim-eql, "
                                   "fastsim-eqe, fastsim-eqe-shifted (which name the model too)");
                }
-               s.tangential = method->first;
-               method_model = method->second;
+               s.tangential = method->method;
+               if (method->names_model) method_model = method->model;
                tangential_line = static_cast<int>(n.source().begin.line);
              }},
             {"strip_width_m",

@@ -179,7 +179,15 @@ WheelOutcome StateKernel::wheel(const contactgeom::WheelsetContact& both, int si
     p.solution.slip_cells = solution.slip_cells;
     p.solution.frictional_work = solution.frictional_work;
     p.solution.from_table = solution.from_table;
-    if (keep_fields) p.solution.fields = solution.fields;
+    if (keep_fields) {
+      // A T gamma map needs the work density and the cell positions, not every field.
+      tangential::CellFields& kept = p.solution.fields.emplace();
+      kept.nx = solution.fields->nx;
+      kept.ny = solution.fields->ny;
+      kept.work = solution.fields->work;
+      kept.x = solution.fields->x;
+      kept.y = solution.fields->y;
+    }
   }
   return out;
 }

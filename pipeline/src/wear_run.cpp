@@ -250,8 +250,8 @@ std::string table_hash(const Scene& scene) {
   if (scene.tangential == TangentialMethod::best) return tangential::creep_table_sha256();
   try {
     return tangential::creep_table_sha256();
-  } catch (const InputError& error) {
-    return std::string("none: ") + error.what();
+  } catch (const InputError&) {
+    return "none";  // the reason names this machine's paths, which the file must not hold
   }
 }
 
@@ -273,6 +273,12 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
 
 RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   ResultsFile file = ResultsFile::open(output);
+  if (file.format_version() != kFormatVersion) {
+    throw InputError("results file " + output.string() + ": layout version " +
+                     std::to_string(file.format_version()) + ", this program writes version " +
+                     std::to_string(kFormatVersion) +
+                     " (docs/results.md); it cannot continue it: start a new run with -o");
+  }
   const auto directory = file.read_text("/run_info/scene_directory");
   if (!directory) {
     throw InputError("results file " + output.string() +
@@ -286,6 +292,15 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   if (step_distance == 0.0) {
     throw InputError("results file " + output.string() +
                      ": the run is complete; nothing to resume (start a new run with -o)");
+  }
+  if (scene.tangential == TangentialMethod::best &&
+      file.root_attribute("creep_table_sha256") != tangential::creep_table_sha256()) {
+    throw InputError("results file " + output.string() +
+                     ": it was run with another book of creep-force tables (SHA-256 " +
+                     file.root_attribute("creep_table_sha256").value_or("none") + ", now " +
+                     tangential::creep_table_sha256() + " at " +
+                     tangential::creep_table_path().string() +
+                     "); resuming would mix the two: start a new run with -o");
   }
   const CollectiveEvaluator evaluator(scene);
   LoopStart start{last + 1, file.read_step_array(last, "distance").at(0) + step_distance,

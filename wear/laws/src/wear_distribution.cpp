@@ -27,7 +27,8 @@ double sum_of(const std::vector<double>& values) {
 // Depth per passage of each strip of the solution [m]: the law reads the strip's cells as
 // columns of the fields, with one dispatch for the whole patch.
 template <class PerStrip>
-void strip_depths(const tangential::CellFields& cells, double speed, const WearLaw& law, PerStrip&& per_strip) {
+void strip_depths(const tangential::CellFields& cells, double speed, const WearLaw& law,
+                  PerStrip&& per_strip) {
   require(speed > 0.0 && std::isfinite(speed), "V", speed,
           "the rolling speed must be positive (m/s)");
   thread_local std::vector<double> depth;

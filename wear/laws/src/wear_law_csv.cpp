@@ -1,5 +1,6 @@
 #include "wear_law_csv.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <istream>
 #include <ostream>
@@ -92,13 +93,13 @@ double table_number(const TableLine& line, std::size_t column, std::string_view 
                     std::string_view source, bool allow_infinity) {
   const std::string& field = line.fields[column];
   const std::string where = "column '" + std::string(column_name(header, column)) + "': ";
-  const std::optional<double> parsed = core::parse_number(field);
-  // An overflowing literal such as 1e999 is a typo, not infinity: only "inf" spells infinity.
-  const bool overflow =
-      parsed && std::isinf(*parsed) && core::to_lower(field).find("inf") == std::string::npos;
-  if (!parsed || overflow)
+  // std::from_chars, strict: no '+', and a literal out of range (1e999, 1e-400) is refused
+  // rather than taken as infinity or zero.
+  double value = 0.0;
+  const char* const end = field.data() + field.size();
+  const auto [stop, error] = std::from_chars(field.data(), end, value);
+  if (field.empty() || error != std::errc() || stop != end)
     table_error(source, line.number, where + "'" + field + "' is not a number");
-  const double value = *parsed;
   if (std::isnan(value)) table_error(source, line.number, where + "NaN is not a valid value");
   if (std::isinf(value) && !allow_infinity) {
     table_error(source, line.number, where + "'" + field + "' must be finite");

@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "wear_law_csv.hpp"
-#include "wheelwear/core/text.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 
 namespace wheelwear::wear {
 

@@ -355,7 +355,9 @@ const CreepTable& creep_table() {
     Loaded l;
     try {
       l.table = load_creep_table(locate_creep_table());
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) {
+      // Every failure is remembered as an input error (a missing or damaged file, or the
+      // library's own failure to read it): one run never mixes results with and without it.
       l.error = e.what();
     }
     return l;

@@ -1,5 +1,7 @@
 #include "wheelwear/tangential/tangential.hpp"
 
+#include <algorithm>
+
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
 #include "wheelwear/tangential/exact/exact_fields.hpp"
@@ -47,8 +49,10 @@ void solve_exact(const contactgeom::Sdec& sdec, const Creepages& creepages, cons
     solution.fields = std::move(cells.fields);
     solution.frictional_work = cells.frictional_work;
   } else {
+    // As with cells: the rigid slip's work, to which the discrete sum converges only to first
+    // order in the element size (exact_fields.hpp).
     solution.fields.reset();
-    solution.frictional_work = exact.frictional_work;
+    solution.frictional_work = std::max(0.0, rigid_slip_work(exact.forces, creepages));
   }
   solution.forces = exact.forces;
   solution.cells = exact.contact_elements;
@@ -64,14 +68,24 @@ void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages, const
                 const Material& material, const SolveOptions& options,
                 TangentialSolution& solution) {
   solution.table_outside = creep_table_outside(sdec, creepages, load, material);
+  constexpr const char* kNoMoment =
+      "the table has no spin moment Mz, which the frictional work needs";
   if (!solution.table_outside && !options.fastsim.cell_fields) {
-    totals_only(creep_table_forces(sdec, creepages, load, material), solution);
-    solution.from_table = true;
-    return;
+    const CreepForces forces = creep_table_forces(sdec, creepages, load, material);
+    if (forces.Mz) {
+      totals_only(forces, solution);
+      solution.from_table = true;
+      // The work of the rigid slip, as correct_with_creep_table gives it with cells.
+      solution.frictional_work = std::max(0.0, rigid_slip_work(forces, creepages));
+      return;
+    }
+    solution.table_outside = kNoMoment;
   }
   fastsim(FastsimMethod::sdec, sdec, creepages, load, material, options.fastsim, solution);
-  if (!solution.table_outside)
+  if (!solution.table_outside) {
     solution.from_table = correct_with_creep_table(sdec, creepages, load, material, solution);
+    if (!solution.from_table) solution.table_outside = kNoMoment;
+  }
 }
 
 }  // namespace

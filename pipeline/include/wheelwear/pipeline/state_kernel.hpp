@@ -82,7 +82,8 @@ class StateKernel {
 
   /// Solves and wears the patches of wheel `side` (0 left, 1 right) of `state` in `contact`
   /// (from contact()) on `wheel_profile`, whose length fixes the wear grid. With `keep_fields`
-  /// each patch keeps its per-cell fields (T gamma maps).
+  /// each patch keeps its cells' work density and positions (work, x, y of CellFields; for
+  /// T gamma maps).
   WheelOutcome wheel(const contactgeom::WheelsetContact& contact, int side,
                      const WheelsetStateSpec& state, const profiles::Profile& wheel_profile,
                      bool keep_fields = false) const;
