@@ -221,7 +221,7 @@ void add_creep_command(CLI::App& app) {
                   "exact (Kalker's exact theory, see above; JSON adds status, iterations,\n"
                   "adhesion_fraction, adhesion_elements, N_grid, frictional_work, exact_grid;\n"
                   "cells and slip_cells count contact and slipping elements),\n"
-                  "table (the built-in book of exact-theory tables: Fx, Fy, Mz within 1 % of\n"
+                  "table (the book of exact-theory tables, data/creep_table.h5: Fx, Fy, Mz within 1 % of\n"
                   "muN of the exact theory in about 1 us; a/b 0.2-5, |psi| <= 0.8, nu\n"
                   "0.25-0.28; an error outside its range) or best (the table inside its\n"
                   "range, fastsim-sdec outside; the JSON's \"source\" says which)")

@@ -44,7 +44,7 @@ enum class TangentialMethod {
   fastsim,  ///< FASTSIM with the contact model's region and flexibilities
   /// Inside the book of tables each SDEC patch's forces, spin moment and frictional work are
   /// Kalker's exact theory's, spread over the patch as FASTSIM-SDEC spreads them
-  /// (wear/table_correction.hpp); FASTSIM-SDEC alone outside the table. Needs model sdec.
+  /// (wheelwear/tangential/table_correction.hpp); FASTSIM-SDEC alone outside the table. Needs model sdec.
   best,
   /// Kalker's exact theory on the SDEC patch (exact_sdec on grid_nx x grid_ny elements,
   /// tangential/exact/exact_fields.hpp): the reference, at milliseconds per patch. Needs model
