@@ -4,6 +4,7 @@
 
 #include "wheelwear/pipeline/wear_run.hpp"
 
+#include <H5Cpp.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <spawn.h>
@@ -100,6 +101,26 @@ TEST_F(WearRunTest, EveryDatasetHasUnits) {
   }
   EXPECT_GT(datasets, 30);
   EXPECT_EQ(units, datasets);
+}
+
+// A results file of another layout version is not continued: its steps would not match the
+// ones this program appends.
+TEST_F(WearRunTest, ResumeRefusesAnotherLayoutVersion) {
+  const fs::path out = dir_ / "old.h5";
+  run(small_scene(30e3, 10e3, 1e-3), out);
+  {
+    H5::H5File file(out.string(), H5F_ACC_RDWR);
+    H5::Attribute version = file.openGroup("/").openAttribute("format_version");
+    const int one = 1;
+    version.write(H5::PredType::NATIVE_INT, &one);
+  }
+  try {
+    resume_run(out, {});
+    FAIL() << "a version-1 file was resumed";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("layout version 1"), std::string::npos)
+        << error.what();
+  }
 }
 
 TEST_F(WearRunTest, KilledRunResumesToIdenticalResults) {

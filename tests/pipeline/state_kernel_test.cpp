@@ -1,0 +1,155 @@
+// The per-state kernel and its reduction: two-point contact worn patch by patch and recorded
+// with a patch dimension of the step's largest count, a patch without a Hertz ellipse counted
+// rather than lost, the reduction conserving every patch's worn area, and T gamma maps.
+
+#include "wheelwear/pipeline/state_kernel.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numeric>
+
+#include "wheelwear/pipeline/collective_wear.hpp"
+#include "wheelwear/pipeline/results_file.hpp"
+#include "wheelwear/pipeline/wear_run.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
+
+namespace wheelwear::pipeline {
+namespace {
+
+namespace fs = std::filesystem;
+
+// At dy = 5 mm and 55 kN the left S1002 wheel touches 60E1 1:40 at its tread and its flange
+// root (two patches, `wheelwear contact --dy 0.005`); the right wheel, 5 mm away from its
+// flange, on its tread only.
+std::string two_point_scene(const std::string& extra = "") {
+  return "[contact]\ngrid_nx = 10\ngrid_ny = 10\n" + extra +
+         "[run]\ndistance_m = 1000\nstep_distance_m = 1000\n"
+         "[[load_collective.state]]\ndy_m = 0.005\naxle_load_N = 110e3\nspeed_m_s = 30\n"
+         "yaw_rad = 1e-3\n";
+}
+
+struct KernelCase {
+  Scene scene;
+  StateKernel kernel;
+  profiles::Profile wheel;
+  contactgeom::WheelsetOnTrack track;
+
+  explicit KernelCase(const std::string& text)
+      : scene(parse_scene(text, {})),
+        kernel(scene),
+        wheel(profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius)),
+        track{kernel.pair(wheel), kernel.pair(wheel)} {}
+};
+
+// Two patches on one wheel are both solved and worn, and the reduction adds every patch's worn
+// area into the rate with the wheel's weight: the rate's area is the weighted sum of the
+// patches' areas (conservation; to rounding).
+TEST(StateKernel, WearsEveryPatchOfTwoPointContact) {
+  const KernelCase s(two_point_scene());
+  const StateOutcome out = s.kernel.evaluate(s.track, s.scene.states[0]);
+  ASSERT_TRUE(out.wheels[0].usable());
+  ASSERT_EQ(out.wheels[0].patches.size(), 2u);
+  ASSERT_EQ(out.wheels[1].patches.size(), 1u);
+  double expected = 0.0;
+  const std::vector<double> weights = wheel_weights(s.scene);
+  int compared = 0;
+  for (std::size_t w = 0; w < 2; ++w)
+    for (const PatchOutcome& p : out.wheels[w].patches) {
+      EXPECT_TRUE(p.solved);
+      EXPECT_GT(p.wear.area(), 0.0);
+      EXPECT_GT(p.solution.frictional_work, 0.0);
+      expected += weights[w] * p.wear.area();
+      ++compared;
+    }
+  EXPECT_EQ(compared, 3);
+  CollectiveWear reduced;
+  const auto bins = static_cast<std::size_t>(std::ceil(s.wheel.length() / kWearBin)) + 1;
+  reduced.rate.push_back(wear::WearDistribution::zeros(0.0, kWearBin, bins));
+  reduce_states(s.scene, {out}, reduced);
+  EXPECT_EQ(reduced.patches, 3u);
+  EXPECT_EQ(reduced.failed_contacts, 0);
+  const double area = reduced.rate[0].area();
+  EXPECT_NEAR(area, expected, 1e-12 * expected);
+}
+
+// A patch without a Hertz ellipse (none on new S1002/60E1: it is made so here) is not solved
+// under model hertz, counted in hertz_dropped, and adds no wear; the other patch still wears.
+TEST(StateKernel, CountsAPatchWithoutHertzEllipse) {
+  const KernelCase s(two_point_scene("model = \"hertz\"\n"));
+  contactgeom::WheelsetContact contact = s.kernel.contact(s.track, s.scene.states[0]);
+  ASSERT_EQ(contact.left.patches.size(), 2u);
+  contact.left.patches[1].hertz.reset();
+  StateOutcome out;
+  out.wheels[0] = s.kernel.wheel(contact, 0, s.scene.states[0], s.wheel);
+  out.wheels[1] = s.kernel.wheel(contact, 1, s.scene.states[0], s.wheel);
+  EXPECT_EQ(out.wheels[0].hertz_dropped, 1);
+  EXPECT_TRUE(out.wheels[0].patches[0].solved);
+  EXPECT_FALSE(out.wheels[0].patches[1].solved);
+  EXPECT_TRUE(out.wheels[0].patches[1].wear.depth.empty());
+  EXPECT_GT(out.wheels[0].patches[0].wear.area(), 0.0);
+  CollectiveWear reduced;
+  const auto bins = static_cast<std::size_t>(std::ceil(s.wheel.length() / kWearBin)) + 1;
+  reduced.rate.push_back(wear::WearDistribution::zeros(0.0, kWearBin, bins));
+  reduce_states(s.scene, {out}, reduced);
+  EXPECT_EQ(reduced.hertz_dropped, 1u);
+  EXPECT_EQ(reduced.patches, 2u);  // the left tread and the right wheel's patch
+}
+
+class StateKernelRun : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("wheelwear_kernel_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  ResultsFile run(const std::string& text) const {
+    const fs::path out = dir_ / "run.h5";
+    run_scene(parse_scene(text, dir_), text, dir_, false, out, {});
+    return ResultsFile::read(out);
+  }
+  fs::path dir_;
+};
+
+// The per-patch datasets take the step's largest patch count (2 here, no slot cap) and pad the
+// wheel with fewer patches with NaN; states/patches gives the counts.
+TEST_F(StateKernelRun, RecordsEveryPatchPaddedWithNaN) {
+  const ResultsFile file = run(two_point_scene());
+  EXPECT_EQ(file.read_step_array(0, "states/patches"), (std::vector<double>{2.0, 1.0}));
+  for (const char* name : {"states/normal_force", "states/a", "states/Fx", "states/worn_area"}) {
+    const std::vector<double> v = file.read_step_array(0, name);
+    ASSERT_EQ(v.size(), 4u) << name;  // [state, wheel, patch] = 1 x 2 x 2
+    EXPECT_TRUE(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2])) << name;
+    EXPECT_TRUE(std::isnan(v[3])) << name;
+  }
+  EXPECT_EQ(file.read_step_array(0, "hertz_dropped").at(0), 0.0);
+  EXPECT_EQ(file.read_step_array(0, "patches").at(0), 3.0);
+}
+
+// T gamma maps: [state, wheel, patch, strip, cell], NaN where a wheel has no such patch, the
+// work density never negative.
+TEST_F(StateKernelRun, WritesTgammaMapsOfEveryPatch) {
+  const ResultsFile file = run(two_point_scene() + "[output]\ntgamma_maps = true\n");
+  const std::vector<double> work = file.read_step_array(0, "tgamma/work");
+  const std::size_t cells = 10 * 10;
+  ASSERT_EQ(work.size(), 2 * 2 * cells);
+  std::size_t finite = 0;
+  for (std::size_t k = 0; k < work.size(); ++k) {
+    const bool missing_patch = k >= 3 * cells;  // the right wheel's second slot
+    if (missing_patch) {
+      EXPECT_TRUE(std::isnan(work[k]));
+    } else {
+      ASSERT_TRUE(std::isfinite(work[k])) << k;
+      EXPECT_GE(work[k], 0.0);
+      ++finite;
+    }
+  }
+  EXPECT_EQ(finite, 3 * cells);
+}
+
+}  // namespace
+}  // namespace wheelwear::pipeline
