@@ -278,12 +278,15 @@ bool ResultsFile::has(const std::string& full) const {
 }
 
 std::vector<std::string> ResultsFile::step_array_names(int step) const {
-  const std::string group = step_group(step);
+  return array_names(step_group(step));
+}
+
+std::vector<std::string> ResultsFile::array_names(const std::string& group) const {
   std::vector<std::string> names;
   try {
     H5::Exception::dontPrint();
     H5::H5File file(path_.string(), H5F_ACC_RDONLY);
-    if (!file.nameExists(group)) throw InputError("results file: no step group " + group);
+    if (!file.nameExists(group)) throw InputError("results file: no group " + group);
     collect_numeric_datasets(file.openGroup(group), "", names);
   } catch (const H5::Exception& error) {
     throw InputError("results file " + path_.string() + ": cannot list " + group + " (" +

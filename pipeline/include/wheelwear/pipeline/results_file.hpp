@@ -84,6 +84,9 @@ class ResultsFile {
   bool has(const std::string& full_path) const;
   /// The numeric datasets of step `step`, as names below its group ("wheel/y"), sorted.
   std::vector<std::string> step_array_names(int step) const;
+  /// The numeric datasets below the group `group` ("/load_collective"), as names below it,
+  /// sorted; InputError when the group is missing.
+  std::vector<std::string> array_names(const std::string& group) const;
   /// The root attribute `format_version`; 1 for files written before it was there.
   int format_version() const;
   /// A text attribute of the root group; std::nullopt when missing.
