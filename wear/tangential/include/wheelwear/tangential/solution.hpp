@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "wheelwear/tangential/creep_types.hpp"
@@ -48,9 +49,9 @@ struct TangentialSolution {
   int slip_cells = 0;   ///< of them, slipping (the traction reached the bound)
   /// Per-cell fields, with FastsimOptions::cell_fields and a method that has them.
   std::optional<CellFields> fields;
-  /// Frictional work per rolled distance [N]: the sum of work * dA over the cells, which
-  /// the methods best and exact make equal to the rigid slip's work -(Fx vx + Fy vy + Mz phi)
-  /// (table_correction.hpp); 0 for methods without cells.
+  /// Frictional work per rolled distance [N]: FASTSIM methods, the sum of work * dA over the
+  /// cells; best (inside the table) and exact, the rigid slip's work -(Fx vx + Fy vy + Mz phi),
+  /// which their cells then sum to (table_correction.hpp); 0 for linear-sdec, she-sdec, table.
   double frictional_work = 0.0;
   /// Method best: true where the totals came from the book of tables; false where the patch
   /// is outside it (table_outside says why) and FASTSIM-SDEC answered alone.
