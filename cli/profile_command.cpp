@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "json_writer.hpp"
@@ -29,16 +30,23 @@ namespace pr = wheelwear::profiles;
 
 struct ProfileArgs {
   std::string wheel, rail, out, side = "right", unit = "auto", inclination = "1:40";
+  std::string gauge_side = "auto";
   bool info = false, json = false;
   double spacing = 0.5e-3;
   double smoothing = 0.3e-3;
   double max_drop = 0.2;
+  double crop_depth = pr::LoadOptions{}.crop_depth;
   pr::S1002Options s1002;
   CLI::Option* flange_height = nullptr;
   CLI::Option* flange_thickness = nullptr;
   CLI::Option* radius = nullptr;
   CLI::Option* inclination_option = nullptr;
+  CLI::Option* crop_depth_option = nullptr;
+  CLI::Option* gauge_side_option = nullptr;
 };
+
+// Below this estimated inclination a measured rail looks level (1:200).
+constexpr double kLevelInclination = 1.0 / 200.0;
 
 std::string upper(std::string text) {
   for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -69,6 +77,11 @@ pr::LoadedProfile make_profile(const ProfileArgs& args) {
   }
   if (!(!wheel && standard) && args.inclination_option->count() > 0)
     throw InputError("--inclination applies to --rail 60E1 only");
+  if (wheel || standard) {
+    for (const CLI::Option* option : {args.crop_depth_option, args.gauge_side_option})
+      if (option->count() > 0)
+        throw InputError(option->get_name() + " applies to rail files only (--rail FILE)");
+  }
 
   pr::LoadOptions options;
   options.side = side;
@@ -93,9 +106,16 @@ pr::LoadedProfile make_profile(const ProfileArgs& args) {
       raw.points = pr::rail_60e1_points(r);
     }
     options.name = raw.source;
+    options.crop_depth = 0.0;  // the definition's own extent
     raw.lines.assign(raw.points.size(), 0);
     return pr::prepare_profile(std::move(raw), options);
   }
+  options.crop_depth = args.crop_depth;
+  options.crop_always = args.crop_depth_option->count() > 0;
+  const auto mirror = pr::gauge_side_mirror(args.gauge_side);
+  if (!mirror)
+    throw InputError("--gauge-side " + args.gauge_side + ": must be left, right or auto");
+  options.orientation.mirror_y = *mirror;
   const auto unit = pr::parse_length_unit(args.unit);
   if (!unit) throw InputError("--unit " + args.unit + ": must be auto, mm or m");
   options.read.unit = *unit;
@@ -104,10 +124,31 @@ pr::LoadedProfile make_profile(const ProfileArgs& args) {
   return pr::load_profile(what, options);
 }
 
+// "1:40.6", or "level" below 1:10000.
+std::string ratio(double angle) {
+  if (std::abs(std::tan(angle)) < 1e-4) return "level";
+  char text[48];
+  std::snprintf(text, sizeof text, "1:%.1f", 1.0 / std::abs(std::tan(angle)));
+  return text;
+}
+
 void run_profile(const ProfileArgs& args) {
   const pr::LoadedProfile loaded = make_profile(args);
   const pr::Profile& profile = loaded.profile;
   const pr::PointList points = profile.resample(args.spacing);
+  const bool file_rail =
+      !args.rail.empty() && upper(args.rail) != "60E1" && upper(args.rail) != "UIC60";
+  std::optional<pr::InclinationEstimate> inclination;
+  if (profile.body() == pr::Body::rail) inclination = pr::estimate_inclination(profile);
+  std::vector<std::string> warnings = loaded.cleaning.warnings;
+  if (file_rail && inclination && std::abs(inclination->angle) < kLevelInclination)
+    warnings.push_back(
+        loaded.points.source + ": the rail looks level (estimated inclination " +
+        (ratio(inclination->angle) == "level" ? std::string("below 1:10000")
+                                              : ratio(inclination->angle)) +
+        ", less than 1:200). Measured rails usually carry their inclination, but `contact --incl` "
+        "defaults to 0 for files: if this profile is in the rail's own upright frame, give "
+        "contact --incl the track's rail inclination (0.025 for 1:40)");
   if (!args.out.empty()) {
     pr::CsvWriteOptions csv;
     csv.name = profile.info().name;
@@ -115,7 +156,11 @@ void run_profile(const ProfileArgs& args) {
     csv.side = profile.side();
     pr::write_csv(args.out, points, csv);
   }
-  if (!args.out.empty() && !args.info && !args.json) return;
+  if (!args.out.empty() && !args.info && !args.json) {
+    for (const std::string& warning : warnings)
+      std::cerr << "wheelwear: warning: " << warning << '\n';
+    return;
+  }
 
   // Curvature extremes at the output points.
   const double step = profile.length() / static_cast<double>(points.size() - 1);
@@ -142,14 +187,25 @@ void run_profile(const ProfileArgs& args) {
   if (args.json) {
     JsonObject steps;
     for (const auto& s : cleaning.steps) steps.add(s.name, static_cast<int>(s.dropped));
+    std::vector<std::string> repairs, warning_texts;
+    for (const auto& r : cleaning.reading) {
+      JsonObject repair;
+      repair.add("name", r.name).add("count", static_cast<int>(r.count)).add("message", r.message);
+      repairs.push_back(repair.str());
+    }
+    for (const std::string& w : warnings) warning_texts.push_back("\"" + json_escape(w) + "\"");
     JsonObject out;
     out.add("name", profile.info().name)
         .add("body", std::string(pr::to_string(profile.body())))
         .add("side", std::string(pr::to_string(profile.side())))
         .add("points_read", static_cast<int>(loaded.points_read))
         .add("points_kept", static_cast<int>(cleaning.kept_points))
-        .add("points_dropped", static_cast<int>(loaded.points_read - cleaning.kept_points))
+        .add("points_cropped", static_cast<int>(cleaning.crop.cropped()))
+        .add("points_merged", static_cast<int>(cleaning.merged()))
+        .add("points_dropped", static_cast<int>(cleaning.discarded()))
         .add_raw("dropped_by_step", steps.str())
+        .add_raw("read_repairs", json_array(repairs))
+        .add_raw("warnings", json_array(warning_texts))
         .add("kinks", static_cast<int>(cleaning.kinks.size()))
         .add("length", profile.length())
         .add("y_min", profile.y_min())
@@ -161,6 +217,8 @@ void run_profile(const ProfileArgs& args) {
     if (profile.body() == pr::Body::rail) {
       out.add("top_y", top.point[0]).add("top_z", top.point[1]);
       if (gauge) out.add("gauge_point_y", gauge->point[0]).add("gauge_point_z", gauge->point[1]);
+      if (inclination) out.add("inclination", inclination->angle);
+      if (cleaning.crop.cropped() > 0) out.add("crop_depth", cleaning.crop.depth);
     }
     std::cout << out.str() << '\n';
     return;
@@ -168,8 +226,16 @@ void run_profile(const ProfileArgs& args) {
   std::printf("profile    %s (%s, %s side)\n", profile.info().name.c_str(),
               std::string(pr::to_string(profile.body())).c_str(),
               std::string(pr::to_string(profile.side())).c_str());
-  std::printf("points     %s; %zu read, %zu dropped\n", cleaning.summary().c_str(),
-              loaded.points_read, loaded.points_read - cleaning.kept_points);
+  std::printf("points     %s; %zu read, %zu merged, %zu dropped\n", cleaning.summary().c_str(),
+              loaded.points_read, cleaning.merged(), cleaning.discarded());
+  for (const auto& repair : cleaning.reading)  // warnings are printed below
+    if (!repair.warning) std::printf("read       %s\n", repair.message.c_str());
+  if (cleaning.crop.cropped() > 0) {
+    std::printf("crop       %s\n", cleaning.crop.summary().c_str());
+    if (!cleaning.crop.reason.empty())
+      std::printf("crop       needed: whole, the profile was refused: %s\n",
+                  cleaning.crop.reason.c_str());
+  }
   for (const auto& kink : cleaning.kinks)
     std::printf("kink       line %d at (%.3f, %.3f) mm: turns %.0f deg\n", kink.line,
                 kink.point[0] * 1e3, kink.point[1] * 1e3, kink.angle_deg);
@@ -186,7 +252,16 @@ void run_profile(const ProfileArgs& args) {
     if (gauge)
       std::printf("gauge pt   (%.3f, %.3f) mm (14 mm below the top)\n", gauge->point[0] * 1e3,
                   gauge->point[1] * 1e3);
+    else
+      std::printf("gauge pt   none: the gauge side does not reach 14 mm below the top\n");
+    if (inclination)
+      std::printf("incl.      %s (%.4f rad%s), estimated from the crown\n",
+                  ratio(inclination->angle).c_str(), inclination->angle,
+                  ratio(inclination->angle) == "level" ? ""
+                  : inclination->angle > 0.0           ? ", gauge side lower"
+                                                       : ", field side lower");
   }
+  for (const std::string& warning : warnings) std::printf("warning    %s\n", warning.c_str());
   if (!args.out.empty())
     std::printf("written    %s (%zu points, y z in mm)\n", args.out.c_str(), points.size());
 }
@@ -203,8 +278,11 @@ void add_profile_command(CLI::App& app) {
       "vertical, positive downwards. Generated profiles: origin at the taping line (S1002) or\n"
       "the top of rail (60E1). Files keep their origin; their axes are oriented automatically.\n"
       "Files: plain y z text/CSV (header optional), SIMPACK/CONTACT .prw/.prr, MiniProf\n"
-      ".whl/.ban. Bad input gives a message naming file, line and problem, and exit code 2;\n"
-      "an existing --out file is only ever replaced by a complete new one.\n"
+      ".whl/.ban (not .mpt). Bad input gives a message naming file, line and problem, and exit\n"
+      "code 2; an existing --out file is only ever replaced by a complete new one.\n"
+      "A rail file refused whole is cropped to --crop-depth below its top and tried again;\n"
+      "--info reports what the reading accepted, the crop, the estimated rail inclination\n"
+      "and warnings.\n"
       "Examples:\n"
       "  wheelwear profile --wheel S1002 --info --json\n"
       "  wheelwear profile --rail 60E1 --inclination 1:20 --out rail.csv\n"
@@ -232,8 +310,22 @@ void add_profile_command(CLI::App& app) {
       ->check(CLI::IsMember({"auto", "mm", "m"}))
       ->capture_default_str();
   cmd->add_option("--max-drop", args->max_drop,
-                  "fail if the cleaning drops more than this fraction of the points")
+                  "fail if the cleaning drops more than this fraction of the points (merged\n"
+                  "near-duplicates do not count)")
       ->capture_default_str();
+  args->crop_depth_option =
+      cmd->add_option("--crop-depth", args->crop_depth,
+                      "rail files: depth below the top of rail [m] to crop the ends to. By\n"
+                      "default only a rail refused whole (a gauge face receding below 25 mm) is\n"
+                      "cropped; given, every rail is. 0 never crops, else 0.014 ... 0.2")
+          ->capture_default_str();
+  args->gauge_side_option =
+      cmd->add_option("--gauge-side", args->gauge_side,
+                      "rail files: where the file has the gauge face on its lateral axis as\n"
+                      "written: left = smaller values, right = larger (MiniProf rails: right),\n"
+                      "auto = the end measured deeper; set it when auto mirrors a rail")
+          ->check(CLI::IsMember({"auto", "left", "right"}))
+          ->capture_default_str();
   args->flange_height =
       cmd->add_option("--flange-height", args->s1002.flange_height,
                       "S1002 flange height Sh [m], 0.028 ... 0.032 (EN 13715 h28 ... h32)")

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 
@@ -26,12 +27,20 @@ double turn_deg(const Point& a, const Point& b, const Point& c) {
   return std::acos(cosine) * 180.0 / std::numbers::pi;
 }
 
+constexpr std::size_t kListedLines = 20;
+
+// Counts the flagged points and collects their lines (first_lines_in_file_order sorts them).
 void record(CleaningStep& step, const RawProfile& raw, const std::vector<bool>& drop) {
   for (std::size_t i = 0; i < drop.size(); ++i) {
     if (!drop[i]) continue;
     ++step.dropped;
-    if (step.lines.size() < 20 && i < raw.lines.size()) step.lines.push_back(raw.lines[i]);
+    if (i < raw.lines.size() && raw.lines[i] > 0) step.lines.push_back(raw.lines[i]);
   }
+}
+
+void first_lines_in_file_order(std::vector<int>& lines) {
+  std::sort(lines.begin(), lines.end());
+  if (lines.size() > kListedLines) lines.resize(kListedLines);
 }
 
 std::string format_deg(double value) {
@@ -42,6 +51,14 @@ std::string format_deg(double value) {
 
 std::string format_mm(double metres) {
   std::ostringstream out;
+  out << metres * 1e3 << " mm";
+  return out.str();
+}
+
+std::string format_depth(double metres) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(1);
   out << metres * 1e3 << " mm";
   return out.str();
 }
@@ -68,6 +85,31 @@ void CleaningOptions::validate() const {
           "maximum drop fraction", max_drop_fraction, "must be in [0, 1]");
 }
 
+std::string CropReport::summary() const {
+  if (cropped() == 0) return "";
+  std::ostringstream out;
+  const auto side = [&](const char* name, std::size_t count, std::pair<int, int> lines) {
+    out << name << " " << count;
+    if (lines.first > 0) {
+      out << (lines.first == lines.second ? ", line " : ", lines ") << lines.first;
+      if (lines.second != lines.first) out << " ... " << lines.second;
+    }
+    out << "; ";
+  };
+  out << "cropped " << cropped() << (cropped() == 1 ? " point" : " points") << " deeper than "
+      << format_mm(depth) << " below the top of rail (";
+  if (gauge_side > 0) side("gauge side", gauge_side, gauge_lines);
+  if (field_side > 0) side("field side", field_side, field_lines);
+  out << "down to " << format_depth(deepest) << ")";
+  return out.str();
+}
+
+std::size_t CleaningReport::merged() const {
+  for (const CleaningStep& step : steps)
+    if (step.name == "merge_duplicates") return step.dropped;
+  return 0;
+}
+
 std::string CleaningReport::summary() const {
   std::ostringstream out;
   out << "kept " << kept_points << " of " << input_points << " points";
@@ -77,7 +119,71 @@ std::string CleaningReport::summary() const {
       details += (details.empty() ? "" : ", ") + step.name + " " + std::to_string(step.dropped);
   if (!details.empty()) out << " (" << details << ")";
   if (!kinks.empty()) out << "; " << kinks.size() << (kinks.size() == 1 ? " kink" : " kinks");
+  if (crop.cropped() > 0)
+    out << "; cropped " << crop.cropped() << " below " << format_mm(crop.depth);
+  std::string read;
+  for (const ReadRepair& repair : reading)
+    read += (read.empty() ? "" : ", ") + repair.name + " " + std::to_string(repair.count);
+  if (!read.empty()) out << "; read: " << read;
   return out.str();
+}
+
+void check_crop_depth(double depth) {
+  require(std::isfinite(depth) && (depth == 0.0 || (depth >= 0.014 && depth <= 0.2)),
+          "rail crop depth [m]", depth,
+          "must be 0 (no crop) or in [0.014, 0.2]: the gauge point lies 14 mm below the top");
+}
+
+CropReport crop_rail(RawProfile& raw, double depth, const CleaningOptions& options) {
+  check_crop_depth(depth);
+  options.validate();
+  CropReport report;
+  report.depth = depth;
+  auto& pts = raw.points;
+  if (depth == 0.0 || pts.size() < 3) return report;
+  if (raw.lines.size() != pts.size()) raw.lines.assign(pts.size(), 0);
+
+  std::vector<double> ys, zs;
+  for (const Point& p : pts) {
+    ys.push_back(p[0]);
+    zs.push_back(p[1]);
+  }
+  const double ym = median(ys), zm = median(zs);
+  double top = std::numeric_limits<double>::infinity();
+  for (const Point& p : pts)
+    if (std::abs(p[0] - ym) <= options.box_half_width &&
+        std::abs(p[1] - zm) <= options.box_half_height)
+      top = std::min(top, p[1]);
+  if (!std::isfinite(top)) return report;
+  report.top = top;
+  const auto deep = [&](std::size_t i) { return pts[i][1] - top > depth; };
+
+  // The runs of deep points at both ends; each keeps its point next to the head.
+  const std::size_t n = pts.size();
+  std::size_t first = 0;
+  while (first < n && deep(first)) ++first;
+  if (first == n) return report;  // nothing above the depth: leave it to validation
+  std::size_t last = n - 1;
+  while (deep(last)) --last;
+  std::vector<bool> drop(n, false);
+  for (std::size_t i = 0; i + 1 < first; ++i) drop[i] = true;
+  for (std::size_t i = last + 2; i < n; ++i) drop[i] = true;
+  report.gauge_side = first > 1 ? first - 1 : 0;
+  report.field_side = last + 2 < n ? n - last - 2 : 0;
+  // Line ranges in file order: orientation may have reversed the rows.
+  const auto range = [&](std::size_t from, std::size_t to) {  // points [from, to)
+    std::pair<int, int> lines{0, 0};
+    if (from >= to || raw.lines[from] <= 0 || raw.lines[to - 1] <= 0) return lines;
+    lines = {raw.lines[from], raw.lines[to - 1]};
+    if (lines.first > lines.second) std::swap(lines.first, lines.second);
+    return lines;
+  };
+  report.gauge_lines = range(0, report.gauge_side);
+  report.field_lines = range(n - report.field_side, n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (drop[i]) report.deepest = std::max(report.deepest, pts[i][1] - top);
+  raw.erase_if(drop);
+  return report;
 }
 
 CleaningReport clean(RawProfile& raw, Body body, const CleaningOptions& options) {
@@ -108,6 +214,7 @@ CleaningReport clean(RawProfile& raw, Body body, const CleaningOptions& options)
       record(step, raw, drop);
       raw.erase_if(drop);
     }
+    first_lines_in_file_order(step.lines);
     report.steps.push_back(step);
   }
 
@@ -129,6 +236,7 @@ CleaningReport clean(RawProfile& raw, Body body, const CleaningOptions& options)
     }
     record(step, raw, drop);
     raw.erase_if(drop);
+    first_lines_in_file_order(step.lines);
     report.steps.push_back(step);
   }
 
@@ -151,6 +259,7 @@ CleaningReport clean(RawProfile& raw, Body body, const CleaningOptions& options)
       record(step, raw, drop);
       raw.erase_if(drop);
     }
+    first_lines_in_file_order(step.lines);
     report.steps.push_back(step);
   }
 
@@ -180,6 +289,7 @@ CleaningReport clean(RawProfile& raw, Body body, const CleaningOptions& options)
       record(step, raw, drop);
       raw.erase_if(drop);
     }
+    first_lines_in_file_order(step.lines);
     report.steps.push_back(step);
   }
 
@@ -188,23 +298,28 @@ CleaningReport clean(RawProfile& raw, Body body, const CleaningOptions& options)
     const double angle = turn_deg(pts[k - 1], pts[k], pts[k + 1]);
     if (angle > options.kink_deg) report.kinks.push_back({raw.lines[k], pts[k], angle});
   }
+  std::stable_sort(report.kinks.begin(), report.kinks.end(),
+                   [](const Kink& a, const Kink& b) { return a.line < b.line; });
 
   report.kept_points = pts.size();
-  const double fraction = report.input_points > 0 ? static_cast<double>(report.dropped()) /
+  const double fraction = report.input_points > 0 ? static_cast<double>(report.discarded()) /
                                                         static_cast<double>(report.input_points)
                                                   : 0.0;
   if (fraction > options.max_drop_fraction) {
     std::ostringstream message;
-    message << raw.source << ": cleaning dropped " << report.dropped() << " of "
+    message << raw.source << ": cleaning dropped " << report.discarded() << " of "
             << report.input_points << " points (" << std::lround(100.0 * fraction)
             << "%), more than the allowed " << 100.0 * options.max_drop_fraction << "%: ";
     bool first = true;
     for (const CleaningStep& step : report.steps)
-      if (step.dropped > 0) {
+      if (step.dropped > 0 && step.name != "merge_duplicates") {
         message << (first ? "" : ", ") << step.name << " " << step.dropped << " (" << step.rule
                 << ")";
         first = false;
       }
+    if (report.merged() > 0)
+      message << "; besides, " << report.merged() << " near-duplicate points were merged (not "
+              << "counted)";
     message << ". The data are too noisy or are not one profile.";
     throw InputError(message.str());
   }

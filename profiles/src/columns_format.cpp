@@ -107,6 +107,12 @@ bool is_vertical(const std::string& name) {
   return name == "z" || name == "vertical" || name == "height" || name.rfind("z", 0) == 0;
 }
 
+bool all_numbers(const std::vector<std::string>& tokens) {
+  return !tokens.empty() && std::all_of(tokens.begin(), tokens.end(), [](const std::string& t) {
+    return parse_number(t).has_value();
+  });
+}
+
 double span(const std::vector<std::vector<double>>& rows, std::size_t column) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const auto& row : rows)
@@ -126,9 +132,11 @@ RawProfile parse_columns(std::string_view text, std::string_view source,
   raw.source = std::string(source);
   raw.format = "columns";
   std::vector<ColumnName> header;
+  std::vector<std::string> header_names;  // as written, for messages
   int header_line = 0;
   std::vector<std::vector<double>> rows;
-  std::vector<int> row_lines;
+  std::vector<std::vector<std::string>> row_tokens;
+  std::vector<int> row_lines, comment_lines;
   const auto lines = split_lines(text);
   for (std::size_t index = 0; index < lines.size(); ++index) {
     const int number = static_cast<int>(index + 1);
@@ -138,15 +146,25 @@ RawProfile parse_columns(std::string_view text, std::string_view source,
         line.substr(0, 2) == "//") {
       // wheelwear's own metadata comments: "# body: wheel", "# side: right".
       const std::string comment = to_lower(trim(line.substr(line.front() == '/' ? 2 : 1)));
-      if (comment == "body: wheel") raw.body = Body::wheel;
-      if (comment == "body: rail") raw.body = Body::rail;
+      if (comment == "body: wheel" || comment == "body: rail") {
+        raw.body = comment == "body: wheel" ? Body::wheel : Body::rail;
+        raw.body_line = number;
+      }
       if (comment == "side: left") raw.side = Side::left;
       if (comment == "side: right") raw.side = Side::right;
       continue;
     }
-    const auto hash = line.find('#');
-    if (hash != std::string_view::npos) line = trim(line.substr(0, hash));
-    const std::vector<std::string> tokens = tokens_of(line);
+    // A row of numbers followed by a comment ('"', '%', '!' or '#', as CONTACT reads profiles) is
+    // a point row; in other lines only '#' starts a comment (a header may quote its names).
+    bool commented = false;
+    const std::string_view before = strip_row_comment(line, commented);
+    if (commented && !before.empty() && all_numbers(tokens_of(before))) {
+      line = before;
+      comment_lines.push_back(number);
+    } else if (const auto hash = line.find('#'); hash != std::string_view::npos) {
+      line = trim(line.substr(0, hash));
+    }
+    std::vector<std::string> tokens = tokens_of(line);
     if (tokens.empty()) continue;
     std::vector<double> values;
     for (const std::string& token : tokens) {
@@ -156,13 +174,15 @@ RawProfile parse_columns(std::string_view text, std::string_view source,
     }
     if (values.size() != tokens.size()) {
       if (rows.empty() && header.empty()) {
-        for (const std::string& token : header_tokens(line))
+        for (const std::string& token : header_tokens(line)) {
           header.push_back(parse_column_name(token));
+          header_names.push_back(token);
+        }
         header_line = number;
         continue;
       }
       throw InputError(raw.source + ":" + std::to_string(number) + ": \"" +
-                       std::string(line.substr(0, 60)) + "\" is not a row of numbers");
+                       quote_line(lines[index]) + "\" is not a row of numbers");
     }
     if (values.size() < 2)
       throw InputError(raw.source + ":" + std::to_string(number) + ": " +
@@ -174,8 +194,12 @@ RawProfile parse_columns(std::string_view text, std::string_view source,
                        std::to_string(row_lines.front()) + " has " +
                        std::to_string(rows.front().size()));
     rows.push_back(std::move(values));
+    row_tokens.push_back(std::move(tokens));
     row_lines.push_back(number);
   }
+  if (!comment_lines.empty())
+    raw.add_repair("trailing_comments", comment_lines,
+                   trailing_comment_text(comment_lines.size(), "\", %, ! or #"));
   if (rows.empty()) {
     raw.notes.push_back("no numeric rows");
     return raw;
@@ -241,9 +265,16 @@ RawProfile parse_columns(std::string_view text, std::string_view source,
   }
   const double scale = unit == LengthUnit::millimetre ? 1e-3 : 1.0;
   raw.points.reserve(rows.size());
-  for (const auto& row : rows)
-    raw.points.emplace_back(row[y_column] * scale, row[z_column] * scale);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    raw.points.emplace_back(rows[r][y_column] * scale, rows[r][z_column] * scale);
+    raw.written.push_back({row_lines[r], row_tokens[r][y_column], row_tokens[r][z_column]});
+  }
   raw.lines = std::move(row_lines);
+  raw.written_unit = unit == LengthUnit::millimetre ? "mm" : "m";
+  if (y_column < header_names.size() && z_column < header_names.size()) {
+    raw.lateral_name = header_names[y_column];
+    raw.vertical_name = header_names[z_column];
+  }
   return raw;
 }
 

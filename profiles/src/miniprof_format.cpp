@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,21 +37,55 @@ std::vector<std::string> split_values(std::string_view line) {
   return out;
 }
 
+// The values of a row of numbers; nullopt if a token is not a number.
+std::optional<std::vector<double>> numbers_of(const std::vector<std::string>& tokens) {
+  std::vector<double> values;
+  for (const std::string& token : tokens) {
+    const auto value = parse_number(token);
+    if (!value) return std::nullopt;
+    values.push_back(*value);
+  }
+  return values;
+}
+
+// Line (1-based) of a "[FileInfo]" section among the first three lines, 0 if none.
+int mpt_marker_line(const std::vector<std::string_view>& lines) {
+  for (std::size_t i = 0; i < std::min<std::size_t>(3, lines.size()); ++i)
+    if (lines[i].find("[FileInfo]") != std::string_view::npos) return static_cast<int>(i + 1);
+  return 0;
+}
+
+constexpr const char* kMptRefusal =
+    "MiniProf .mpt files are not supported; export .whl/.ban from MiniProf";
+
 }  // namespace
+
+bool is_miniprof_mpt(std::string_view extension, std::string_view text) {
+  return to_lower(extension) == ".mpt" ||
+         mpt_marker_line(split_lines(text.substr(0, std::min<std::size_t>(text.size(), 4096)))) > 0;
+}
 
 RawProfile parse_miniprof(std::string_view text, std::string_view source,
                           std::string_view extension, const ReadOptions& options) {
   (void)options;
-  check_text(text, source);
-  RawProfile raw;
-  raw.source = std::string(source);
-  raw.format = "miniprof";
   const std::string src(source);
+  const std::string ext = to_lower(extension);
+  if (ext == ".mpt") throw InputError(src + ": " + kMptRefusal);
+  check_text(text, source);
   const auto lines = split_lines(text);
+  if (const int marker = mpt_marker_line(lines))
+    throw InputError(src + ":" + std::to_string(marker) + ": \"" +
+                     quote_line(lines[static_cast<std::size_t>(marker - 1)]) +
+                     "\" begins a MiniProf multi-profile (.mpt) file; " + kMptRefusal);
+  RawProfile raw;
+  raw.source = src;
+  raw.format = "miniprof";
+  raw.lateral_name = "X";
+  raw.vertical_name = "Y";
+  raw.written_unit = "mm";
   bool old_layout = false;
   for (std::size_t i = 0; i < std::min<std::size_t>(3, lines.size()); ++i)
     if (lines[i].find("MINIPROF") != std::string_view::npos) old_layout = true;
-  const std::string ext = to_lower(extension);
   if (ext == ".whl" || (!lines.empty() && lines.front().rfind("#MINIWHEELPROF", 0) == 0))
     raw.body = Body::wheel;
   else if (ext == ".ban")
@@ -57,9 +93,11 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
 
   bool in_data = false;
   std::vector<std::vector<double>> rows;
-  std::vector<int> row_lines;
+  std::vector<std::vector<std::string>> row_tokens;
+  std::vector<int> row_lines, comment_lines;
   std::string column_def = "X,Y";
   std::optional<double> declared_points;
+  int declared_line = 0;
   for (std::size_t index = 0; index < lines.size(); ++index) {
     const int number = static_cast<int>(index + 1);
     const std::string_view line = trim(lines[index]);
@@ -90,6 +128,29 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
       }
       continue;
     }
+    if (line.front() == '%' || line.front() == '!' || line.front() == '#') continue;  // comment
+    // A row of numbers, possibly followed by a comment, is a point row; in the header only with
+    // two values or more (the points may follow the header without the empty line).
+    bool commented = false;
+    const std::string_view content = strip_row_comment(line, commented);
+    std::vector<std::string> tokens = split_values(content);
+    std::optional<std::vector<double>> values = numbers_of(tokens);
+    if (values && !values->empty() && (in_data || values->size() >= 2)) {
+      if (!in_data && rows.empty())
+        raw.add_repair("no_blank_line", {number},
+                       "the points follow the header without an empty line; this line is taken "
+                       "as the first point");
+      in_data = true;
+      if (commented) comment_lines.push_back(number);
+      if (!rows.empty() && values->size() != rows.front().size())
+        throw InputError(where() + ": " + std::to_string(values->size()) + " values, but line " +
+                         std::to_string(row_lines.front()) + " has " +
+                         std::to_string(rows.front().size()) + " (truncated line?)");
+      rows.push_back(std::move(*values));
+      row_tokens.push_back(std::move(tokens));
+      row_lines.push_back(number);
+      continue;
+    }
     const auto eq = line.find('=');
     if (eq != std::string_view::npos) {
       const std::string key(trim(line.substr(0, eq)));
@@ -98,30 +159,21 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
       if (key == "ColumnDef") column_def = value;
       if (key == "XYPoints" && !value.empty()) {
         declared_points = parse_number(value);
-        if (!declared_points || *declared_points < 0.0)
-          throw InputError(where() + ": XYPoints=" + value + " is not a point count");
+        declared_line = number;
+        if (!declared_points || *declared_points < 0.0 ||
+            *declared_points != std::floor(*declared_points))
+          throw InputError(where() + ": XYPoints=" + value +
+                           " is not a point count (a whole number of points)");
       }
       continue;
     }
     if (!in_data) {
       if (old_layout) continue;  // free header text of the older layout
-      throw InputError(where() + ": \"" + std::string(line.substr(0, 60)) +
+      throw InputError(where() + ": \"" + quote_line(line) +
                        "\" is neither a key=value header line nor a point row");
     }
-    std::vector<double> values;
-    for (const std::string& token : split_values(line)) {
-      const auto value = parse_number(token);
-      if (!value)
-        throw InputError(where() + ": \"" + std::string(line.substr(0, 60)) +
-                         "\" is not a row of numbers");
-      values.push_back(*value);
-    }
-    if (!rows.empty() && values.size() != rows.front().size())
-      throw InputError(where() + ": " + std::to_string(values.size()) + " values, but line " +
-                       std::to_string(row_lines.front()) + " has " +
-                       std::to_string(rows.front().size()) + " (truncated line?)");
-    rows.push_back(std::move(values));
-    row_lines.push_back(number);
+    throw InputError(where() + ": \"" + quote_line(line) +
+                     "\" is not a row of numbers (text after \", %, ! or # is a comment)");
   }
 
   // ColumnDef names the columns one letter each: X lateral, Y vertical.
@@ -137,11 +189,23 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
     throw InputError(src + ":" + std::to_string(row_lines.front()) + ": " +
                      std::to_string(rows.front().size()) + " values per row, but ColumnDef=" +
                      column_def + " needs column " + std::to_string(std::max(xi, yi) + 1));
-  if (declared_points && static_cast<double>(rows.size()) != *declared_points)
-    throw InputError(src + ": the header declares XYPoints=" + format_number(*declared_points) +
-                     " but " + std::to_string(rows.size()) +
-                     " points were read (truncated or damaged file?)");
-  for (const auto& row : rows) raw.points.emplace_back(row[xi] * 1e-3, row[yi] * 1e-3);
+  if (declared_points && static_cast<double>(rows.size()) != *declared_points) {
+    const std::string counts = "the header declares XYPoints=" + format_number(*declared_points) +
+                               " but " + std::to_string(rows.size()) + " points were read";
+    // One row more or less is accepted with a warning: the points read are complete rows, and a
+    // count one off does not make a profile unusable. More than that means a damaged file.
+    if (std::abs(static_cast<double>(rows.size()) - *declared_points) > 1.0)
+      throw InputError(src + ": " + counts + " (truncated or damaged file?)");
+    raw.add_repair("point_count", {declared_line},
+                   counts + "; accepted (off by one), check that no point is missing", true);
+  }
+  if (!comment_lines.empty())
+    raw.add_repair("trailing_comments", comment_lines,
+                   trailing_comment_text(comment_lines.size(), "\", %, ! or #"));
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    raw.points.emplace_back(rows[r][xi] * 1e-3, rows[r][yi] * 1e-3);
+    raw.written.push_back({row_lines[r], row_tokens[r][xi], row_tokens[r][yi]});
+  }
   raw.lines = std::move(row_lines);
   raw.notes.push_back(std::string("MiniProf ") + (old_layout ? "older" : "key=value") +
                       " layout, ColumnDef=" + column_def + ", mm");

@@ -28,6 +28,13 @@ bool near_end(std::size_t index, std::size_t count, double fraction) {
 
 }  // namespace
 
+std::optional<Mirror> gauge_side_mirror(std::string_view text) {
+  if (text == "auto") return Mirror::automatic;
+  if (text == "left") return Mirror::keep;
+  if (text == "right") return Mirror::flip;
+  return std::nullopt;
+}
+
 OrientationReport orient(RawProfile& raw, Body body, const OrientationOptions& options) {
   OrientationReport report;
   auto& points = raw.points;
@@ -69,6 +76,13 @@ OrientationReport orient(RawProfile& raw, Body body, const OrientationOptions& o
       report.notes.push_back(flip_y ? "y: the +y end is deeper (gauge face), y negated"
                                     : "y: gauge face taken on the -y side");
     }
+  }
+  if (options.mirror_y != Mirror::automatic) {
+    if (body == Body::rail)
+      report.notes.push_back(flip_y ? "y: gauge face at the file's larger y as set, y negated"
+                                    : "y: gauge face at the file's smaller y as set");
+    else
+      report.notes.push_back(flip_y ? "y: negated as set" : "y: kept as set");
   }
   if (flip_y) {
     for (Point& p : points) p[0] = -p[0];

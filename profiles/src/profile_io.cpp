@@ -4,15 +4,16 @@
 #include <cctype>
 #include <string>
 
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 #include "wheelwear/profiles/columns_format.hpp"
 #include "wheelwear/profiles/miniprof_format.hpp"
 #include "wheelwear/profiles/simpack_format.hpp"
-#include "wheelwear/core/text.hpp"
 
 namespace wheelwear::profiles {
 
-using core::to_lower;
 using core::read_text_file;
+using core::to_lower;
 
 namespace {
 
@@ -26,6 +27,7 @@ FileFormat detect_format(const std::filesystem::path& path, std::string_view tex
   const std::string ext = lower_extension(path);
   if (ext == ".prr" || ext == ".prw") return FileFormat::simpack;
   if (ext == ".whl" || ext == ".ban") return FileFormat::miniprof;
+  if (is_miniprof_mpt(ext, text)) return FileFormat::miniprof;  // to be refused by name
   const std::string_view head = text.substr(0, std::min<std::size_t>(text.size(), 8192));
   if (head.find("header.begin") != std::string_view::npos ||
       head.find("spline.begin") != std::string_view::npos)
@@ -50,6 +52,16 @@ RawProfile parse_profile_text(std::string_view text, std::string_view source, Fi
     case FileFormat::columns:
       raw = parse_columns(text, source, options);
       break;
+  }
+  if (options.body && raw.body && raw.body_line > 0 && *raw.body != *options.body) {
+    const std::string stated(to_string(*raw.body)), expected(to_string(*options.body));
+    throw InputError(raw.source + ":" + std::to_string(raw.body_line) + ": the file says it is a " +
+                     stated + " profile" +
+                     (raw.format == "simpack"
+                          ? std::string(" (type = ") + (*raw.body == Body::wheel ? "1" : "0") + ")"
+                          : std::string()) +
+                     ", but a " + expected + " profile is expected here; give a " + expected +
+                     " profile file");
   }
   if (options.body) raw.body = options.body;
   return raw;

@@ -1,9 +1,72 @@
 #include "wheelwear/profiles/profile_loader.hpp"
 
+#include <cmath>
+#include <sstream>
+
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/profile_io.hpp"
+#include "wheelwear/profiles/track.hpp"
 
 namespace wheelwear::profiles {
+
+namespace {
+
+// An estimated inclination below minus this (1:200) means the field side lies lower.
+constexpr double kMirroredInclination = 1.0 / 200.0;
+
+std::string mm(double metres) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(1);
+  out << metres * 1e3 << " mm";
+  return out.str();
+}
+
+// A rail whose gauge side does not reach the gauge measuring depth has no gauge point, and
+// `contact` cannot place it; say so while the file is at hand, with the likely cause.
+std::optional<std::string> gauge_point_warning(const Profile& rail, const RawProfile& raw,
+                                               const OrientationReport& orientation) {
+  const TrackGeometry track;
+  try {
+    gauge_point(rail, track.gauge_measuring_depth);
+    return std::nullopt;
+  } catch (const InputError&) {
+  }
+  const double reach = rail.position(0.0)[1] - top_of_rail(rail).point[1];
+  const int line = raw.lines.empty() ? 0 : raw.lines.front();
+  std::string message = raw.source + (line > 0 ? ":" + std::to_string(line) : std::string()) +
+                        ": no gauge point: the gauge side (the profile's -y end" +
+                        (orientation.mirrored_y ? ", the file's larger lateral values"
+                                                : ", the file's smaller lateral values") +
+                        ") reaches " + mm(reach) + " below the top of rail, less than the " +
+                        mm(track.gauge_measuring_depth) +
+                        " where the gauge is measured, so `contact` cannot place this rail. If "
+                        "the gauge face is at the file's other end, set the gauge side "
+                        "(profile --gauge-side, LoadOptions::orientation.mirror_y)";
+  return message;
+}
+
+// Rails are laid canted towards the track centre, so a profile whose field side lies lower was
+// probably oriented the wrong way round by the automatic rule (a rail measured deeper on its
+// field side, as switch rails can be).
+std::optional<std::string> mirrored_rail_warning(const Profile& rail, const RawProfile& raw,
+                                                 const OrientationReport& orientation) {
+  const auto inclination = estimate_inclination(rail);
+  if (!inclination || inclination->angle > -kMirroredInclination) return std::nullopt;
+  std::ostringstream message;
+  message.precision(3);
+  message << raw.source << ": the field side lies lower than the gauge side (estimated "
+          << "inclination " << inclination->angle
+          << " rad, about 1:" << std::lround(1.0 / std::abs(std::tan(inclination->angle)))
+          << "), but rails are canted towards the track centre: the gauge face is probably at "
+          << "the file's other end (" << (orientation.mirrored_y ? "smaller" : "larger")
+          << " lateral values; the automatic rule takes the end measured deeper). Set the gauge "
+          << "side if so (profile --gauge-side " << (orientation.mirrored_y ? "left" : "right")
+          << ", LoadOptions::orientation.mirror_y)";
+  return message.str();
+}
+
+}  // namespace
 
 LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options) {
   const std::optional<Body> body = options.read.body ? options.read.body : raw.body;
@@ -13,9 +76,46 @@ LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options) {
   const std::size_t read = raw.points.size();
   validate_points(raw, options.validation);
   OrientationReport orientation = orient(raw, *body, options.orientation);
-  validate_order(raw, *body, options.validation);
-  CleaningReport cleaning = clean(raw, *body, options.cleaning);
-  validate_geometry(raw, options.validation);
+  // The stages after orientation; a rail refused whole is cropped and tried again (LoadOptions).
+  const auto clean_and_check = [&](RawProfile& points) {
+    validate_order(points, *body, options.validation);
+    CleaningReport report = clean(points, *body, options.cleaning);
+    validate_geometry(points, options.validation);
+    return report;
+  };
+  CleaningReport cleaning;
+  if (*body == Body::rail) check_crop_depth(options.crop_depth);  // before anything is tried
+  if (*body == Body::rail && options.crop_depth > 0.0) {
+    if (options.crop_always) {
+      const CropReport crop = crop_rail(raw, options.crop_depth, options.cleaning);
+      cleaning = clean_and_check(raw);
+      cleaning.crop = crop;
+    } else {
+      RawProfile whole = raw;
+      try {
+        cleaning = clean_and_check(whole);
+        raw = std::move(whole);
+      } catch (const InputError& refused) {
+        CropReport crop = crop_rail(raw, options.crop_depth, options.cleaning);
+        if (crop.cropped() == 0) throw;
+        crop.reason = refused.what();
+        try {
+          cleaning = clean_and_check(raw);
+        } catch (const InputError& again) {
+          if (crop.reason == again.what())
+            throw InputError(crop.reason + " (also after " + crop.summary() + ")");
+          throw InputError(std::string(again.what()) + " (after " + crop.summary() +
+                           ", needed because the whole profile was refused: " + crop.reason + ")");
+        }
+        cleaning.crop = crop;
+      }
+    }
+  } else {
+    cleaning = clean_and_check(raw);
+  }
+  cleaning.reading = raw.repairs;
+  for (const ReadRepair& repair : raw.repairs)
+    if (repair.warning) cleaning.warnings.push_back(repair.message);
   ProfileInfo info;
   info.name =
       options.name.empty() ? std::filesystem::path(raw.source).filename().string() : options.name;
@@ -23,6 +123,13 @@ LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options) {
   info.side = options.side.value_or(raw.side.value_or(Side::right));
   info.nominal_radius = options.nominal_radius;
   Profile profile(raw.points, info, options.curve);
+  if (*body == Body::rail) {
+    if (const auto warning = gauge_point_warning(profile, raw, orientation))
+      cleaning.warnings.push_back(*warning);
+    if (options.orientation.mirror_y == Mirror::automatic)
+      if (const auto warning = mirrored_rail_warning(profile, raw, orientation))
+        cleaning.warnings.push_back(*warning);
+  }
   return LoadedProfile{std::move(profile), std::move(raw), read, std::move(orientation),
                        std::move(cleaning)};
 }

@@ -53,7 +53,8 @@ RawProfile parse_simpack(std::string_view text, std::string_view source,
   bool saw_points = false, points_ended = false;
   std::map<std::string, double> numbers;
   std::vector<double> weights;
-  int last_line = 0;
+  int last_line = 0, type_line = 0;
+  std::vector<int> comment_lines;
   for (std::size_t index = 0; index < lines.size(); ++index) {
     const int number = static_cast<int>(index + 1);
     last_line = number;
@@ -82,7 +83,14 @@ RawProfile parse_simpack(std::string_view text, std::string_view source,
       continue;
     }
     if (section == "point") {
+      // '!' comments are the format's; text after '"', '%' or '#' is a comment as well (CONTACT's
+      // readers treat it so), recorded as a repair.
+      bool commented = false;
+      const std::string_view row = strip_row_comment(line, commented);
+      if (row.empty()) continue;
+      if (commented) comment_lines.push_back(number);
       std::vector<double> values;
+      std::vector<std::string> tokens;
       std::string token;
       bool numeric = true;
       auto flush = [&] {
@@ -92,9 +100,10 @@ RawProfile parse_simpack(std::string_view text, std::string_view source,
           numeric = false;
         else
           values.push_back(*value);
+        tokens.push_back(token);
         token.clear();
       };
-      for (char c : line) {
+      for (char c : row) {
         if (c == ' ' || c == '\t' || c == ',')
           flush();
         else
@@ -102,23 +111,25 @@ RawProfile parse_simpack(std::string_view text, std::string_view source,
       }
       flush();
       if (!numeric)
-        throw InputError(where() + ": \"" + std::string(line.substr(0, 60)) +
+        throw InputError(where() + ": \"" + quote_line(lines[index]) +
                          "\" is not a row of numbers in the point block");
       if (values.size() < 2 || values.size() > 3)
         throw InputError(where() + ": " + std::to_string(values.size()) +
                          " values where \"y z [weight]\" is expected (truncated line?)");
       raw.points.emplace_back(values[0], values[1]);
       raw.lines.push_back(number);
+      raw.written.push_back({number, tokens[0], tokens[1]});
       weights.push_back(values.size() == 3 ? values[2] : 1.0);
       continue;
     }
     const auto eq = line.find('=');
     if (eq == std::string_view::npos || section.empty())
-      throw InputError(where() + ": \"" + std::string(line.substr(0, 60)) +
+      throw InputError(where() + ": \"" + quote_line(lines[index]) +
                        "\" is neither a key = value line nor a section marker");
     const std::string key = section + "." + std::string(trim(line.substr(0, eq)));
     const std::string value = unquote(line.substr(eq + 1));
     raw.header.emplace_back(key, value);
+    if (key == "header.type") type_line = number;
     if (const auto v = parse_number(value)) numbers[key] = *v;
   }
   if (!saw_points) throw InputError(src + ": no point block (point.begin ... point.end)");
@@ -131,7 +142,11 @@ RawProfile parse_simpack(std::string_view text, std::string_view source,
     require(type == 0.0 || type == 1.0, src + ": header type", type,
             "must be 0 (rail) or 1 (wheel)");
     raw.body = type == 1.0 ? Body::wheel : Body::rail;
+    raw.body_line = type_line;
   }
+  if (!comment_lines.empty())
+    raw.add_repair("trailing_comments", comment_lines,
+                   trailing_comment_text(comment_lines.size(), "\", % or #"));
   auto get = [&](const std::string& key, double fallback) {
     const auto it = numbers.find("spline." + key);
     return it == numbers.end() ? fallback : it->second;
@@ -199,6 +214,10 @@ RawProfile parse_simpack(std::string_view text, std::string_view source,
   if (!numbers.count("spline.units.len.f"))
     raw.notes.push_back("no units.len.f: lengths taken as mm");
   for (Point& p : pts) p /= length_factor;
+  raw.written_unit = length_factor == 1000.0 ? "mm"
+                     : length_factor == 1.0
+                         ? "m"
+                         : "file units, units.len.f = " + format_number(length_factor);
   return raw;
 }
 

@@ -94,6 +94,31 @@ ProfilePoint gauge_point(const Profile& rail, double measuring_depth) {
   return best;
 }
 
+std::optional<InclinationEstimate> estimate_inclination(const Profile& rail, double axis_offset,
+                                                        double half_width) {
+  require(std::isfinite(axis_offset) && std::isfinite(half_width) && half_width > 0.0,
+          "inclination chord half width [m]", half_width, "must be > 0");
+  ProfilePoint gauge;
+  try {
+    gauge = gauge_point(rail);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+  const double depth = gauge.point[1] - top_of_rail(rail).point[1];
+  std::optional<InclinationEstimate> estimate;
+  double slope = 0.0;
+  for (int step = 0; step < 2; ++step) {
+    const double axis = gauge.point[0] + axis_offset - depth * slope;
+    const auto a = rail.z_at(axis - half_width);
+    const auto b = rail.z_at(axis + half_width);
+    if (!a || !b) return std::nullopt;
+    slope = (*a - *b) / (2.0 * half_width);
+    estimate = InclinationEstimate{std::atan(slope), Point(axis - half_width, *a),
+                                   Point(axis + half_width, *b)};
+  }
+  return estimate;
+}
+
 Point RailPlacement::to_track(const Point& p) const {
   const double sign = side == Side::right ? 1.0 : -1.0;
   return {sign * (p[0] - gauge_point[0] + 0.5 * gauge), p[1] - top[1]};

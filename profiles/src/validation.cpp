@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "wheelwear/core/input_error.hpp"
@@ -29,6 +30,18 @@ std::string mm(double metres) {
 
 std::string line_of(const RawProfile& raw, std::size_t i) {
   return i < raw.lines.size() && raw.lines[i] > 0 ? std::to_string(raw.lines[i]) : "?";
+}
+
+int line_number(const RawProfile& raw, std::size_t i) {
+  return i < raw.lines.size() ? raw.lines[i] : 0;
+}
+
+// The lines of points i and j, the smaller first (orientation may have reversed the order).
+std::pair<std::string, std::string> in_file_order(const RawProfile& raw, std::size_t i,
+                                                  std::size_t j) {
+  const int a = line_number(raw, i), b = line_number(raw, j);
+  if (a > 0 && b > 0 && b < a) return {line_of(raw, j), line_of(raw, i)};
+  return {line_of(raw, i), line_of(raw, j)};
 }
 
 }  // namespace
@@ -140,12 +153,30 @@ void validate_order(const RawProfile& raw, Body body, const ValidationOptions& o
       continue;
     }
     const double back = raw.points[furthest][0] - raw.points[i][0];
-    if (back > options.order_tolerance)
-      throw InputError(raw.where(i) + ": y = " + mm(raw.points[i][0]) +
-                       " after y = " + mm(raw.points[furthest][0]) + " at line " +
-                       line_of(raw, furthest) + ": the points go back " + mm(back) +
-                       " across the profile; a " + std::string(to_string(body)) +
-                       " profile must run monotonically in y (points out of order?)");
+    if (back <= options.order_tolerance) continue;
+    // Named in file order, with the values as the file writes them: orientation may have
+    // mirrored and reversed the points.
+    std::size_t later = i, earlier = furthest;
+    if (i < raw.lines.size() && furthest < raw.lines.size() && raw.lines[i] > 0 &&
+        raw.lines[furthest] > raw.lines[i])
+      std::swap(later, earlier);
+    std::string message = raw.where(later) + ": " + raw.as_written(later) + " after " +
+                          raw.as_written(earlier) + " at line " + line_of(raw, earlier) +
+                          ": the points go back " + mm(back) + " across the profile" +
+                          raw.written_note() + "; a " + std::string(to_string(body)) +
+                          " profile must run monotonically in y (points out of order?)";
+    if (body == Body::rail) {
+      // Deep below the top, the likely cause is a gauge face that recedes (an undercut).
+      double top = raw.points.front()[1];
+      for (const Point& p : raw.points) top = std::min(top, p[1]);
+      const double depth = std::min(raw.points[i][1], raw.points[furthest][1]) - top;
+      if (depth > 0.014)
+        message += ". Both points lie " + mm(depth) +
+                   " or more below the top of rail, deeper than the gauge point: a gauge face "
+                   "that recedes there (an undercut) is cut off by cropping the rail at a "
+                   "smaller depth (LoadOptions::crop_depth, profile --crop-depth)";
+    }
+    throw InputError(message);
   }
 }
 
@@ -157,18 +188,24 @@ void validate_geometry(const RawProfile& raw, const ValidationOptions& options) 
                      std::to_string(options.min_points) + " are needed");
   for (std::size_t i = 0; i + 1 < raw.points.size(); ++i) {
     const double gap = (raw.points[i + 1] - raw.points[i]).norm();
-    if (gap > options.max_gap)
+    if (gap > options.max_gap) {
+      const auto [first, second] = in_file_order(raw, i, i + 1);
       throw InputError(raw.source + ": gap of " + mm(gap) + " between the points of lines " +
-                       line_of(raw, i) + " and " + line_of(raw, i + 1) + " exceeds the " +
-                       mm(options.max_gap) + " limit (missing data?)");
+                       first + " and " + second + " exceeds the " + mm(options.max_gap) +
+                       " limit (missing data?)");
+    }
   }
   if (const auto crossing = find_self_intersection(raw.points)) {
-    const std::size_t a = crossing->first, b = crossing->second;
+    auto first = in_file_order(raw, crossing->first, crossing->first + 1);
+    auto second = in_file_order(raw, crossing->second, crossing->second + 1);
+    if (line_number(raw, crossing->second) < line_number(raw, crossing->first) &&
+        line_number(raw, crossing->second) > 0)
+      std::swap(first, second);
     throw InputError(raw.source + ": the profile crosses itself: the segment between lines " +
-                     line_of(raw, a) + " and " + line_of(raw, a + 1) + " meets the segment " +
-                     "between lines " + line_of(raw, b) + " and " + line_of(raw, b + 1) +
+                     first.first + " and " + first.second + " meets the segment " +
+                     "between lines " + second.first + " and " + second.second +
                      " near (y, z) = (" + mm(crossing->where[0]) + ", " + mm(crossing->where[1]) +
-                     ")");
+                     ") in the profile frame");
   }
 }
 

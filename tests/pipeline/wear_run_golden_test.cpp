@@ -65,9 +65,11 @@ TEST_F(WearRunTest, SmallSceneMatchesGoldenResults) {
     const auto expected = golden.read_array("/load_collective/" + name);
     const auto actual = file.read_array("/load_collective/" + name);
     ASSERT_EQ(actual.size(), expected.size()) << name;
-    for (std::size_t i = 0; i < expected.size(); ++i)
-      if (!(std::isnan(expected[i]) && std::isnan(actual[i])))
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      if (!(std::isnan(expected[i]) && std::isnan(actual[i]))) {
         EXPECT_EQ(actual[i], expected[i]) << name << '[' << i << ']';
+      }
+    }
     ++arrays;
   }
   EXPECT_EQ(file.scene_text(), golden.scene_text());

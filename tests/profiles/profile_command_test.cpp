@@ -3,15 +3,19 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "support/run_command.hpp"
 #include "test_support.hpp"
-#include "wheelwear/profiles/columns_format.hpp"
-#include "wheelwear/profiles/s1002.hpp"
 #include "wheelwear/core/text.hpp"
+#include "wheelwear/profiles/columns_format.hpp"
+#include "wheelwear/profiles/rail_60e1.hpp"
+#include "wheelwear/profiles/s1002.hpp"
+#include "wheelwear/profiles/track.hpp"
 
 namespace wheelwear::profiles {
 namespace {
@@ -41,8 +45,9 @@ using wheelwear::testing::json_number;
 TEST(ProfileCommand, HelpNamesTheOptions) {
   const CliRun r = run("--help");
   EXPECT_EQ(r.status, 0);
-  for (const char* option : {"--wheel", "--rail", "--out", "--info", "--json", "--spacing",
-                             "--smoothing", "--unit", "--inclination", "--flange-height"})
+  for (const char* option :
+       {"--wheel", "--rail", "--out", "--info", "--json", "--spacing", "--smoothing", "--unit",
+        "--inclination", "--flange-height", "--crop-depth", "--gauge-side"})
     EXPECT_NE(r.out.find(option), std::string::npos) << option;
 }
 
@@ -123,6 +128,148 @@ TEST(ProfileCommand, BadInputFailsClearlyAndLeavesTheOutputAlone) {
     EXPECT_NE(r.err.find("wheelwear: error: "), std::string::npos) << args << "\n" << r.err;
   }
   EXPECT_EQ(testing::read_text(out), "previous result\n");
+}
+
+// The small files of tests/data/profiles (tests/data/README.md, real_rail_files_test.cpp).
+std::filesystem::path profile_file(const std::string& name) {
+  return testing::data_path("profiles/" + name);
+}
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(ProfileCommand, ReportsTheReadingTheCropAndTheirWarnings) {
+  const auto undercut = profile_file("rail_deep_undercut.ban");
+  const CliRun info = run("--rail " + quoted(undercut) + " --info");
+  ASSERT_EQ(info.status, 0) << info.err;
+  EXPECT_TRUE(has(info.out,
+                  "points     kept 38 of 38 points; cropped 13 below 25 mm; 51 read, 0 merged, 0 "
+                  "dropped\n"
+                  "crop       cropped 13 points deeper than 25 mm below the top of rail (gauge "
+                  "side 13, lines 44 ... 56; down to 35.4 mm)\n"
+                  "crop       needed: whole, the profile was refused: " +
+                      undercut.string() +
+                      ":52: X = 46.7400, Y = -32.4000 after X = 47.3400, Y = -30.0000 at line 49"))
+      << info.out;
+  const CliRun json = run("--rail " + quoted(undercut) + " --json");
+  ASSERT_EQ(json.status, 0) << json.err;
+  EXPECT_EQ(*json_number(json.out, "points_read"), 51.0);
+  EXPECT_EQ(*json_number(json.out, "points_cropped"), 13.0);
+  EXPECT_EQ(*json_number(json.out, "points_kept"), 38.0);
+  EXPECT_EQ(*json_number(json.out, "crop_depth"), 0.025);
+  // Not cropped, it is refused with the real cause.
+  const CliRun whole = run("--rail " + quoted(undercut) + " --crop-depth 0");
+  EXPECT_EQ(whole.status, 2);
+  EXPECT_EQ(whole.err.rfind("wheelwear: error: " + undercut.string() +
+                                ":52: X = 46.7400, Y = -32.4000 after X = 47.3400, Y = -30.0000 at "
+                                "line 49: the points go back 0.6 mm across the profile",
+                            0),
+            0u)
+      << whole.err;
+
+  const auto comments = profile_file("rail_trailing_comments.ban");
+  const CliRun read = run("--rail " + quoted(comments) + " --info");
+  ASSERT_EQ(read.status, 0) << read.err;
+  EXPECT_TRUE(has(read.out, "\nread       " + comments.string() +
+                                ":15: 4 point rows carry text after their numbers, read as a "
+                                "comment (after \", %, ! or #)\n"))
+      << read.out;
+
+  const auto count = profile_file("rail_count_off_by_one.ban");
+  const std::string warning = count.string() +
+                              ":3: the header declares XYPoints=39 but 38 points were read; "
+                              "accepted (off by one), check that no point is missing";
+  const auto out = testing::scratch_dir() / "rail.csv";
+  const CliRun written = run("--rail " + quoted(count) + " --out " + quoted(out));
+  ASSERT_EQ(written.status, 0) << written.err;
+  EXPECT_EQ(written.err, "wheelwear: warning: " + warning + "\n");
+  const CliRun counted = run("--rail " + quoted(count) + " --json");
+  ASSERT_EQ(counted.status, 0) << counted.err;
+  EXPECT_TRUE(has(counted.out, "\"warnings\": [\"" + warning + "\"]")) << counted.out;
+  const CliRun summary = run("--rail " + quoted(count) + " --info");
+  EXPECT_TRUE(has(summary.out, "\nwarning    " + warning + "\n")) << summary.out;
+}
+
+TEST(ProfileCommand, TheGaugeSideSetsAMirroredSwitchRailRight) {
+  // 60E1 at 1:40 measured deeper on its field side (real_rail_files_test.cpp): automatically
+  // mirrored, and the estimated inclination says so.
+  const auto path = profile_file("switch_rail_field_side_deeper.ban");
+  const double incl = std::atan(1.0 / 40.0);
+  const CliRun automatic = run("--rail " + quoted(path) + " --json");
+  ASSERT_EQ(automatic.status, 0) << automatic.err;
+  EXPECT_NEAR(*json_number(automatic.out, "inclination"), -incl, 1e-3);
+  EXPECT_TRUE(has(automatic.out, "(profile --gauge-side right, ")) << automatic.out;
+  const CliRun right = run("--rail " + quoted(path) + " --gauge-side right --json");
+  ASSERT_EQ(right.status, 0) << right.err;
+  EXPECT_NEAR(*json_number(right.out, "inclination"), incl, 1e-3);
+  EXPECT_TRUE(has(right.out, "\"warnings\": []")) << right.out;
+  // Its gauge point is the generated rail's (the file keeps the origin at the top).
+  const ProfilePoint gauge = gauge_point(rail_60e1({.inclination = incl}));
+  EXPECT_NEAR(*json_number(right.out, "gauge_point_y"), gauge.point[0], 0.01e-3);
+  EXPECT_NEAR(*json_number(right.out, "gauge_point_z"), gauge.point[1], 0.01e-3);
+  // Set to the side the file says, left keeps it as it is, without a warning.
+  const CliRun left = run("--rail " + quoted(path) + " --gauge-side left --json");
+  ASSERT_EQ(left.status, 0) << left.err;
+  EXPECT_NEAR(*json_number(left.out, "inclination"), -incl, 1e-3);
+  EXPECT_TRUE(has(left.out, "\"warnings\": []")) << left.out;
+}
+
+TEST(ProfileCommand, WarnsOfARailWithoutAGaugePointAndOfALevelRail) {
+  const auto shallow = profile_file("rail_shallow_gauge_side.ban");
+  const CliRun r = run("--rail " + quoted(shallow) + " --info");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "\ngauge pt   none: the gauge side does not reach 14 mm below the top\n"))
+      << r.out;
+  EXPECT_TRUE(has(r.out, "\nwarning    " + shallow.string() +
+                             ":78: no gauge point: the gauge side (the profile's -y end, the "
+                             "file's larger lateral values) reaches 9.6 mm below the top of rail"))
+      << r.out;
+  // 60E1 written upright looks level; written at 1:40 it does not.
+  const auto dir = testing::scratch_dir();
+  write_csv(dir / "upright.csv", rail_60e1_points({.inclination = 0.0}), {.body = Body::rail});
+  write_csv(dir / "canted.csv", rail_60e1_points(), {.body = Body::rail});
+  const CliRun level = run("--rail " + quoted(dir / "upright.csv") + " --info");
+  ASSERT_EQ(level.status, 0) << level.err;
+  EXPECT_TRUE(has(level.out, "\nincl.      level (0.0000 rad), estimated from the crown\n"))
+      << level.out;
+  EXPECT_TRUE(has(level.out, "\nwarning    " + (dir / "upright.csv").string() +
+                                 ": the rail looks level (estimated inclination below 1:10000, "
+                                 "less than 1:200). Measured rails usually carry their "
+                                 "inclination, but `contact --incl` defaults to 0 for files"))
+      << level.out;
+  const CliRun canted = run("--rail " + quoted(dir / "canted.csv") + " --json");
+  ASSERT_EQ(canted.status, 0) << canted.err;
+  EXPECT_NEAR(*json_number(canted.out, "inclination"), std::atan(1.0 / 40.0), 1e-3);
+  EXPECT_TRUE(has(canted.out, "\"warnings\": []")) << canted.out;
+  // The built-in 60E1 is generated, not measured: no warning.
+  const CliRun builtin = run("--rail 60E1 --inclination none --info");
+  EXPECT_FALSE(has(builtin.out, "warning")) << builtin.out;
+}
+
+TEST(ProfileCommand, RefusesMptFilesAndARailGivenAsAWheelByName) {
+  const auto mpt = profile_file("miniprof_multi_profile.mpt");
+  const CliRun r = run("--rail " + quoted(mpt));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "wheelwear: error: " + mpt.string() +
+                       ": MiniProf .mpt files are not supported; export .whl/.ban from MiniProf\n");
+  const auto prr = profile_file("simpack_rail_type0.prr");
+  const CliRun wheel = run("--wheel " + quoted(prr));
+  EXPECT_EQ(wheel.status, 2);
+  EXPECT_EQ(wheel.err, "wheelwear: error: " + prr.string() +
+                           ":4: the file says it is a rail profile (type = 0), but a wheel "
+                           "profile is expected here; give a wheel profile file\n");
+  const std::pair<std::string, std::string> refused[] = {
+      {"--wheel S1002 --gauge-side left", "--gauge-side applies to rail files only"},
+      {"--rail 60E1 --crop-depth 0.03", "--crop-depth applies to rail files only"},
+      {"--rail " + quoted(prr) + " --crop-depth 0.01", "rail crop depth [m] = 0.01"},
+  };
+  for (const auto& [args, message] : refused) {
+    const CliRun bad = run(args);
+    EXPECT_EQ(bad.status, 2) << args;
+    EXPECT_TRUE(has(bad.err, "wheelwear: error: " + message)) << args << "\n" << bad.err;
+  }
+  EXPECT_GT(run("--rail " + quoted(prr) + " --gauge-side up").status, 100);
 }
 
 }  // namespace

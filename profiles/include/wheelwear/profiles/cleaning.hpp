@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "wheelwear/profiles/raw_profile.hpp"
@@ -41,7 +42,9 @@ struct CleaningOptions {
   double max_segment_angle_deg = 90.0;
   /// kinks: turns above this [deg] are reported (kept: a chamfer corner is real).
   double kink_deg = 20.0;
-  /// Cleaning fails (InputError) when it drops more than this fraction of the points.
+  /// Cleaning fails (InputError) when it discards more than this fraction of the points. Merged
+  /// duplicates do not count: their points live on in the merged point (dense, noise-free
+  /// sampling merges most of its points).
   double max_drop_fraction = 0.2;
 
   /// Throws InputError naming the first value out of range.
@@ -53,7 +56,27 @@ struct CleaningStep {
   std::string name;  ///< "bounding_box", "merge_duplicates", "fold_backs", "reversing_segments"
   std::string rule;  ///< the threshold, in words
   std::size_t dropped = 0;  ///< points removed (merged points count as removed)
-  std::vector<int> lines;   ///< source lines of the removed points (at most 20)
+  std::vector<int> lines;   ///< source lines of the removed points (the first 20 in file order)
+};
+
+/// What crop_rail() removed.
+struct CropReport {
+  double depth = 0.0;          ///< crop depth below the top of rail [m]; 0: not cropped
+  double top = 0.0;            ///< z of the top of rail the depth is measured from [m]
+  std::size_t gauge_side = 0;  ///< points removed at the -y (gauge face) end
+  std::size_t field_side = 0;  ///< points removed at the +y (field side) end
+  double deepest = 0.0;        ///< depth of the deepest removed point below the top [m]
+  /// First and last source line of the points removed at the gauge end, in file order (0, 0
+  /// when none or unknown); each end's removed points are consecutive rows of the file.
+  std::pair<int, int> gauge_lines{0, 0};
+  std::pair<int, int> field_lines{0, 0};  ///< the same at the field end
+  std::string reason;  ///< why the rail was cropped: the whole profile's error, if that was why
+
+  /// Points removed.
+  std::size_t cropped() const { return gauge_side + field_side; }
+  /// One line, e.g. "cropped 12 points deeper than 25 mm below the top of rail (gauge side 12,
+  /// lines 188 ... 199; down to 36.2 mm)"; "" when nothing was cropped.
+  std::string summary() const;
 };
 
 /// A sharp turn of the polyline that was kept.
@@ -63,21 +86,45 @@ struct Kink {
   double angle_deg = 0;  ///< turning angle [deg]
 };
 
-/// What the cleaning did.
+/// What the cleaning did. clean() fills the counts, steps and kinks; the loader
+/// (profile_loader.hpp) adds what the reader accepted, the crop and the warnings.
 struct CleaningReport {
-  std::size_t input_points = 0;     ///< points before cleaning
-  std::size_t kept_points = 0;      ///< points after cleaning
-  std::vector<CleaningStep> steps;  ///< every step, in the order run
-  std::vector<Kink> kinks;          ///< sharp turns kept
+  std::size_t input_points = 0;       ///< points before cleaning (after the crop)
+  std::size_t kept_points = 0;        ///< points after cleaning
+  std::vector<CleaningStep> steps;    ///< every step, in the order run
+  std::vector<Kink> kinks;            ///< sharp turns kept, in file order
+  std::vector<ReadRepair> reading;    ///< departures from the strict format the reader accepted
+  CropReport crop;                    ///< rails: what was cropped before the cleaning
+  std::vector<std::string> warnings;  ///< what the user should check (a point count off by one,
+                                      ///< a rail without a gauge point or that looks mirrored),
+                                      ///< each naming the file
 
-  /// input_points - kept_points.
+  /// input_points - kept_points: points removed by the steps, merged duplicates included.
   std::size_t dropped() const { return input_points - kept_points; }
-  /// One line, e.g. "kept 640 of 645 points (merge_duplicates 3, fold_backs 2); 1 kink".
+  /// Points merged into a neighbour by merge_duplicates (not lost: the merged point stands for
+  /// them).
+  std::size_t merged() const;
+  /// dropped() - merged(): points discarded as bad data; the drop limit applies to these.
+  std::size_t discarded() const { return dropped() - merged(); }
+  /// One line, e.g. "kept 640 of 645 points (merge_duplicates 3, fold_backs 2); 1 kink", with
+  /// "; cropped 12 below 25 mm" and "; read: trailing_comments 3" when those happened.
   std::string summary() const;
 };
 
 /// Runs the steps on `raw` in place (points already oriented, orientation.hpp). Throws
-/// InputError naming the source when more than max_drop_fraction of the points was dropped.
+/// InputError naming the source when more than max_drop_fraction of the points was discarded
+/// (merged duplicates do not count).
 CleaningReport clean(RawProfile& raw, Body body, const CleaningOptions& options = {});
+
+/// Throws InputError unless `depth` [m] is 0 or in [0.014, 0.2] (crop_rail).
+void check_crop_depth(double depth);
+
+/// Crops a rail (points oriented, z down) to the part a wheel can touch: from each end, the run
+/// of points deeper than `depth` below the top of rail is removed but for its point nearest the
+/// head, so that the profile still reaches `depth`. Points that dip below it inside the profile
+/// are left to the cleaning. The top is the highest point within the cleaning's bounding box
+/// around the median point, so a stray point cannot move it. depth 0 crops nothing. Throws
+/// InputError unless depth is 0 or in [0.014, 0.2] m (the gauge point lies 14 mm deep).
+CropReport crop_rail(RawProfile& raw, double depth, const CleaningOptions& options = {});
 
 }  // namespace wheelwear::profiles

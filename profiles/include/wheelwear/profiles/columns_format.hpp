@@ -2,7 +2,8 @@
 /// Plain two-column text and CSV profile files.
 ///
 /// Reading: one point per line, values separated by commas, blanks or tabs (or semicolons, with
-/// decimal commas allowed then). Lines starting with '#', '%', '!' or "//" are comments;
+/// decimal commas allowed then). Lines starting with '#', '%', '!' or "//" are comments, and so is
+/// text after '"', '%', '!' or '#' on a row of numbers (recorded in RawProfile::repairs);
 /// wheelwear's own comments "# body: wheel", "# side: left" are understood. An optional header line
 /// names the columns: y/z (or lateral/vertical, or x/y as MiniProf does) fix the order, and a unit
 /// on a name

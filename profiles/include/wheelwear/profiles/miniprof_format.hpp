@@ -24,9 +24,19 @@
 
 namespace wheelwear::profiles {
 
+/// Whether a file is a MiniProf multi-profile .mpt file: by its extension (any case), or by a
+/// "[FileInfo]" section in its first three lines (how CONTACT's read_miniprof tells them).
+bool is_miniprof_mpt(std::string_view extension, std::string_view text);
+
 /// Parses a MiniProf export; `extension` (".whl", ".ban", any case) gives the body when the file
 /// does not. Throws InputError naming source and line on malformed rows, a ColumnDef without X
-/// and Y, or a point count that disagrees with XYPoints (truncated file).
+/// and Y, or a point count that differs from XYPoints by more than one (truncated file), and
+/// refuses .mpt files (is_miniprof_mpt: their layout is not publicly documented).
+///
+/// Accepted beyond the strict layout, each recorded in RawProfile::repairs: text after '"', '%',
+/// '!' or '#' on a point row (a comment, as CONTACT reads it; lines starting with '%', '!' or '#'
+/// are comments too); points that follow the header without the empty line (the first row of
+/// two numbers or more starts them); a point count one off XYPoints (a warning).
 RawProfile parse_miniprof(std::string_view text, std::string_view source,
                           std::string_view extension, const ReadOptions& options = {});
 

@@ -2,7 +2,9 @@
 /// Bringing points read from a file into the profile frame (profile.hpp): z down, flange or gauge
 /// face at -y, ordered from -y to +y.
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "wheelwear/profiles/raw_profile.hpp"
@@ -18,9 +20,18 @@ enum class Mirror {
 
 /// How to orient a profile.
 struct OrientationOptions {
-  Mirror mirror_y = Mirror::automatic;  ///< y -> -y about the file's origin
+  /// y -> -y about the file's origin. For a rail this says where the file has its gauge face,
+  /// on the lateral axis as read (MiniProf X; Simpack y after the file's own mirror.y): keep =
+  /// at the smaller values (the left of a plot of the file), flip = at the larger ones (the
+  /// right). It is the override for rails the automatic rule gets wrong (switch rails measured
+  /// deeper on the field side); `profile --gauge-side left|right`.
+  Mirror mirror_y = Mirror::automatic;
   Mirror mirror_z = Mirror::automatic;  ///< z -> -z about the file's origin
 };
+
+/// "auto", "left" or "right" (a rail's gauge side on the file's lateral axis) to the mirror_y
+/// that says it: automatic, keep or flip; nullopt for anything else.
+std::optional<Mirror> gauge_side_mirror(std::string_view text);
 
 /// What orient() did.
 struct OrientationReport {

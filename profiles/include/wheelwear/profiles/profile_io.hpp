@@ -17,10 +17,14 @@ enum class FileFormat {
 
 /// The format of a file: by extension (.prr/.prw, .whl/.ban, any case), otherwise by content
 /// ("header.begin"/"spline.begin" lines: SIMPACK; "MINIPROF", "XYPoints=" or "ColumnDef=":
-/// MiniProf), otherwise plain columns.
+/// MiniProf), otherwise plain columns. MiniProf .mpt files (is_miniprof_mpt) come out as miniprof,
+/// whose reader refuses them by name.
 FileFormat detect_format(const std::filesystem::path& path, std::string_view text);
 
 /// Parses `text` in `format`; `source` names it in messages and its extension may give the body.
+/// options.body overrides a body the extension suggests, but a body the file states in its content
+/// (Simpack "type", wheelwear's "# body:") that differs is refused: InputError naming the file's
+/// body and the expected one.
 RawProfile parse_profile_text(std::string_view text, std::string_view source, FileFormat format,
                               const ReadOptions& options = {});
 

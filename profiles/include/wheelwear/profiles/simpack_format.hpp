@@ -20,7 +20,10 @@
 namespace wheelwear::profiles {
 
 /// Parses a SIMPACK profile. Throws InputError naming source and line on malformed content, a
-/// missing point block or a point block that does not end (truncated file).
+/// missing point block or a point block that does not end (truncated file). Text after '"', '%'
+/// or '#' on a point row is a comment too (recorded in RawProfile::repairs). The body comes from
+/// `type`, which RawProfile::body_line points to: read_profile_file refuses a file whose type is
+/// not the body asked for.
 RawProfile parse_simpack(std::string_view text, std::string_view source,
                          const ReadOptions& options = {});
 

@@ -1,6 +1,8 @@
 #pragma once
 /// Placing rail profiles in a track: top of rail, gauge point, and the track frame.
 
+#include <optional>
+
 #include "wheelwear/profiles/profile.hpp"
 
 namespace wheelwear::profiles {
@@ -27,6 +29,26 @@ ProfilePoint top_of_rail(const Profile& rail);
 /// `measuring_depth` below it, the one nearest the track centre (smallest y) (EN 13848-1). Throws
 /// InputError if the profile does not reach that depth on its gauge side.
 ProfilePoint gauge_point(const Profile& rail, double measuring_depth = 0.014);
+
+/// A rail's inclination estimated from its head: the slope of the chord across the crown between
+/// the points `half_width` either side of the head's axis, positive when the gauge side lies
+/// lower (canted towards the track centre, as rails are laid). The axis is taken `axis_offset`
+/// to the field side of the gauge point, less 14 mm times the slope (the gauge point lies 14 mm
+/// below the top, so canting moves it across by that much; one correction step). The default
+/// offset is the upright 60E1's, 35.98 mm (72 mm head); the 70 mm head of 54E1 or the 67 mm
+/// one of 49E1 put the axis 1 to 2.5 mm nearer, which tilts the estimate by about 1/300 per mm
+/// on their R300 crowns. Meant to tell a rail that carries its inclination from a level one.
+struct InclinationEstimate {
+  double angle = 0.0;  ///< [rad], positive: gauge side lower
+  Point gauge_end;     ///< chord end on the gauge side [m]
+  Point field_end;     ///< chord end on the field side [m]
+};
+
+/// The estimate above (axis_offset and half_width in m); nullopt when the rail has no gauge point
+/// or does not reach the chord's field end.
+std::optional<InclinationEstimate> estimate_inclination(const Profile& rail,
+                                                        double axis_offset = 0.03598,
+                                                        double half_width = 0.010);
 
 /// Where a rail sits in the track frame: x along the track (running direction), y to the right,
 /// z down (right-handed); origin on the track centre line at top-of-rail height. The gauge point

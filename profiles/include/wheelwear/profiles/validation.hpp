@@ -48,11 +48,13 @@ std::optional<SelfIntersection> find_self_intersection(const PointList& points);
 void validate_points(const RawProfile& raw, const ValidationOptions& options = {});
 
 /// Checks that y does not step back by more than order_tolerance where it must be monotonic
-/// (oriented points). Throws InputError naming both lines.
+/// (oriented points). Throws InputError naming both lines in file order with the values as the
+/// file writes them (RawProfile::as_written), and for a rail, when both points lie deeper than
+/// the gauge point (14 mm), the likely cause: a receding gauge face, which a crop removes.
 void validate_order(const RawProfile& raw, Body body, const ValidationOptions& options = {});
 
 /// Checks cleaned points: at least min_points, no gap above max_gap, no self-intersection.
-/// Throws InputError naming the lines involved.
+/// Throws InputError naming the lines involved, in file order.
 void validate_geometry(const RawProfile& raw, const ValidationOptions& options = {});
 
 }  // namespace wheelwear::profiles
