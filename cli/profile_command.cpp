@@ -31,6 +31,8 @@ namespace pr = wheelwear::profiles;
 struct ProfileArgs {
   std::string wheel, rail, out, side = "right", unit = "auto", inclination = "1:40";
   std::string gauge_side = "auto";
+  std::string origin{pr::to_string(pr::LoadOptions{}.origin)};
+  double taping_line_distance = pr::LoadOptions{}.taping_line_distance;
   bool info = false, json = false;
   double spacing = 0.5e-3;
   double smoothing = 0.3e-3;
@@ -43,6 +45,8 @@ struct ProfileArgs {
   CLI::Option* inclination_option = nullptr;
   CLI::Option* crop_depth_option = nullptr;
   CLI::Option* gauge_side_option = nullptr;
+  CLI::Option* origin_option = nullptr;
+  CLI::Option* taping_line_distance_option = nullptr;
 };
 
 // Below this estimated inclination a measured rail looks level (1:200).
@@ -77,6 +81,11 @@ pr::LoadedProfile make_profile(const ProfileArgs& args) {
   }
   if (!(!wheel && standard) && args.inclination_option->count() > 0)
     throw InputError("--inclination applies to --rail 60E1 only");
+  if (!wheel || standard) {
+    for (const CLI::Option* option : {args.origin_option, args.taping_line_distance_option})
+      if (option->count() > 0)
+        throw InputError(option->get_name() + " applies to wheel files only (--wheel FILE)");
+  }
   if (wheel || standard) {
     for (const CLI::Option* option : {args.crop_depth_option, args.gauge_side_option})
       if (option->count() > 0)
@@ -116,6 +125,11 @@ pr::LoadedProfile make_profile(const ProfileArgs& args) {
   if (!mirror)
     throw InputError("--gauge-side " + args.gauge_side + ": must be left, right or auto");
   options.orientation.mirror_y = *mirror;
+  const auto origin = pr::parse_wheel_origin(args.origin);
+  if (!origin)
+    throw InputError("--origin " + args.origin + ": must be auto, taping-line or internal-face");
+  options.origin = *origin;
+  options.taping_line_distance = args.taping_line_distance;
   const auto unit = pr::parse_length_unit(args.unit);
   if (!unit) throw InputError("--unit " + args.unit + ": must be auto, mm or m");
   options.read.unit = *unit;
@@ -138,6 +152,7 @@ void run_profile(const ProfileArgs& args) {
   const pr::PointList points = profile.resample(args.spacing);
   const bool file_rail =
       !args.rail.empty() && upper(args.rail) != "60E1" && upper(args.rail) != "UIC60";
+  const bool file_wheel = !args.wheel.empty() && upper(args.wheel) != "S1002";
   std::optional<pr::InclinationEstimate> inclination;
   if (profile.body() == pr::Body::rail) inclination = pr::estimate_inclination(profile);
   std::vector<std::string> warnings = loaded.cleaning.warnings;
@@ -212,6 +227,10 @@ void run_profile(const ProfileArgs& args) {
         .add("y_max", profile.y_max())
         .add("curvature_min", k_min)
         .add("curvature_max", k_max);
+    if (file_wheel)
+      out.add("origin", std::string(pr::to_string(loaded.origin.origin)))
+          .add("origin_shift", loaded.origin.shift)
+          .add("origin_reason", loaded.origin.reason);
     if (parameters)
       out.add("Sh", parameters->Sh).add("Sd", parameters->Sd).add("qR", parameters->qR);
     if (profile.body() == pr::Body::rail) {
@@ -239,6 +258,9 @@ void run_profile(const ProfileArgs& args) {
   for (const auto& kink : cleaning.kinks)
     std::printf("kink       line %d at (%.3f, %.3f) mm: turns %.0f deg\n", kink.line,
                 kink.point[0] * 1e3, kink.point[1] * 1e3, kink.angle_deg);
+  if (file_wheel)
+    std::printf("origin     %s: %s\n", std::string(pr::to_string(loaded.origin.origin)).c_str(),
+                loaded.origin.reason.c_str());
   std::printf("y range    %.3f ... %.3f mm (arc length %.3f mm)\n", profile.y_min() * 1e3,
               profile.y_max() * 1e3, profile.length() * 1e3);
   std::printf("curvature  min %.4g 1/m, max %.4g 1/m (positive = convex)\n", k_min, k_max);
@@ -277,6 +299,8 @@ void add_profile_command(CLI::App& app) {
       "Frame: y lateral, positive towards the field side (flange and gauge face at -y); z\n"
       "vertical, positive downwards. Generated profiles: origin at the taping line (S1002) or\n"
       "the top of rail (60E1). Files keep their origin; their axes are oriented automatically.\n"
+      "Wheel files whose origin is the flange back (MiniProf) are moved to the taping line\n"
+      "with --origin (auto decides from the profile's extent).\n"
       "Files: plain y z text/CSV (header optional), SIMPACK/CONTACT .prw/.prr, MiniProf\n"
       ".whl/.ban (not .mpt). Bad input gives a message naming file, line and problem, and exit\n"
       "code 2; an existing --out file is only ever replaced by a complete new one.\n"
@@ -325,6 +349,20 @@ void add_profile_command(CLI::App& app) {
                       "written: left = smaller values, right = larger (MiniProf rails: right),\n"
                       "auto = the end measured deeper; set it when auto mirrors a rail")
           ->check(CLI::IsMember({"auto", "left", "right"}))
+          ->capture_default_str();
+  args->origin_option =
+      cmd->add_option("--origin", args->origin,
+                      "wheel files: the file's lateral origin. taping-line keeps it;\n"
+                      "internal-face (the flange back, as MiniProf writes wheels) moves the\n"
+                      "wheel by --taping-line-distance; auto takes the taping line if the\n"
+                      "profile reaches 60 mm or more on the flange side of y = 0, the internal\n"
+                      "face if its flange-side end lies within 5 mm of y = 0, else refuses")
+          ->check(CLI::IsMember({"auto", "taping-line", "internal-face"}))
+          ->capture_default_str();
+  args->taping_line_distance_option =
+      cmd->add_option("--taping-line-distance", args->taping_line_distance,
+                      "wheel files: taping line distance from the internal face [m] for\n"
+                      "--origin internal-face/auto, 0.03 ... 0.11 (EN 13715: 0.070)")
           ->capture_default_str();
   args->flange_height =
       cmd->add_option("--flange-height", args->s1002.flange_height,

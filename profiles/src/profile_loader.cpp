@@ -1,15 +1,25 @@
 #include "wheelwear/profiles/profile_loader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
+#include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 #include "wheelwear/profiles/profile_io.hpp"
 #include "wheelwear/profiles/track.hpp"
 
 namespace wheelwear::profiles {
 
 namespace {
+
+constexpr core::NameTable<WheelOrigin, 3> kOriginNames = {{
+    {WheelOrigin::automatic, "auto"},
+    {WheelOrigin::taping_line, "taping-line"},
+    {WheelOrigin::internal_face, "internal-face"},
+}};
 
 // An estimated inclination below minus this (1:200) means the field side lies lower.
 constexpr double kMirroredInclination = 1.0 / 200.0;
@@ -66,7 +76,96 @@ std::optional<std::string> mirrored_rail_warning(const Profile& rail, const RawP
   return message.str();
 }
 
+std::string mm3(double metres) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(3);
+  out << metres * 1e3 << " mm";
+  return out.str();
+}
+
+// The automatic rule's verdict (WheelOrigin) on oriented points: `evidence` is the flange-side end
+// and the criterion it meets; no origin when it meets neither.
+struct OriginVerdict {
+  std::optional<WheelOrigin> origin;
+  std::string evidence;
+};
+
+OriginVerdict automatic_origin(const RawProfile& raw) {
+  double end = raw.points.front()[0];
+  for (const Point& p : raw.points) end = std::min(end, p[0]);
+  const std::string at = "its flange-side end lies at y = " + mm3(end);
+  if (end <= -kTapingLineReach)
+    return {WheelOrigin::taping_line,
+            at + ", " + mm(kTapingLineReach) + " or more on the flange side of y = 0"};
+  if (std::abs(end) <= kInternalFaceTolerance)
+    return {WheelOrigin::internal_face,
+            at + ", within " + mm(kInternalFaceTolerance) + " of y = 0"};
+  return {std::nullopt, at + ", neither " + mm(kTapingLineReach) +
+                            " or more on the flange side of y = 0 (origin at the taping line) "
+                            "nor within " +
+                            mm(kInternalFaceTolerance) +
+                            " of y = 0 (origin at the internal face, as MiniProf writes wheels)"};
+}
+
+std::string origin_name(WheelOrigin origin) {
+  return origin == WheelOrigin::taping_line ? "the taping line"
+                                            : "the internal face (flange back, as MiniProf "
+                                              "writes wheels)";
+}
+
+// Decides the wheel's origin (LoadOptions::origin) and moves the points so that the taping line
+// is at y = 0. A disagreement with the automatic rule is a warning: a wrong origin puts the
+// rolling radius 70 mm off, on the back face or the field side, without any other symptom.
+OriginReport place_wheel_origin(RawProfile& raw, const LoadOptions& options,
+                                std::vector<std::string>& warnings) {
+  const double distance = options.taping_line_distance;
+  if (!(std::isfinite(distance) && distance >= 0.03 && distance <= 0.11))
+    throw InputError(raw.source + ": taping line distance from the internal face " +
+                     core::format_number(distance) +
+                     " m must lie in 0.03 ... 0.11 m (EN 13715: 0.070); set profile "
+                     "--taping-line-distance or LoadOptions::taping_line_distance in metres");
+  const OriginVerdict verdict = automatic_origin(raw);
+  OriginReport report;
+  if (options.origin == WheelOrigin::automatic) {
+    if (!verdict.origin)
+      throw InputError(raw.source +
+                       ": cannot tell the wheel's lateral origin: " + verdict.evidence +
+                       ". Choose it: profile --origin taping-line or internal-face "
+                       "(with --taping-line-distance, default 70 mm), LoadOptions::origin");
+    report.origin = *verdict.origin;
+    report.reason = "automatic: " + verdict.evidence + ", so the file's origin is " +
+                    origin_name(report.origin);
+  } else {
+    report.origin = options.origin;
+    report.reason = "as set (profile --origin, LoadOptions::origin)";
+    if (verdict.origin && *verdict.origin != options.origin)
+      warnings.push_back(raw.source + ": the file's lateral origin is taken as " +
+                         origin_name(options.origin) +
+                         " as set (profile --origin, "
+                         "LoadOptions::origin), but " +
+                         verdict.evidence + ", which means " + origin_name(*verdict.origin) +
+                         ": the taping line and the rolling radius are then misplaced. Set "
+                         "--origin auto or " +
+                         std::string(to_string(*verdict.origin)));
+  }
+  if (report.origin == WheelOrigin::internal_face) {
+    report.shift = -distance;
+    report.reason += "; moved by " + mm3(report.shift) + " to put the taping line at y = 0";
+    for (Point& p : raw.points) p[0] += report.shift;
+  }
+  return report;
+}
+
 }  // namespace
+
+std::optional<WheelOrigin> parse_wheel_origin(std::string_view text) {
+  return core::value_named(kOriginNames, text);
+}
+
+std::string_view to_string(WheelOrigin origin) {
+  return core::name_of(kOriginNames, origin);
+}
 
 LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options) {
   const std::optional<Body> body = options.read.body ? options.read.body : raw.body;
@@ -113,6 +212,8 @@ LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options) {
   } else {
     cleaning = clean_and_check(raw);
   }
+  OriginReport origin;
+  if (*body == Body::wheel) origin = place_wheel_origin(raw, options, cleaning.warnings);
   cleaning.reading = raw.repairs;
   for (const ReadRepair& repair : raw.repairs)
     if (repair.warning) cleaning.warnings.push_back(repair.message);
@@ -130,8 +231,8 @@ LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options) {
       if (const auto warning = mirrored_rail_warning(profile, raw, orientation))
         cleaning.warnings.push_back(*warning);
   }
-  return LoadedProfile{std::move(profile), std::move(raw), read, std::move(orientation),
-                       std::move(cleaning)};
+  return LoadedProfile{std::move(profile),     std::move(raw),      read,
+                       std::move(orientation), std::move(cleaning), std::move(origin)};
 }
 
 LoadedProfile load_profile(const std::filesystem::path& path, const LoadOptions& options) {

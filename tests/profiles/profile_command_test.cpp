@@ -95,6 +95,24 @@ TEST(ProfileCommand, SummarisesMeasuredFiles) {
   EXPECT_EQ(rail.out.find("Sh"), std::string::npos);
 }
 
+TEST(ProfileCommand, WheelOriginIsChosenAndReported) {
+  const std::string file = quoted(testing::data_path("profiles/s1002_flange_back.whl"));
+  const CliRun automatic = run("--wheel " + file + " --origin auto --json");
+  ASSERT_EQ(automatic.status, 0) << automatic.err;
+  EXPECT_NE(automatic.out.find("\"origin\": \"internal-face\""), std::string::npos)
+      << automatic.out;
+  EXPECT_NEAR(*json_number(automatic.out, "origin_shift"), -0.070, 1e-15);
+  EXPECT_NEAR(*json_number(automatic.out, "y_min"), -0.070, 2e-6);
+  const CliRun info =
+      run("--wheel " + file + " --origin internal-face --taping-line-distance 0.072 --info");
+  ASSERT_EQ(info.status, 0) << info.err;
+  EXPECT_NE(info.out.find("origin     internal-face: as set"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("moved by -72.000 mm"), std::string::npos) << info.out;
+  const CliRun rail = run("--rail 60E1 --origin auto");
+  EXPECT_EQ(rail.status, 2);
+  EXPECT_NE(rail.err.find("--origin applies to wheel files only"), std::string::npos) << rail.err;
+}
+
 TEST(ProfileCommand, SameFileInMillimetresAndMetresGivesTheSameJson) {
   const auto dir = testing::scratch_dir();
   const PointList points = s1002_points({.point_spacing = 0.2e-3});

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "wheelwear/profiles/cleaning.hpp"
 #include "wheelwear/profiles/orientation.hpp"
@@ -14,6 +15,41 @@
 #include "wheelwear/profiles/validation.hpp"
 
 namespace wheelwear::profiles {
+
+/// Where a wheel file puts its lateral origin. The loaded wheel always has its taping line at
+/// y = 0 (profile.hpp); a file whose origin is the internal face (flange back), as MiniProf writes
+/// wheels (.whl, and .prw made from them), is moved by LoadOptions::taping_line_distance.
+///
+/// The automatic rule, on the oriented, cleaned points (flange towards -y):
+/// - the profile reaches kTapingLineReach (60 mm) or more on the flange side of y = 0: the origin
+///   is the taping line (a whole wheel reaches 70 mm there, S1002 included; nothing else can);
+/// - its flange-side end lies within kInternalFaceTolerance (5 mm) of y = 0: the origin is the
+///   internal face (the back face's rounding and measuring noise stay well within 5 mm);
+/// - anything else is refused, naming both readings and the option that chooses one.
+/// No MiniProf header key is known for certain to state the taping-line distance, so it is an
+/// option only.
+enum class WheelOrigin {
+  automatic,      ///< by the rule above
+  taping_line,    ///< the file's y = 0 is the taping line: kept
+  internal_face,  ///< the file's y = 0 is the internal face: moved by -taping_line_distance
+};
+
+/// Flange-side reach from y = 0 [m] from which the automatic rule takes the taping line.
+inline constexpr double kTapingLineReach = 0.060;
+/// Distance of the flange-side end from y = 0 [m] within which it takes the internal face.
+inline constexpr double kInternalFaceTolerance = 0.005;
+
+/// "auto", "taping-line" or "internal-face" to WheelOrigin; nullopt for anything else.
+std::optional<WheelOrigin> parse_wheel_origin(std::string_view text);
+/// "auto", "taping-line" or "internal-face".
+std::string_view to_string(WheelOrigin origin);
+
+/// Which lateral origin a wheel file was read with, and why.
+struct OriginReport {
+  WheelOrigin origin = WheelOrigin::taping_line;  ///< taping_line or internal_face (never auto)
+  double shift = 0.0;  ///< added to the file's y [m]: 0, or -taping_line_distance
+  std::string reason;  ///< why this origin, with the flange-side end as read [mm]
+};
 
 /// Options of every stage.
 struct LoadOptions {
@@ -27,6 +63,13 @@ struct LoadOptions {
   std::optional<Side> side{};   ///< overrides the file; default right
   double nominal_radius = 0.0;  ///< wheels: rolling radius at the taping line [m]
   std::string name{};           ///< profile name; default the file name
+  /// Wheels: the file's lateral origin (WheelOrigin; rails ignore it). The default keeps the
+  /// file's origin as earlier versions did; automatic applies the rule, and a warning says when
+  /// the origin used differs from the rule's.
+  WheelOrigin origin = WheelOrigin::taping_line;
+  /// Wheels: taping line distance from the internal face [m] for WheelOrigin::internal_face
+  /// (EN 13715: 70 mm); 0.03 ... 0.11.
+  double taping_line_distance = 0.070;
   /// Rails: depth below the top of rail [m] to which a rail is cropped (crop_rail) when it is
   /// refused whole: validate_order, clean and validate_geometry run on the whole rail first and,
   /// if one of them throws, again on the cropped rail (the report says why it was cropped). 0
@@ -49,15 +92,17 @@ struct LoadedProfile {
   std::size_t points_read = 0;    ///< points the source gave
   OrientationReport orientation;  ///< mirroring and reordering done
   CleaningReport cleaning;        ///< what the reader accepted, the crop, the cleaning, warnings
+  OriginReport origin;            ///< wheels: the lateral origin used and why
 };
 
 /// Runs the stages on points already read: validate_points, orient, validate_order, clean,
-/// validate_geometry (for rails refused whole, again after crop_rail), Profile. The body comes from
-/// options.read.body, else from the source; throws InputError if neither says, or from any stage.
-/// The report carries the reader's repairs and the crop, and warns of a point count off by one, of
-/// a rail without a gauge point (nothing 14 mm below its top on the gauge side: `contact` cannot
-/// place it) and of a rail whose field side lies lower (estimate_inclination below -1:200, when
-/// mirror_y was automatic: probably mirrored).
+/// validate_geometry (for rails refused whole, again after crop_rail), for wheels the lateral
+/// origin (WheelOrigin: the points are moved so that the taping line is at y = 0), Profile. The
+/// body comes from options.read.body, else from the source; throws InputError if neither says, or
+/// from any stage. The report carries the reader's repairs and the crop, and warns of a point count
+/// off by one, of a rail without a gauge point (nothing 14 mm below its top on the gauge side:
+/// `contact` cannot place it) and of a rail whose field side lies lower (estimate_inclination below
+/// -1:200, when mirror_y was automatic: probably mirrored).
 LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options = {});
 
 /// read_profile_file() and prepare_profile().

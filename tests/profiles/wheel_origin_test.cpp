@@ -1,0 +1,195 @@
+// The lateral origin of wheel files (LoadOptions::origin): MiniProf puts y = 0 at the flange back,
+// the profile frame at the taping line. The reference is the file's own numbers, read here
+// independently, and the same S1002 written with either origin.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "test_support.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/profiles/profile_loader.hpp"
+#include "wheelwear/profiles/s1002.hpp"
+#include "wheelwear/profiles/wheel_parameters.hpp"
+
+namespace wheelwear::profiles {
+namespace {
+
+std::filesystem::path wheel_file(const std::string& name) {
+  return testing::data_path("profiles/" + name);
+}
+
+LoadedProfile load(const std::string& name, WheelOrigin origin, double distance = 0.070) {
+  LoadOptions options;
+  options.origin = origin;
+  options.taping_line_distance = distance;
+  return load_profile(wheel_file(name), options);
+}
+
+// The point rows of a MiniProf wheel file [m]: everything after the first empty line.
+PointList file_points(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line) && !line.empty()) {
+  }
+  PointList out;
+  double x = 0.0, y = 0.0;
+  while (in >> x >> y) out.emplace_back(x * 1e-3, y * 1e-3);
+  return out;
+}
+
+// Throws and returns the message (empty if nothing was thrown).
+template <class F>
+std::string refusal(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+TEST(WheelOrigin, BothOriginsLoadToTheSameProfile) {
+  const LoadedProfile back = load("s1002_flange_back.whl", WheelOrigin::automatic);
+  const LoadedProfile tape = load("s1002_taping_line.whl", WheelOrigin::automatic);
+  EXPECT_EQ(back.origin.origin, WheelOrigin::internal_face);
+  EXPECT_EQ(back.origin.shift, -0.070);
+  EXPECT_EQ(tape.origin.origin, WheelOrigin::taping_line);
+  EXPECT_EQ(tape.origin.shift, 0.0);
+  EXPECT_TRUE(back.cleaning.warnings.empty());
+  EXPECT_TRUE(tape.cleaning.warnings.empty());
+  ASSERT_EQ(back.points.points.size(), tape.points.points.size());
+  std::size_t points = 0, fit = 0;
+  for (std::size_t i = 0; i < back.points.points.size(); ++i, ++points)
+    ASSERT_NEAR((back.points.points[i] - tape.points.points[i]).norm(), 0.0, 1e-9) << i;
+  EXPECT_NEAR(back.profile.length(), tape.profile.length(), 1e-9);
+  for (double s = 0.0; s <= back.profile.length(); s += 0.1e-3, ++fit)
+    ASSERT_NEAR((back.profile.position(s) - tape.profile.position(s)).norm(), 0.0, 1e-9) << s;
+  const WheelParameters a = wheel_parameters(back.profile);
+  const WheelParameters b = wheel_parameters(tape.profile);
+  EXPECT_NEAR(a.Sh, b.Sh, 1e-9);
+  EXPECT_NEAR(a.Sd, b.Sd, 1e-9);
+  EXPECT_NEAR(a.qR, b.qR, 1e-9);
+  // Both are the nominal S1002 (h28, e32.5) with the taping line at y = 0.
+  EXPECT_NEAR(a.Sh, 0.028, 0.02e-3);
+  EXPECT_NEAR(a.Sd, 0.0325, 0.02e-3);
+  EXPECT_NEAR(a.running_circle[0], 0.0, 0.01e-3);
+  EXPECT_NEAR(*back.profile.z_at(0.0), 0.0, 1e-6);
+  EXPECT_GT(points, 300u);
+  EXPECT_GT(fit, 1500u);
+  std::printf("compared %zu points, %zu fit positions, Sh Sd qR %.4f %.4f %.4f mm\n", points, fit,
+              a.Sh * 1e3, a.Sd * 1e3, a.qR * 1e3);
+}
+
+TEST(WheelOrigin, InternalFaceMovesTheFilePointsByTheTapingLineDistance) {
+  // Reference: the file's numbers read here, minus the distance.
+  std::size_t compared = 0;
+  for (const double distance : {0.070, 0.0725}) {
+    const LoadedProfile back = load("s1002_flange_back.whl", WheelOrigin::automatic, distance);
+    const PointList file = file_points(wheel_file("s1002_flange_back.whl"));
+    ASSERT_EQ(back.points.points.size(), file.size());
+    EXPECT_EQ(back.origin.shift, -distance);
+    for (std::size_t i = 0; i < file.size(); ++i, ++compared) {
+      ASSERT_NEAR(back.points.points[i][0], file[i][0] - distance, 1e-15) << i;
+      ASSERT_EQ(back.points.points[i][1], file[i][1]) << i;
+    }
+  }
+  EXPECT_EQ(compared, 2 * 327u);
+}
+
+TEST(WheelOrigin, AFileStartingOnTheBackRoundingIsTakenFromTheFlangeBack) {
+  const LoadedProfile wheel = load("s1002_back_rounding.whl", WheelOrigin::automatic);
+  EXPECT_EQ(wheel.origin.origin, WheelOrigin::internal_face);
+  EXPECT_NE(wheel.origin.reason.find("y = 0.600 mm"), std::string::npos) << wheel.origin.reason;
+  // The same S1002 as the whole file, from the rounding on: compare with it on the common part.
+  const LoadedProfile whole = load("s1002_taping_line.whl", WheelOrigin::taping_line);
+  std::size_t compared = 0;
+  for (int k = 0; k <= 240; ++k, ++compared) {
+    const double y = -0.065 + 0.5e-3 * k;
+    ASSERT_NEAR(*wheel.profile.z_at(y), *whole.profile.z_at(y), 1e-6) << y;
+  }
+  EXPECT_EQ(compared, 241u);
+  // Its first point, on the rounding 0.6 mm from the flange back, lands 69.4 mm from the taping
+  // line.
+  EXPECT_NEAR(wheel.points.points.front()[0], 0.599997760e-3 - 0.070, 1e-15);
+}
+
+TEST(WheelOrigin, AnExplicitWrongOriginMovesAsSetAndWarns) {
+  const LoadedProfile tape = load("s1002_taping_line.whl", WheelOrigin::internal_face);
+  EXPECT_NEAR(tape.profile.y_min(), -0.140, 2e-6);
+  ASSERT_EQ(tape.cleaning.warnings.size(), 1u);
+  EXPECT_NE(tape.cleaning.warnings[0].find("--origin auto or taping-line"), std::string::npos)
+      << tape.cleaning.warnings[0];
+  const LoadedProfile back = load("s1002_flange_back.whl", WheelOrigin::taping_line);
+  EXPECT_NEAR(back.profile.y_min(), 0.0, 2e-6);
+  ASSERT_EQ(back.cleaning.warnings.size(), 1u);
+  EXPECT_NE(back.cleaning.warnings[0].find("--origin auto or internal-face"), std::string::npos)
+      << back.cleaning.warnings[0];
+}
+
+TEST(WheelOrigin, APartialWheelIsRefusedNamingBothReadings) {
+  RawProfile raw;
+  raw.source = "partial.whl";
+  raw.body = Body::wheel;
+  for (const Point& p : s1002_points({.point_spacing = 0.5e-3}))
+    if (p[0] > -0.030) raw.points.push_back(p);
+  raw.lines.assign(raw.points.size(), 0);
+  LoadOptions options;
+  options.origin = WheelOrigin::automatic;
+  const std::string message = refusal([&] { prepare_profile(raw, options); });
+  for (const char* part : {"partial.whl", "y = -29.", "taping line", "internal face",
+                           "--origin taping-line or internal-face", "LoadOptions::origin"})
+    EXPECT_NE(message.find(part), std::string::npos) << part << " in: " << message;
+  options.origin = WheelOrigin::taping_line;  // chosen: loads as it is
+  EXPECT_NEAR(prepare_profile(raw, options).profile.y_min(), -0.030, 0.5e-3);
+}
+
+TEST(WheelOrigin, ABadTapingLineDistanceIsRefused) {
+  const std::string message =
+      refusal([] { load("s1002_flange_back.whl", WheelOrigin::automatic, 70.0); });
+  for (const char* part : {"s1002_flange_back.whl", "70 m", "--taping-line-distance"})
+    EXPECT_NE(message.find(part), std::string::npos) << part << " in: " << message;
+}
+
+TEST(WheelOrigin, OptionNames) {
+  for (const WheelOrigin origin :
+       {WheelOrigin::automatic, WheelOrigin::taping_line, WheelOrigin::internal_face})
+    EXPECT_EQ(parse_wheel_origin(to_string(origin)), origin);
+  EXPECT_FALSE(parse_wheel_origin("flange-back"));
+}
+
+TEST(WheelOrigin, MeasuredMiniProfWheel) {
+  // Car7216_0001r.whl: X = 0 at the flange back (its back face, X = -0.16 ... 0.1 mm).
+  const LoadedProfile kept = load_profile(testing::measured_wheel_file());
+  LoadOptions automatic;
+  automatic.origin = WheelOrigin::automatic;
+  const LoadedProfile moved = load_profile(testing::measured_wheel_file(), automatic);
+  EXPECT_EQ(moved.origin.origin, WheelOrigin::internal_face);
+  EXPECT_TRUE(moved.cleaning.warnings.empty());
+  EXPECT_EQ(kept.cleaning.warnings.size(), 1u);  // the default keeps the origin: warned
+  EXPECT_NEAR(moved.profile.y_min(), kept.profile.y_min() - 0.070, 1e-9);
+  EXPECT_NEAR(moved.profile.y_max(), kept.profile.y_max() - 0.070, 1e-9);
+  const WheelParameters a = wheel_parameters(moved.profile), b = wheel_parameters(kept.profile);
+  EXPECT_NEAR(a.Sd, b.Sd, 1e-9);
+  EXPECT_NEAR(a.Sh, b.Sh, 1e-9);
+  EXPECT_NEAR(a.qR, b.qR, 1e-9);
+  EXPECT_NEAR(a.running_circle[0], 0.0, 0.2e-3);
+  std::printf("Car7216_0001r.whl: origin %s, y %.3f ... %.3f mm, Sd %.3f mm\n",
+              std::string(to_string(moved.origin.origin)).c_str(), moved.profile.y_min() * 1e3,
+              moved.profile.y_max() * 1e3, a.Sd * 1e3);
+}
+
+TEST(WheelOrigin, ContactBenchmarkWheelKeepsItsTapingLine) {
+  LoadOptions automatic;
+  automatic.origin = WheelOrigin::automatic;
+  const LoadedProfile wheel = load_profile(testing::contact_wheel_file(), automatic);
+  EXPECT_EQ(wheel.origin.origin, WheelOrigin::taping_line);
+  EXPECT_EQ(wheel.origin.shift, 0.0);
+  EXPECT_TRUE(wheel.cleaning.warnings.empty());
+}
+
+}  // namespace
+}  // namespace wheelwear::profiles
