@@ -115,99 +115,45 @@
 #include <string>
 #include <vector>
 
+#include "runtime_error_cases.hpp"
 #include "study_csv.hpp"
 #include "support/contact_cases.hpp"
+#include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
-#include "wheelwear/tangential/exact/steady_rolling.hpp"
-#include "wheelwear/tangential/fastsim.hpp"
-#include "wheelwear/tangential/linear_theory.hpp"
+#include "wheelwear/tangential/tangential.hpp"
 
 namespace {
 
 using wheelwear::bench::rank;
 using wheelwear::bench::split;
 using wheelwear::bench::StudyCsv;
+using namespace wheelwear::bench::runtime_error;
 
 using namespace wheelwear;
 namespace contact = wheelwear::testing::contact;
 
 const tangential::Material kSteel = contact::kMaterial;  // CONTACT's: G = 80 GPa, nu = 0.25
 
-/// One solver call with CONTACT's answer.
-struct Case {
-  contactgeom::Sdec patch;
-  tangential::Creepages creepages;
-  tangential::ContactLoad load;
-  double fx_ref = 0, fy_ref = 0;  ///< CONTACT's forces [N]
-};
-
-enum class Measure {
-  max_component_over_mu_n,  ///< max(|dFx|, |dFy|)/(mu N)
-  vector_relative,          ///< |dF|/|F_ref|
-};
-
-struct CaseSet {
-  std::string name;
-  Measure measure;
-  std::vector<Case> cases;
-};
-
-// The catalogue's loaders throw when a file is missing or holds fewer or more cases than the
-// README lists, so every set below is complete.
-CaseSet pure_spin_cases() {
-  CaseSet set{"pure_spin", Measure::max_component_over_mu_n, {}};
-  for (const contact::PureSpinCase& c : contact::pure_spin_cases_with_spin())
-    set.cases.push_back({c.patch, c.creepages, c.load, c.Fx, c.Fy});
-  return set;
-}
-
-// CONTACT's linear coefficients turned back into the forces of its unit creepages (README of
-// tests/data/contact, section 3: C11s = -Fx(dvx)/(G c^2 dvx), C13s = -Fx(dphi)/(G c^3 dphi), ...).
-CaseSet linear_cases() {
-  CaseSet set{"linear", Measure::vector_relative, {}};
-  for (const contact::LinearCoefficientCase& k : contact::linear_coefficient_cases()) {
-    const contactgeom::Sdec& patch = k.patch;
-    const double c = std::sqrt(patch.a * patch.b), g = kSteel.G;
-    const double dv = k.dv, dphi = k.dphi;
-    const double c2 = g * c * c, c3 = g * c * c * c;
-    set.cases.push_back({patch, {dv, 0, 0}, k.load, -c2 * k.c11s * dv, -c2 * k.c21s * dv});
-    set.cases.push_back({patch, {0, dv, 0}, k.load, -c2 * k.c12s * dv, -c2 * k.c22s * dv});
-    set.cases.push_back({patch, {0, 0, dphi}, k.load, -c3 * k.c13s * dphi, -c3 * k.c23s * dphi});
-  }
-  return set;
-}
-
-// The set's normaliser: mu N, or the size of CONTACT's force.
-double scale(Measure measure, const Case& c) {
-  return measure == Measure::max_component_over_mu_n ? c.load.mu * c.load.N
-                                                     : std::hypot(c.fx_ref, c.fy_ref);
-}
-
-double case_error(Measure measure, const Case& c, double fx, double fy, double fx_ref,
-                  double fy_ref) {
-  if (measure == Measure::max_component_over_mu_n)
-    return std::max(std::abs(fx - fx_ref), std::abs(fy - fy_ref)) / scale(measure, c);
-  return std::hypot(fx - fx_ref, fy - fy_ref) / scale(measure, c);
-}
-
-/// How a method computes its forces.
-enum class Kind {
-  closed_form,  ///< linear-sdec, she-sdec: grid-free formulas
-  fastsim,      ///< a FASTSIM method on an n x n grid
-  exact,        ///< Kalker's exact theory on an n x n grid (tangential::exact_sdec)
-  table,        ///< the built-in book of exact-theory tables (grid-free)
-};
-
-/// A tangential method with its discretisation; n = 0 for the grid-free ones.
+/// A tangential method with its discretisation (solve_patch's method and options); FASTSIM's
+/// scheme and bound matter only to the FASTSIM methods, n only to those with a grid.
 struct Solver {
-  std::string method;
-  std::string scheme;  // "kalker", "second-order", "none"
-  std::string bound;   // "parabolic", "semi-elliptic", "none"
-  Kind kind = Kind::fastsim;
-  tangential::FastsimMethod fastsim_method = tangential::FastsimMethod::sdec;
+  tangential::Method method = tangential::Method::fastsim_sdec;
   tangential::FastsimScheme fastsim_scheme = tangential::FastsimScheme::kalker;
   tangential::TractionBound traction_bound = tangential::TractionBound::parabolic;
-  bool grid() const { return kind == Kind::fastsim || kind == Kind::exact; }
+
+  bool fastsim() const { return tangential::fastsim_variant(method).has_value(); }
+  bool exact() const { return method == tangential::Method::exact; }
+  bool grid() const { return fastsim() || exact(); }
+  /// The CSV's names: the creep --method name, and the scheme and bound of a FASTSIM method
+  /// ("none" for the others).
+  std::string name() const { return std::string(tangential::method_name(method)); }
+  std::string scheme() const {
+    return fastsim() ? std::string(core::name_of(tangential::kSchemeNames, fastsim_scheme))
+                     : "none";
+  }
+  std::string bound() const {
+    return fastsim() ? std::string(core::name_of(tangential::kBoundNames, traction_bound)) : "none";
+  }
   // Order of convergence in n: Kalker's scheme is first order. The second-order scheme is
   // second order with the parabolic bound; with the semi-elliptic bound, whose slope is
   // unbounded at the leading and trailing edges, it reaches only 1.5 (measured: e(n) n^2 grows
@@ -225,71 +171,24 @@ struct Solver {
   }
 };
 
-struct Forces {
-  double fx = 0, fy = 0;
-};
-
-/// Calls the solver on every case; `solution` is reused between calls (FASTSIM). Returns the
-/// number of exact-theory solves that stopped at max_iterations (their last iterate is used).
+/// Calls the solver on every case through solve_patch; `solution` is reused between calls.
+/// Returns the number of exact-theory solves that stopped short (their last iterate is used).
 int solve_all(const Solver& s, int n, const CaseSet& set, std::vector<Forces>& out,
               tangential::TangentialSolution& solution) {
   out.resize(set.cases.size());
-  tangential::FastsimOptions options;
-  options.nx = options.ny = std::max(n, 1);
-  options.scheme = s.fastsim_scheme;
-  options.bound = s.traction_bound;
-  tangential::SdecGridOptions exact_options;
-  exact_options.nx = exact_options.ny = std::max(n, 2);
+  tangential::SolveOptions options;
+  options.fastsim.nx = options.fastsim.ny = std::max(n, 1);
+  options.fastsim.scheme = s.fastsim_scheme;
+  options.fastsim.bound = s.traction_bound;
+  options.exact_grid.nx = options.exact_grid.ny = std::max(n, 2);
   int not_converged = 0;
   for (std::size_t k = 0; k < set.cases.size(); ++k) {
     const Case& c = set.cases[k];
-    switch (s.kind) {
-      case Kind::closed_form: {
-        const tangential::CreepForces f =
-            s.method == "linear-sdec" ? tangential::linear_sdec_forces(c.patch, c.creepages, kSteel)
-                                      : tangential::she_sdec_forces(c.patch, c.creepages, kSteel, c.load);
-        out[k] = {f.Fx, f.Fy};
-        break;
-      }
-      case Kind::fastsim:
-        tangential::fastsim(s.fastsim_method, c.patch, c.creepages, c.load, kSteel, options, solution);
-        out[k] = {solution.forces.Fx, solution.forces.Fy};
-        break;
-      case Kind::exact: {
-        const tangential::ExactSolution e =
-            tangential::exact_sdec(c.patch, c.creepages, c.load, kSteel, exact_options);
-        if (e.status != tangential::ExactStatus::converged) ++not_converged;
-        out[k] = {e.forces.Fx, e.forces.Fy};
-        break;
-      }
-      case Kind::table: {
-        const tangential::CreepForces f = tangential::creep_table_forces(c.patch, c.creepages, c.load, kSteel);
-        out[k] = {f.Fx, f.Fy};
-        break;
-      }
-    }
+    tangential::solve_patch(s.method, c.patch, c.creepages, c.load, kSteel, options, solution);
+    if (solution.status != tangential::SolveStatus::ok) ++not_converged;
+    out[k] = {solution.forces.Fx, solution.forces.Fy};
   }
   return not_converged;
-}
-
-/// The cases of `set` the built-in creep table covers; `skipped` receives how many it does not.
-/// The reasons are printed on stderr, each once.
-CaseSet table_cases(const CaseSet& set, int& skipped) {
-  CaseSet covered{set.name, set.measure, {}};
-  std::set<std::string> reasons;
-  skipped = 0;
-  for (const Case& c : set.cases) {
-    const auto why = tangential::creep_table_outside(c.patch, c.creepages, c.load, kSteel);
-    if (!why) {
-      covered.cases.push_back(c);
-    } else {
-      ++skipped;
-      reasons.insert(*why);
-    }
-  }
-  for (const std::string& why : reasons)
-    std::cerr << "table " << set.name << ": skipped: " << why << "\n";
-  return covered;
 }
 
 /// CPU time of the calling thread [s]: unlike wall time it does not count the time the thread
@@ -349,38 +248,17 @@ std::vector<Forces> converged(const Solver& s, const CaseSet& set, int n_fine, d
   return result;
 }
 
-struct Errors {
-  double contact = 0, converged = 0;
-  double contact_fx = 0, contact_fy = 0;  // each component alone, same normaliser
-};
-
-Errors errors(const CaseSet& set, const std::vector<Forces>& f, const std::vector<Forces>* conv) {
-  Errors e;
-  for (std::size_t k = 0; k < set.cases.size(); ++k) {
-    const Case& c = set.cases[k];
-    e.contact =
-        std::max(e.contact, case_error(set.measure, c, f[k].fx, f[k].fy, c.fx_ref, c.fy_ref));
-    e.contact_fx = std::max(e.contact_fx, std::abs(f[k].fx - c.fx_ref) / scale(set.measure, c));
-    e.contact_fy = std::max(e.contact_fy, std::abs(f[k].fy - c.fy_ref) / scale(set.measure, c));
-    if (conv)
-      e.converged = std::max(
-          e.converged, case_error(set.measure, c, f[k].fx, f[k].fy, (*conv)[k].fx, (*conv)[k].fy));
-  }
-  return e;
-}
-
 std::vector<Solver> fastsim_solvers(tangential::TractionBound bound, bool every_scheme) {
-  const std::string bound_name =
-      bound == tangential::TractionBound::parabolic ? "parabolic" : "semi-elliptic";
+  using tangential::Method;
   std::vector<Solver> solvers;
-  for (const auto method :
-       {tangential::FastsimMethod::elliptic, tangential::FastsimMethod::eqe, tangential::FastsimMethod::eqe_shifted,
-        tangential::FastsimMethod::eql, tangential::FastsimMethod::sdec}) {
-    for (const auto scheme : {tangential::FastsimScheme::kalker, tangential::FastsimScheme::second_order}) {
+  for (const Method method :
+       {Method::fastsim_elliptic, Method::fastsim_eqe, Method::fastsim_eqe_shifted,
+        Method::fastsim_eql, Method::fastsim_sdec}) {
+    for (const auto scheme :
+         {tangential::FastsimScheme::kalker, tangential::FastsimScheme::second_order}) {
       const bool second = scheme == tangential::FastsimScheme::second_order;
-      if (second && !every_scheme && method != tangential::FastsimMethod::sdec) continue;
-      solvers.push_back({std::string(tangential::method_name(method)), second ? "second-order" : "kalker",
-                         bound_name, Kind::fastsim, method, scheme, bound});
+      if (second && !every_scheme && method != Method::fastsim_sdec) continue;
+      solvers.push_back({method, scheme, bound});
     }
   }
   return solvers;
@@ -388,14 +266,12 @@ std::vector<Solver> fastsim_solvers(tangential::TractionBound bound, bool every_
 
 /// The methods of Part 1 in the order of a full run (and of the CSV's rows).
 std::vector<Solver> plotted_solvers() {
-  std::vector<Solver> solvers = {
-      {"linear-sdec", "none", "none", Kind::closed_form},
-      {"she-sdec", "none", "none", Kind::closed_form},
-  };
+  using tangential::Method;
+  std::vector<Solver> solvers = {{Method::linear_sdec}, {Method::she_sdec}};
   for (const Solver& s : fastsim_solvers(tangential::TractionBound::parabolic, false))
     solvers.push_back(s);
-  solvers.push_back({"exact", "none", "none", Kind::exact});
-  solvers.push_back({"table", "none", "none", Kind::table});
+  solvers.push_back({Method::exact});
+  solvers.push_back({Method::table});
   return solvers;
 }
 
@@ -407,7 +283,7 @@ int main(int argc, char** argv) {
   std::set<std::string> only;  // --methods; empty: every method
   std::vector<std::string> known;
   for (const Solver& s : plotted_solvers())
-    if (rank(known, s.method) == known.size()) known.push_back(s.method);
+    if (rank(known, s.name()) == known.size()) known.push_back(s.name());
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--quick") {
@@ -432,7 +308,7 @@ int main(int argc, char** argv) {
     }
   }
   const bool merge = !only.empty();
-  const auto selected = [&](const Solver& s) { return !merge || only.contains(s.method); };
+  const auto selected = [&](const Solver& s) { return !merge || only.contains(s.name()); };
   std::filesystem::create_directories(dir);
   const int n_fine = quick ? 400 : 1600;
   const std::vector<int> plot_grids =
@@ -452,7 +328,7 @@ int main(int argc, char** argv) {
 
   std::vector<CaseSet> sets;
   try {
-    sets = {pure_spin_cases(), linear_cases()};
+    sets = {pure_spin_cases(), linear_cases(kSteel)};
   } catch (const std::exception& error) {
     std::cerr << "wheelwear_runtime_error_study: " << error.what() << "\n";
     return 1;
@@ -471,7 +347,7 @@ int main(int argc, char** argv) {
   // Part 1: the plotted methods, timed, on both case sets.
   std::vector<std::string> set_order, method_order;
   for (const CaseSet& set : sets) set_order.push_back(set.name);
-  for (const Solver& s : solvers) method_order.push_back(s.method);
+  for (const Solver& s : solvers) method_order.push_back(s.name());
   const std::map<std::string, std::string> defaults = {{"skipped", "0"}};
   try {
     StudyCsv csv(dir / "runtime_error.csv",
@@ -483,41 +359,42 @@ int main(int argc, char** argv) {
       for (const Solver& s : solvers) {
         if (!selected(s)) continue;
         int skipped = 0;
-        const CaseSet set = s.kind == Kind::table ? table_cases(full_set, skipped) : full_set;
+        const CaseSet set = s.method == tangential::Method::table
+                                ? table_cases(full_set, kSteel, skipped)
+                                : full_set;
         if (set.cases.empty()) {
-          std::cerr << s.method << " " << set.name << ": no case covered, no row\n";
+          std::cerr << s.name() << " " << set.name << ": no case covered, no row\n";
           continue;
         }
         std::vector<Forces> conv;
-        if (s.kind == Kind::fastsim) {
+        if (s.fastsim()) {
           double spread = 0;
           conv = converged(s, set, n_fine, spread);
           std::fprintf(
               stderr,
               "%-20s %-13s %-10s converged answer within %.2e (Richardson %d/%d vs %d/%d)\n",
-              s.method.c_str(), s.scheme.c_str(), set.name.c_str(), spread, n_fine / 2, n_fine,
+              s.name().c_str(), s.scheme().c_str(), set.name.c_str(), spread, n_fine / 2, n_fine,
               n_fine / 4, n_fine / 2);
-        } else if (s.kind == Kind::exact) {
+        } else if (s.exact()) {
           tangential::TangentialSolution unused;
           const int failed = solve_all(s, n_exact_reference, set, conv, unused);
           std::fprintf(stderr, "%-20s %-13s %-10s reference answer: %d x %d (%d not converged)\n",
-                       s.method.c_str(), s.scheme.c_str(), set.name.c_str(), n_exact_reference,
+                       s.name().c_str(), s.scheme().c_str(), set.name.c_str(), n_exact_reference,
                        n_exact_reference, failed);
         }
         const std::vector<int> grids =
-            s.kind == Kind::fastsim ? plot_grids
-                                    : (s.kind == Kind::exact ? exact_grids : std::vector<int>{0});
+            s.fastsim() ? plot_grids : (s.exact() ? exact_grids : std::vector<int>{0});
         for (const int n : grids) {
           std::vector<Forces> f;
           tangential::TangentialSolution solution;
           const int failed = solve_all(s, n, set, f, solution);
           if (failed > 0)
             std::fprintf(stderr, "%s n = %d %s: %d solves not converged (last iterate used)\n",
-                         s.method.c_str(), n, set.name.c_str(), failed);
+                         s.name().c_str(), n, set.name.c_str(), failed);
           const Errors e = errors(set, f, s.grid() ? &conv : nullptr);
           const double t = time_per_call(s, n, set);
           std::snprintf(line, sizeof line, "%s,%s,%s,%d,%d,%s,%zu,%.4g,%.6g,%.6g,%.6g,%.6g,%d",
-                        s.method.c_str(), s.scheme.c_str(), s.bound.c_str(), n, n * n,
+                        s.name().c_str(), s.scheme().c_str(), s.bound().c_str(), n, n * n,
                         set.name.c_str(), set.cases.size(), t, e.contact, e.converged, e.contact_fx,
                         e.contact_fy, skipped);
           csv.add(line);
@@ -530,7 +407,8 @@ int main(int argc, char** argv) {
     // Part 2: the error model of every FASTSIM method, scheme and bound (pure spin, untimed);
     // with --methods only for the FASTSIM methods listed, and not at all when there is none.
     std::vector<std::pair<tangential::TractionBound, Solver>> fits;
-    for (const auto bound : {tangential::TractionBound::parabolic, tangential::TractionBound::semi_elliptic})
+    for (const auto bound :
+         {tangential::TractionBound::parabolic, tangential::TractionBound::semi_elliptic})
       for (const Solver& s : fastsim_solvers(bound, true))
         if (selected(s)) fits.emplace_back(bound, s);
     if (fits.empty()) return 0;
@@ -543,8 +421,8 @@ int main(int argc, char** argv) {
     for (const auto& [bound, s] : fits) {
       double spread = 0;
       const std::vector<Forces> conv = converged(s, spin, n_fit_fine, spread);
-      std::fprintf(stderr, "fit %s %s %s: converged answer within %.2e\n", s.method.c_str(),
-                   s.scheme.c_str(), s.bound.c_str(), spread);
+      std::fprintf(stderr, "fit %s %s %s: converged answer within %.2e\n", s.name().c_str(),
+                   s.scheme().c_str(), s.bound().c_str(), spread);
       double c_all = 0, c_fine = 0;
       int n_at_max = 0;
       std::vector<Forces> f;
@@ -558,12 +436,12 @@ int main(int argc, char** argv) {
           n_at_max = n;
         }
         if (n >= 100 && n <= 200) c_fine = std::max(c_fine, scaled);
-        std::snprintf(line, sizeof line, "%s,%s,%s,%d,%.6g", s.method.c_str(), s.scheme.c_str(),
-                      s.bound.c_str(), n, e);
+        std::snprintf(line, sizeof line, "%s,%s,%s,%d,%.6g", s.name().c_str(), s.scheme().c_str(),
+                      s.bound().c_str(), n, e);
         fit.add(line);
       }
-      std::snprintf(line, sizeof line, "%s,%s,%s,%g,%d,%.4g,%.4g,%d", s.method.c_str(),
-                    s.scheme.c_str(), s.bound.c_str(), s.order(), s.min_fit_n(), c_all, c_fine,
+      std::snprintf(line, sizeof line, "%s,%s,%s,%g,%d,%.4g,%.4g,%d", s.name().c_str(),
+                    s.scheme().c_str(), s.bound().c_str(), s.order(), s.min_fit_n(), c_all, c_fine,
                     n_at_max);
       constants.add(line);
       std::cerr << "fit " << line << "\n";
