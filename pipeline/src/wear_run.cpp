@@ -245,11 +245,12 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
 
 // The SHA-256 of the book of creep-force tables the run uses. A run with tangential_method
 // best cannot go without it (creep_table_sha256 throws, naming where it looked); the other
-// methods do not read it, so a missing table is recorded, not fatal.
+// methods do not read it, so the file found is hashed without loading it, and a missing table
+// is recorded, not fatal.
 std::string table_hash(const Scene& scene) {
   if (scene.tangential == TangentialMethod::best) return tangential::creep_table_sha256();
   try {
-    return tangential::creep_table_sha256();
+    return tangential::file_sha256(tangential::locate_creep_table());
   } catch (const InputError&) {
     return "none";  // the reason names this machine's paths, which the file must not hold
   }

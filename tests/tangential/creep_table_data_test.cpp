@@ -156,6 +156,9 @@ TEST(Sha256, KnownVectors) {
 
 TEST(CreepTableData, RecordsTheShippedTablesSha256) {
   EXPECT_EQ(creep_table_sha256(), kShippedSha256);
+  // The file's hash without loading it is the same.
+  EXPECT_EQ(file_sha256(kShippedTable), kShippedSha256);
+  EXPECT_THROW(file_sha256(kShippedTable.parent_path() / "no_such_table.h5"), InputError);
   EXPECT_EQ(creep_table_path().filename(), "creep_table.h5");
   if (!std::getenv("WHEELWEAR_DATA_DIR")) {
     // The build tree has no <prefix>/share/wheelwear: the source tree's copy.

@@ -297,6 +297,10 @@ std::string sha256_hex(std::string_view bytes) {
   return hex;
 }
 
+std::string file_sha256(const std::filesystem::path& file) {
+  return sha256_hex(read_bytes(file));
+}
+
 CreepTable load_creep_table(const std::filesystem::path& file) {
   const std::string bytes = read_bytes(file);
   std::shared_ptr<CreepTableData> table;
