@@ -1,6 +1,7 @@
 #include "wheelwear/profiles/miniprof_format.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <optional>
@@ -58,6 +59,66 @@ int mpt_marker_line(const std::vector<std::string_view>& lines) {
 constexpr const char* kMptRefusal =
     "MiniProf .mpt files are not supported; export .whl/.ban from MiniProf";
 
+// A header key that states a length of the wheel, in mm.
+struct HeaderLength {
+  std::string_view key;
+  std::optional<double> RawProfile::*field;
+  std::string_view what;  // the quantity, for notes and messages
+  double lo, hi;          // plausible range [m]
+  std::string_view why;   // why values outside the range are refused
+};
+
+// The keys and their meaning come from public files (docs/profiles.md): CONTACT's MiniProf reader
+// knows both names, and a MiniProf for Windows 2.43 wheel export in CONTACT's test bank writes
+// DiameterTaperline=719.1924 next to DiameterFlange=774.9396 (= 719.1924 + 2 Sh, Sh=27.8749: a
+// diameter at the taping line) and WheelDiameterTaperline=70.0000 (where that diameter is taken,
+// from the internal face, as its X axis runs).
+constexpr std::array<HeaderLength, 2> kHeaderLengths = {{
+    {"DiameterTaperline", &RawProfile::wheel_diameter, "wheel diameter at the taping line", 0.2,
+     2.5, "railway wheels measure about 0.3 ... 1.3 m; a value outside is a wrong unit or key"},
+    {"WheelDiameterTaperline", &RawProfile::taping_line_distance,
+     "taping line distance from the internal face", 0.03, 0.11,
+     "EN 13715 puts the taping line 70 mm from the internal face; the range is that of "
+     "LoadOptions::taping_line_distance"},
+}};
+
+// Fills the RawProfile field that header key `key` states (kHeaderLengths; names compared
+// without case, as CONTACT's reader does). An empty value states nothing: MiniProf writes keys it
+// has no value for empty. Throws InputError naming the file, line and key for anything that is
+// not a length in range.
+void read_header_length(RawProfile& raw, std::string_view key, std::string_view value, int line) {
+  for (const HeaderLength& h : kHeaderLengths) {
+    if (to_lower(key) != to_lower(h.key)) continue;
+    if (value.empty()) return;
+    const std::string where = raw.source + ":" + std::to_string(line) + ": " + std::string(key) +
+                              "=" + std::string(value);
+    const std::optional<double> mm = parse_number(value);
+    if (!mm || !std::isfinite(*mm))
+      throw InputError(where + ": the " + std::string(h.what) + " must be a number in mm");
+    const double metres = *mm * 1e-3;
+    if (metres < h.lo || metres > h.hi)
+      throw InputError(where + " mm: the " + std::string(h.what) + " must lie in " +
+                       format_number(h.lo * 1e3) + " ... " + format_number(h.hi * 1e3) + " mm (" +
+                       std::string(h.why) + ")");
+    raw.*(h.field) = metres;
+    raw.notes.push_back("line " + std::to_string(line) + ": " + std::string(key) + "=" +
+                        std::string(value) + ": " + std::string(h.what) + " " +
+                        format_number(metres) + " m");
+  }
+}
+
+// Records a body the file states on `line` ("#MINIWHEELPROF", wheelwear's "# body:"); refuses a
+// second statement that contradicts the first.
+void state_body(RawProfile& raw, Body body, int line, std::string evidence) {
+  if (raw.body_line > 0 && raw.body != body)
+    throw InputError(raw.source + ":" + std::to_string(line) + ": the file says it is a " +
+                     std::string(to_string(body)) + " profile, but line " +
+                     std::to_string(raw.body_line) + " says " + std::string(to_string(*raw.body)));
+  raw.body = body;
+  raw.body_line = line;
+  raw.body_evidence = std::move(evidence);
+}
+
 }  // namespace
 
 bool is_miniprof_mpt(std::string_view extension, std::string_view text) {
@@ -86,10 +147,14 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
   bool old_layout = false;
   for (std::size_t i = 0; i < std::min<std::size_t>(3, lines.size()); ++i)
     if (lines[i].find("MINIPROF") != std::string_view::npos) old_layout = true;
-  if (ext == ".whl" || (!lines.empty() && lines.front().rfind("#MINIWHEELPROF", 0) == 0))
-    raw.body = Body::wheel;
-  else if (ext == ".ban")
-    raw.body = Body::rail;
+  // MiniProf names its exports by body; the content, when it says, comes first.
+  if (ext == ".whl" || ext == ".ban") {
+    raw.body = ext == ".whl" ? Body::wheel : Body::rail;
+    raw.body_evidence = ext == ".whl" ? "extension .whl: a MiniProf wheel export"
+                                      : "extension .ban: a MiniProf rail export";
+  }
+  if (!lines.empty() && lines.front().rfind("#MINIWHEELPROF", 0) == 0)
+    state_body(raw, Body::wheel, 1, "#MINIWHEELPROF: a MiniProf wheel export");
 
   bool in_data = false;
   std::vector<std::vector<double>> rows;
@@ -117,6 +182,7 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
         const std::string value(trim(inner.substr(eq + 1)));
         raw.header.emplace_back(key, value);
         if (key == "ColumnDef") column_def = value;
+        read_header_length(raw, key, value, number);
         continue;
       }
       const bool labelled = index + 1 < lines.size() &&
@@ -128,7 +194,13 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
       }
       continue;
     }
-    if (line.front() == '%' || line.front() == '!' || line.front() == '#') continue;  // comment
+    if (line.front() == '%' || line.front() == '!' || line.front() == '#') {  // comment
+      // wheelwear's own "# body: rail" (format_miniprof) says what the name may not.
+      const std::string comment = to_lower(trim(line.substr(1)));
+      if (line.front() == '#' && (comment == "body: wheel" || comment == "body: rail"))
+        state_body(raw, comment == "body: wheel" ? Body::wheel : Body::rail, number, "");
+      continue;
+    }
     // A row of numbers, possibly followed by a comment, is a point row; in the header only with
     // two values or more (the points may follow the header without the empty line).
     bool commented = false;
@@ -157,6 +229,7 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
       const std::string value(trim(line.substr(eq + 1)));
       raw.header.emplace_back(key, value);
       if (key == "ColumnDef") column_def = value;
+      read_header_length(raw, key, value, number);
       if (key == "XYPoints" && !value.empty()) {
         declared_points = parse_number(value);
         declared_line = number;
@@ -217,8 +290,9 @@ std::string format_miniprof(const PointList& points, Body body) {
   if (body == Body::wheel) {
     out = "#MINIWHEELPROF\nwheelwear\nMINIPROF text export\n\n";
   } else {
+    // "# body: rail" keeps a rail a rail under any name (a .whl name says wheel).
     out = "Filename=wheelwear\nProgramName=wheelwear\nXYPoints=" + std::to_string(points.size()) +
-          "\nColumnDef=X,Y\n\n";
+          "\nColumnDef=X,Y\n# body: rail\n\n";
   }
   const double sign = body == Body::wheel ? 1.0 : -1.0;
   for (const Point& p : points) {

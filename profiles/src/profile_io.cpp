@@ -21,6 +21,28 @@ std::string lower_extension(const std::filesystem::path& path) {
   return to_lower(path.extension().string());
 }
 
+// The refusal of a file whose stated body is not the one asked for: where and how the file says
+// it, and what to give instead (a MiniProf export's body is in its name, .whl or .ban).
+std::string body_refusal(const RawProfile& raw, Body expected_body) {
+  const std::string stated(to_string(*raw.body)), expected(to_string(expected_body));
+  std::string message = raw.source;
+  if (raw.body_line > 0) {
+    message += ':';  // appended piece by piece: GCC 12 warns falsely on ":" + std::string
+    message += std::to_string(raw.body_line);
+  }
+  message += ": the file says it is a " + stated + " profile";
+  if (!raw.body_evidence.empty()) message += " (" + raw.body_evidence + ")";
+  message +=
+      ", but a " + expected + " profile is expected here; give a " + expected + " profile file";
+  if (raw.format == "miniprof") {
+    const std::string extension = expected_body == Body::wheel ? ".whl" : ".ban";
+    message += " (MiniProf exports " + expected + "s as " + extension + " files)";
+    if (raw.body_line == 0)  // only the name says it: the file may be misnamed
+      message += ", or rename this file to " + extension + " if it does hold a " + expected;
+  }
+  return message;
+}
+
 }  // namespace
 
 FileFormat detect_format(const std::filesystem::path& path, std::string_view text) {
@@ -53,16 +75,9 @@ RawProfile parse_profile_text(std::string_view text, std::string_view source, Fi
       raw = parse_columns(text, source, options);
       break;
   }
-  if (options.body && raw.body && raw.body_line > 0 && *raw.body != *options.body) {
-    const std::string stated(to_string(*raw.body)), expected(to_string(*options.body));
-    throw InputError(raw.source + ":" + std::to_string(raw.body_line) + ": the file says it is a " +
-                     stated + " profile" +
-                     (raw.format == "simpack"
-                          ? std::string(" (type = ") + (*raw.body == Body::wheel ? "1" : "0") + ")"
-                          : std::string()) +
-                     ", but a " + expected + " profile is expected here; give a " + expected +
-                     " profile file");
-  }
+  if (options.body && raw.body && *raw.body != *options.body &&
+      (raw.body_line > 0 || !raw.body_evidence.empty()))
+    throw InputError(body_refusal(raw, *options.body));
   if (options.body) raw.body = options.body;
   return raw;
 }

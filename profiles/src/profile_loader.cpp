@@ -114,12 +114,28 @@ std::string origin_name(WheelOrigin origin) {
                                               "writes wheels)";
 }
 
+// The taping line distance: as set, else the file header's, else EN 13715's 70 mm.
+double taping_line_distance(const RawProfile& raw, const LoadOptions& options) {
+  return options.taping_line_distance.value_or(
+      raw.taping_line_distance.value_or(kDefaultTapingLineDistance));
+}
+
+// A value set by the user that the file's header contradicts: used, with a warning.
+void warn_if_header_differs(const RawProfile& raw, const char* what, std::optional<double> set,
+                            std::optional<double> header, const char* option,
+                            std::vector<std::string>& warnings) {
+  if (!set || !header || std::abs(*set - *header) <= 1e-6) return;
+  warnings.push_back(raw.source + ": " + what + " " + mm3(*set) + " as set (" + option +
+                     ") differs from the file header's " + mm3(*header) +
+                     "; the set value is used");
+}
+
 // Decides the wheel's origin (LoadOptions::origin) and moves the points so that the taping line
 // is at y = 0. A disagreement with the automatic rule is a warning: a wrong origin puts the
 // rolling radius 70 mm off, on the back face or the field side, without any other symptom.
 OriginReport place_wheel_origin(RawProfile& raw, const LoadOptions& options,
                                 std::vector<std::string>& warnings) {
-  const double distance = options.taping_line_distance;
+  const double distance = taping_line_distance(raw, options);
   if (!(std::isfinite(distance) && distance >= 0.03 && distance <= 0.11))
     throw InputError(raw.source + ": taping line distance from the internal face " +
                      core::format_number(distance) +
@@ -149,8 +165,15 @@ OriginReport place_wheel_origin(RawProfile& raw, const LoadOptions& options,
                          "--origin auto or " +
                          std::string(to_string(*verdict.origin)));
   }
+  warn_if_header_differs(raw, "taping line distance", options.taping_line_distance,
+                         raw.taping_line_distance, "--taping-line-distance", warnings);
   if (report.origin == WheelOrigin::internal_face) {
     report.shift = -distance;
+    report.reason += std::string("; taping line ") + mm3(distance) + " from the internal face (" +
+                     (options.taping_line_distance ? "as set"
+                      : raw.taping_line_distance   ? "the file header's"
+                                                   : "EN 13715's default") +
+                     ")";
     report.reason += "; moved by " + mm3(report.shift) + " to put the taping line at y = 0";
     for (Point& p : raw.points) p[0] += report.shift;
   }
@@ -222,7 +245,15 @@ LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options) {
       options.name.empty() ? std::filesystem::path(raw.source).filename().string() : options.name;
   info.body = *body;
   info.side = options.side.value_or(raw.side.value_or(Side::right));
-  info.nominal_radius = options.nominal_radius;
+  if (*body == Body::wheel) {
+    const std::optional<double> header_radius =
+        raw.wheel_diameter ? std::optional<double>(0.5 * *raw.wheel_diameter) : std::nullopt;
+    warn_if_header_differs(raw, "nominal rolling radius", options.nominal_radius, header_radius,
+                           "--wheel-radius, the scene's wheel radius_m", cleaning.warnings);
+    info.nominal_radius =
+        options.nominal_radius.value_or(header_radius.value_or(options.fallback_nominal_radius));
+    info.taping_line_distance = taping_line_distance(raw, options);
+  }
   Profile profile(raw.points, info, options.curve);
   if (*body == Body::rail) {
     if (const auto warning = gauge_point_warning(profile, raw, orientation))

@@ -39,20 +39,32 @@ double default_inclination(const std::string& spec) {
   return is_builtin_rail(spec) ? std::atan(1.0 / 40.0) : 0.0;
 }
 
-profiles::Profile wheel_profile(const std::string& spec, double radius) {
-  require(radius > 0.1 && radius < 2.0, "wheel radius", radius, "must lie in 0.1 ... 2 m");
+LoadOptions ProfileFileOptions::load_options(Body body) const {
+  LoadOptions options;
+  options.read.body = body;
+  options.origin = origin;
+  options.taping_line_distance = taping_line_distance;
+  options.cleaning.max_drop_fraction = max_drop_fraction;
+  return options;
+}
+
+profiles::Profile wheel_profile(const std::string& spec, std::optional<double> radius,
+                                const ProfileFileOptions& files) {
+  if (radius)
+    require(*radius > 0.1 && *radius < 2.0, "wheel radius", *radius, "must lie in 0.1 ... 2 m");
   if (spec == "S1002") {
     profiles::S1002Options options;
-    options.nominal_radius = radius;
+    options.nominal_radius = radius.value_or(kDefaultWheelRadius);
     return profiles::s1002(options);
   }
-  profiles::LoadOptions options;
-  options.read.body = profiles::Body::wheel;
+  profiles::LoadOptions options = files.load_options(Body::wheel);
   options.nominal_radius = radius;
+  options.fallback_nominal_radius = kDefaultWheelRadius;
   return profiles::load_profile(spec, options).profile;
 }
 
-profiles::Profile rail_profile(const std::string& spec, std::optional<double> inclination) {
+profiles::Profile rail_profile(const std::string& spec, std::optional<double> inclination,
+                               const ProfileFileOptions& files) {
   const double angle = inclination.value_or(default_inclination(spec));
   require(std::isfinite(angle) && std::abs(angle) <= 0.1, "rail inclination", angle,
           "must lie in -0.1 ... 0.1 rad (1:40 is 0.025, 1:20 is 0.05)");
@@ -63,9 +75,8 @@ profiles::Profile rail_profile(const std::string& spec, std::optional<double> in
     options.inclination = angle;
     return profiles::rail_60e1(options);
   }
-  profiles::LoadOptions options;
-  options.read.body = profiles::Body::rail;
-  const profiles::Profile rail = profiles::load_profile(spec, options).profile;
+  const profiles::Profile rail =
+      profiles::load_profile(spec, files.load_options(Body::rail)).profile;
   return angle == 0.0 ? rail : canted(rail, angle);
 }
 

@@ -143,6 +143,7 @@ RawProfile parse_simpack(std::string_view text, std::string_view source,
             "must be 0 (rail) or 1 (wheel)");
     raw.body = type == 1.0 ? Body::wheel : Body::rail;
     raw.body_line = type_line;
+    raw.body_evidence = type == 1.0 ? "type = 1" : "type = 0";
   }
   if (!comment_lines.empty())
     raw.add_repair("trailing_comments", comment_lines,

@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/profiles/internal_face.hpp"
 
 namespace wheelwear::profiles {
 
@@ -43,12 +44,9 @@ WheelParameters wheel_parameters(const Profile& wheel, const WheelParameterOptio
   const auto knots = static_cast<std::ptrdiff_t>(s_knots.size()) - 1;
   auto at = [&](std::ptrdiff_t k) { return wheel.position(s_knots[static_cast<std::size_t>(k)]); };
 
-  // Internal face: the extreme -y point.
-  std::ptrdiff_t back = 0;
-  for (std::ptrdiff_t k = 0; k <= knots; ++k)
-    if (at(k)[0] < at(back)[0]) back = k;
-  out.internal_face = at(back);
-  const double y_tape = out.internal_face[0] + options.taping_line_offset;
+  // The internal face from its steep points, or by the profile's origin convention.
+  const double y_face = internal_face(wheel).y;
+  const double y_tape = y_face + options.taping_line_offset;
   const auto tape = wheel.surface_at(y_tape);
   if (!tape)
     throw InputError("profile " + wheel.info().name + " does not reach the running circle " +
@@ -58,8 +56,8 @@ WheelParameters wheel_parameters(const Profile& wheel, const WheelParameterOptio
 
   // Flange tip: the largest z between the internal face and the running circle.
   const auto tape_knot = std::min(knots, static_cast<std::ptrdiff_t>(std::floor(tape->s / h)));
-  std::ptrdiff_t tip = back;
-  for (std::ptrdiff_t k = back; k <= tape_knot; ++k)
+  std::ptrdiff_t tip = 0;
+  for (std::ptrdiff_t k = 0; k <= tape_knot; ++k)
     if (at(k)[1] > at(tip)[1]) tip = k;
   double lo = s_knots[static_cast<std::size_t>(std::max<std::ptrdiff_t>(tip - 1, 0))];
   double hi = s_knots[static_cast<std::size_t>(std::min(tip + 1, knots))];
@@ -89,7 +87,8 @@ WheelParameters wheel_parameters(const Profile& wheel, const WheelParameterOptio
   };
   out.sd_point = face_point(out.running_circle[1] + options.sd_height, "Sd");
   out.qr_point = face_point(out.flange_tip[1] - options.qr_height, "qR");
-  out.Sd = out.sd_point[0] - out.internal_face[0];
+  out.internal_face = Point(y_face, out.flange_tip[1]);
+  out.Sd = out.sd_point[0] - y_face;
   out.qR = out.sd_point[0] - out.qr_point[0];
   return out;
 }

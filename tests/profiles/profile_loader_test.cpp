@@ -44,9 +44,11 @@ TEST(ProfileLoader, MeasuredWheelReadsCleansAndValidates) {
     EXPECT_GE(kink.line, 219);
     EXPECT_LE(kink.line, 230);
   }
-  // Flange back at y = 0 (MiniProf's origin), field side at 131 mm.
-  EXPECT_NEAR(wheel.profile.y_min(), 0.0, 0.2e-3);
-  EXPECT_NEAR(wheel.profile.y_max(), 0.1313, 0.1e-3);
+  // Flange back at X = 0 (MiniProf's origin), field side at X = 131 mm; the automatic origin
+  // rule takes the internal face and moves the wheel by 70 mm to put the taping line at y = 0.
+  EXPECT_EQ(wheel.origin.origin, WheelOrigin::internal_face);
+  EXPECT_NEAR(wheel.profile.y_min(), -0.070, 0.2e-3);
+  EXPECT_NEAR(wheel.profile.y_max(), 0.1313 - 0.070, 0.1e-3);
 }
 
 TEST(ProfileLoader, MeasuredRailReadsCleansAndValidates) {

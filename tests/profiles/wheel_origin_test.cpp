@@ -11,6 +11,7 @@
 
 #include "test_support.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/profiles/internal_face.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
@@ -115,6 +116,44 @@ TEST(WheelOrigin, AFileStartingOnTheBackRoundingIsTakenFromTheFlangeBack) {
   // Its first point, on the rounding 0.6 mm from the flange back, lands 69.4 mm from the taping
   // line.
   EXPECT_NEAR(wheel.points.points.front()[0], 0.599997760e-3 - 0.070, 1e-15);
+  // No steep back face: the internal face follows from the origin convention, 70 mm from the
+  // taping line, not from the first point (which would put Sd 0.6 mm low). Reference: S1002's
+  // nominal Sd 32.5 mm, to the 0.02 mm of the generated profile's own check above.
+  const InternalFace face = internal_face(wheel.profile);
+  EXPECT_FALSE(face.measured);
+  EXPECT_EQ(face.y, -0.070);
+  EXPECT_NEAR(wheel_parameters(wheel.profile).Sd, 0.0325, 0.02e-3);
+}
+
+// S1002 with a measured-like back face: a vertical face from the back arc's vertical tangent
+// 20 mm up towards the axle, with 0.02 mm of alternating noise (MiniProf's order), written with
+// X = 0 at the face and the first points on a 1 mm rounding that flares 0.8 mm outwards at its
+// top. The steep points give the face; the most outward point would not.
+TEST(WheelOrigin, TheInternalFaceIsTakenFromTheSteepBackFacePoints) {
+  const PointList s1002 = s1002_points({.point_spacing = 0.2e-3});
+  RawProfile raw;
+  raw.source = "measured_back_face.whl";
+  raw.body = Body::wheel;
+  const double z_face_end = s1002.front()[1];  // the back arc's vertical tangent
+  for (int k = 0; k <= 4; ++k) {               // the flaring rounding at the top
+    const double t = 0.25 * k;
+    raw.points.emplace_back(-0.8e-3 * (1.0 - t) * (1.0 - t), z_face_end - 21e-3 + 1e-3 * t);
+  }
+  for (int k = 1; k < 100; ++k)
+    raw.points.emplace_back((k % 2 ? 0.02e-3 : -0.02e-3), z_face_end - 20e-3 + 0.2e-3 * k);
+  for (const Point& p : s1002) raw.points.emplace_back(p[0] + 0.070, p[1]);
+  raw.lines.assign(raw.points.size(), 0);
+  LoadOptions options;  // automatic origin: within 5 mm of X = 0, the internal face
+  const LoadedProfile wheel = prepare_profile(raw, options);
+  EXPECT_EQ(wheel.origin.origin, WheelOrigin::internal_face);
+  const InternalFace face = internal_face(wheel.profile);
+  EXPECT_TRUE(face.measured) << face.how;
+  // The median of the noisy face: within the smoothing's residue of the noise (0.02 mm).
+  EXPECT_NEAR(face.y, -0.070, 0.02e-3) << face.how;
+  EXPECT_NEAR(wheel.profile.y_min(), -0.0708, 0.05e-3);  // the flare the old rule took
+  const WheelParameters p = wheel_parameters(wheel.profile);
+  EXPECT_NEAR(p.Sd, 0.0325, 0.03e-3);  // S1002's nominal Sd; the face's noise and the fit's
+  EXPECT_NEAR(p.Sh, 0.028, 0.02e-3);
 }
 
 TEST(WheelOrigin, AnExplicitWrongOriginMovesAsSetAndWarns) {
@@ -163,13 +202,13 @@ TEST(WheelOrigin, OptionNames) {
 
 TEST(WheelOrigin, MeasuredMiniProfWheel) {
   // Car7216_0001r.whl: X = 0 at the flange back (its back face, X = -0.16 ... 0.1 mm).
-  const LoadedProfile kept = load_profile(testing::measured_wheel_file());
-  LoadOptions automatic;
-  automatic.origin = WheelOrigin::automatic;
-  const LoadedProfile moved = load_profile(testing::measured_wheel_file(), automatic);
+  LoadOptions as_taping_line;
+  as_taping_line.origin = WheelOrigin::taping_line;
+  const LoadedProfile kept = load_profile(testing::measured_wheel_file(), as_taping_line);
+  const LoadedProfile moved = load_profile(testing::measured_wheel_file());  // automatic
   EXPECT_EQ(moved.origin.origin, WheelOrigin::internal_face);
   EXPECT_TRUE(moved.cleaning.warnings.empty());
-  EXPECT_EQ(kept.cleaning.warnings.size(), 1u);  // the default keeps the origin: warned
+  EXPECT_EQ(kept.cleaning.warnings.size(), 1u);  // the rule contradicts the set origin: warned
   EXPECT_NEAR(moved.profile.y_min(), kept.profile.y_min() - 0.070, 1e-9);
   EXPECT_NEAR(moved.profile.y_max(), kept.profile.y_max() - 0.070, 1e-9);
   const WheelParameters a = wheel_parameters(moved.profile), b = wheel_parameters(kept.profile);
@@ -189,6 +228,54 @@ TEST(WheelOrigin, ContactBenchmarkWheelKeepsItsTapingLine) {
   EXPECT_EQ(wheel.origin.origin, WheelOrigin::taping_line);
   EXPECT_EQ(wheel.origin.shift, 0.0);
   EXPECT_TRUE(wheel.cleaning.warnings.empty());
+}
+
+}  // namespace
+}  // namespace wheelwear::profiles
+
+namespace wheelwear::profiles {
+namespace {
+
+// The file header's values place the wheel: S1002 written as MiniProf for Windows writes it, X
+// = 0 at the internal face, with a taping line 72 mm from it (WheelDiameterTaperline) and a
+// diameter of 840 mm there (DiameterTaperline). The reference is S1002 itself, shifted by the
+// header's 72 mm, and half the header's diameter.
+TEST(WheelOrigin, TheHeaderStatesTheTapingLineAndTheNominalRadius) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "wheelwear_header_taping_line.whl";
+  {
+    std::ofstream out(path);
+    out << "ProgramName=MiniProf for Windows\nWheelDiameterTaperline=72.0000\n"
+           "DiameterTaperline=840.0000\nColumnDef=X,Y\n\n";
+    out.precision(12);
+    for (const Point& p : s1002_points({.point_spacing = 0.5e-3}))
+      out << (p[0] + 0.072) * 1e3 << ' ' << p[1] * 1e3 << '\n';
+  }
+  const LoadedProfile wheel = load_profile(path);
+  EXPECT_EQ(wheel.origin.origin, WheelOrigin::internal_face);
+  EXPECT_NEAR(wheel.origin.shift, -0.072, 1e-15);
+  EXPECT_NE(wheel.origin.reason.find("the file header's"), std::string::npos)
+      << wheel.origin.reason;
+  EXPECT_NEAR(wheel.profile.info().nominal_radius, 0.420, 1e-15);
+  EXPECT_NEAR(wheel.profile.info().taping_line_distance, 0.072, 1e-15);
+  EXPECT_TRUE(wheel.cleaning.warnings.empty());
+  // S1002's taping line lands at y = 0 (12 digits written: 1e-12 m); its vertical flange back,
+  // 2 mm from the file's X = 0 as written here, is measured where it is, 70 mm from the taping
+  // line, and EN 15313's Sd from it is S1002's nominal 32.5 mm (to its 0.02 mm check above).
+  EXPECT_NEAR(*wheel.profile.z_at(0.0), 0.0, 1e-9);
+  const InternalFace face = internal_face(wheel.profile);
+  EXPECT_TRUE(face.measured) << face.how;
+  EXPECT_NEAR(face.y, -0.070, 1e-9) << face.how;
+  EXPECT_NEAR(wheel_parameters(wheel.profile).Sd, 0.0325, 0.02e-3);
+  // A radius set by the user wins over the header's, with a warning.
+  LoadOptions set;
+  set.nominal_radius = 0.45;
+  const LoadedProfile overridden = load_profile(path, set);
+  EXPECT_EQ(overridden.profile.info().nominal_radius, 0.45);
+  ASSERT_EQ(overridden.cleaning.warnings.size(), 1u);
+  EXPECT_NE(overridden.cleaning.warnings[0].find("420.000 mm"), std::string::npos)
+      << overridden.cleaning.warnings[0];
+  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -1,6 +1,12 @@
 #pragma once
 /// Plain two-column text and CSV profile files.
 ///
+/// Axes (docs/profiles.md): the file's own, returned as written. wheelwear writes the profile frame
+/// (y lateral, + towards the field side, 0 at a wheel's taping line or a rail's top; z vertical,
+/// + down, 0 at the taping-line height or the top of rail); other files may have y or z the other
+/// way (orientation.hpp turns them) and a wheel's y = 0 at its internal face (the loader's origin
+/// rule, profile_loader.hpp). No header states a wheel's diameter or taping line.
+///
 /// Reading: one point per line, values separated by commas, blanks or tabs (or semicolons, with
 /// decimal commas allowed then). Lines starting with '#', '%', '!' or "//" are comments, and so is
 /// text after '"', '%', '!' or '#' on a row of numbers (recorded in RawProfile::repairs);

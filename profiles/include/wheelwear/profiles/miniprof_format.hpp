@@ -9,13 +9,20 @@
 /// values are in mm and ColumnDef (the last one wins; default "X,Y") names the columns: X lateral,
 /// Y vertical, A the surface angle, C the curvature. XYPoints, when given, is the point count.
 ///
-/// Axes, established from the two files in tests/data/measured: in the wheel file X runs from the
-/// flange back (X = 0, the back face is the first 70 points at X = -0.1 ... 0.1 mm) to the field
-/// side (X = 131 mm) and Y points down: the flange tip is at Y = +27.8 mm, the tread near X = 70
-/// mm at Y = 0, the back face top and the chamfer at Y = -22 mm. In the rail file X points towards
-/// the gauge face (the steep face measured down to Y = -25 mm is at X = 44 ... 46 mm, the field
-/// side stops at Y = -1.5 mm) and Y points up (top of rail at Y = -0.2 mm). The reader returns X
-/// and Y as they are; orientation.hpp turns such points into the profile frame.
+/// Axes (docs/profiles.md), from the measured files in tests/data/measured, MiniProf for Windows
+/// exports in CONTACT's test bank and CONTACT's user guide; the reader returns X and Y as written
+/// and orientation.hpp turns them into the profile frame:
+/// - wheel (.whl): X lateral, 0 at the internal face (flange back), + towards the field side
+///   (X = 131 ... 143 mm at the field side); Y vertical, + towards the flange tip (down: the tip
+///   at Y = +28 mm), 0 at about the taping-line height (|Y| <= 0.3 mm at X = 70 mm).
+/// - rail (.ban): X lateral, + towards the gauge face (the track centre: the face measured down to
+///   Y = -25 mm lies at X = 44 ... 46.6 mm), 0 where the instrument puts it (not a rail feature);
+///   Y vertical, + up, 0 at about the top of rail (Y = -0.2 mm there).
+/// Header keys (either layout, names without case): DiameterTaperline fills
+/// RawProfile::wheel_diameter and WheelDiameterTaperline RawProfile::taping_line_distance (mm;
+/// refused outside 200 ... 2500 mm and 30 ... 110 mm). The body comes from "#MINIWHEELPROF" or
+/// wheelwear's "# body:" line, else from the extension (.whl wheel, .ban rail); either binds
+/// (RawProfile::body_evidence).
 
 #include <filesystem>
 #include <string_view>
@@ -29,9 +36,11 @@ namespace wheelwear::profiles {
 bool is_miniprof_mpt(std::string_view extension, std::string_view text);
 
 /// Parses a MiniProf export; `extension` (".whl", ".ban", any case) gives the body when the file
-/// does not. Throws InputError naming source and line on malformed rows, a ColumnDef without X
-/// and Y, or a point count that differs from XYPoints by more than one (truncated file), and
-/// refuses .mpt files (is_miniprof_mpt: their layout is not publicly documented).
+/// does not say it, and either is binding (RawProfile::body_evidence). Throws InputError naming
+/// source and line on malformed rows, a ColumnDef without X and Y, a point count that differs from
+/// XYPoints by more than one (truncated file), a header length (DiameterTaperline,
+/// WheelDiameterTaperline) that is no number in its range, or two lines that state different
+/// bodies, and refuses .mpt files (is_miniprof_mpt: their layout is not publicly documented).
 ///
 /// Accepted beyond the strict layout, each recorded in RawProfile::repairs: text after '"', '%',
 /// '!' or '#' on a point row (a comment, as CONTACT reads it; lines starting with '%', '!' or '#'
@@ -41,8 +50,10 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
                           std::string_view extension, const ReadOptions& options = {});
 
 /// MiniProf text for `points` [m] in the profile frame. Wheels use the older layout with axes as
-/// the frame's (X = y, Y = z); rails use the key=value layout with MiniProf's rail axes
-/// (X = -y towards the gauge face, Y = -z up). Values in mm; the origin is kept.
+/// the frame's (X = y, Y = z: the origin stays at the taping line, where MiniProf's own exports
+/// put X = 0 at the internal face); rails use the key=value layout with MiniProf's rail axes
+/// (X = -y towards the gauge face, Y = -z up) and a "# body: rail" line. Values in mm; the
+/// origin is kept.
 std::string format_miniprof(const PointList& points, Body body);
 
 /// Writes format_miniprof() to `path` atomically.

@@ -16,6 +16,10 @@ struct ProfileInfo {
   Body body = Body::wheel;      ///< wheel or rail
   Side side = Side::right;      ///< side of the track (placement into the track frame mirrors left)
   double nominal_radius = 0.0;  ///< wheels: rolling radius at the taping line [m]; 0 if unknown
+  /// Wheels: the taping line's distance from the internal face [m] by the profile's origin
+  /// convention (EN 13715: 70 mm), used where the profile does not show its back face
+  /// (internal_face.hpp).
+  double taping_line_distance = 0.070;
 };
 
 /// A wheel or rail cross-section profile in its own frame, SI metres.

@@ -22,14 +22,15 @@ enum class FileFormat {
 FileFormat detect_format(const std::filesystem::path& path, std::string_view text);
 
 /// Parses `text` in `format`; `source` names it in messages and its extension may give the body.
-/// options.body overrides a body the extension suggests, but a body the file states in its content
-/// (Simpack "type", wheelwear's "# body:") that differs is refused: InputError naming the file's
-/// body and the expected one.
+/// options.body sets the body of a file that does not state one, but a body the file states
+/// (Simpack "type", wheelwear's "# body:", MiniProf's "#MINIWHEELPROF" or its .whl/.ban name:
+/// RawProfile::body_line, body_evidence) that differs is refused: InputError naming the file,
+/// what it says it is, the expected body and what to give instead.
 RawProfile parse_profile_text(std::string_view text, std::string_view source, FileFormat format,
                               const ReadOptions& options = {});
 
 /// Reads a profile file of any supported format (read_text_file, detect_format,
-/// parse_profile_text). options.body, if set, overrides the body the file gives.
+/// parse_profile_text). options.body, if set, is the body expected (parse_profile_text).
 RawProfile read_profile_file(const std::filesystem::path& path, const ReadOptions& options = {});
 
 /// Writes `points` [m] to `path` in the format its extension names (.prr/.prw SIMPACK,

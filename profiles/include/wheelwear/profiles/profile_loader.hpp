@@ -26,8 +26,8 @@ namespace wheelwear::profiles {
 /// - its flange-side end lies within kInternalFaceTolerance (5 mm) of y = 0: the origin is the
 ///   internal face (the back face's rounding and measuring noise stay well within 5 mm);
 /// - anything else is refused, naming both readings and the option that chooses one.
-/// No MiniProf header key is known for certain to state the taping-line distance, so it is an
-/// option only.
+/// The taping-line distance is LoadOptions::taping_line_distance where set, else the file
+/// header's (MiniProf `WheelDiameterTaperline`, RawProfile::taping_line_distance), else 70 mm.
 enum class WheelOrigin {
   automatic,      ///< by the rule above
   taping_line,    ///< the file's y = 0 is the taping line: kept
@@ -38,6 +38,8 @@ enum class WheelOrigin {
 inline constexpr double kTapingLineReach = 0.060;
 /// Distance of the flange-side end from y = 0 [m] within which it takes the internal face.
 inline constexpr double kInternalFaceTolerance = 0.005;
+/// Taping line from the internal face [m] (EN 13715) when neither the user nor the file says.
+inline constexpr double kDefaultTapingLineDistance = 0.070;
 
 /// "auto", "taping-line" or "internal-face" to WheelOrigin; nullopt for anything else.
 std::optional<WheelOrigin> parse_wheel_origin(std::string_view text);
@@ -60,16 +62,18 @@ struct LoadOptions {
   /// The fit. Default: smoothing length 0.3 mm, which halves wavelengths of 1.9 mm (measurement
   /// noise) and leaves the 12 mm flange tip radius within 0.1%.
   CurveOptions curve{0.3e-3, 0.25e-3};
-  std::optional<Side> side{};   ///< overrides the file; default right
-  double nominal_radius = 0.0;  ///< wheels: rolling radius at the taping line [m]
-  std::string name{};           ///< profile name; default the file name
-  /// Wheels: the file's lateral origin (WheelOrigin; rails ignore it). The default keeps the
-  /// file's origin as earlier versions did; automatic applies the rule, and a warning says when
-  /// the origin used differs from the rule's.
-  WheelOrigin origin = WheelOrigin::taping_line;
-  /// Wheels: taping line distance from the internal face [m] for WheelOrigin::internal_face
-  /// (EN 13715: 70 mm); 0.03 ... 0.11.
-  double taping_line_distance = 0.070;
+  std::optional<Side> side{};  ///< overrides the file; default right
+  /// Wheels: rolling radius at the taping line [m]; default half the wheel diameter the file's
+  /// header states, else fallback_nominal_radius.
+  std::optional<double> nominal_radius{};
+  double fallback_nominal_radius = 0.0;  ///< [m]; 0: not known
+  std::string name{};                    ///< profile name; default the file name
+  /// Wheels: the file's lateral origin (WheelOrigin; rails ignore it): by default the automatic
+  /// rule; a set origin that the rule contradicts is used with a warning.
+  WheelOrigin origin = WheelOrigin::automatic;
+  /// Wheels: taping line distance from the internal face [m] for WheelOrigin::internal_face,
+  /// 0.03 ... 0.11; default the file header's, else kDefaultTapingLineDistance.
+  std::optional<double> taping_line_distance{};
   /// Rails: depth below the top of rail [m] to which a rail is cropped (crop_rail) when it is
   /// refused whole: validate_order, clean and validate_geometry run on the whole rail first and,
   /// if one of them throws, again on the cropped rail (the report says why it was cropped). 0

@@ -5,16 +5,37 @@
 #include <string>
 
 #include "wheelwear/profiles/profile.hpp"
+#include "wheelwear/profiles/profile_loader.hpp"
 
 namespace wheelwear::profiles {
 
-/// "S1002" (generated, EN 13715 defaults, nominal radius `radius`) or a profile file.
-profiles::Profile wheel_profile(const std::string& spec, double radius);
+/// How the profile files a user names are read (the standard profiles ignore it): the choices
+/// of LoadOptions a scene or a command line can make.
+struct ProfileFileOptions {
+  WheelOrigin origin = WheelOrigin::automatic;  ///< wheels: the file's lateral origin
+  /// Wheels: taping line from the internal face [m] for an internal-face origin; default the
+  /// file's header where it states one, else 70 mm (EN 13715).
+  std::optional<double> taping_line_distance;
+  double max_drop_fraction = 0.2;  ///< share of points cleaning may discard (CleaningOptions)
+
+  /// LoadOptions for a file of `body`, with these choices.
+  LoadOptions load_options(Body body) const;
+};
+
+/// Nominal rolling radius [m] when neither the user nor the file states one.
+inline constexpr double kDefaultWheelRadius = 0.46;
+
+/// "S1002" (generated, EN 13715 defaults) or a wheel profile file. The nominal radius (the
+/// rolling radius at the taping line, Profile::info().nominal_radius) is `radius` where given,
+/// else half the diameter a file's header states, else kDefaultWheelRadius.
+profiles::Profile wheel_profile(const std::string& spec, std::optional<double> radius,
+                                const ProfileFileOptions& files = {});
 
 /// "60E1" (generated, EN 15302 arcs) or a profile file, inclined by `inclination` [rad] towards
 /// the track centre. Without an inclination the built-in rail is inclined 1:40 and a file is
 /// taken as it is (rail files usually carry their inclination).
-profiles::Profile rail_profile(const std::string& spec, std::optional<double> inclination);
+profiles::Profile rail_profile(const std::string& spec, std::optional<double> inclination,
+                               const ProfileFileOptions& files = {});
 
 /// Default inclination applied to a rail spec: atan(1/40) for the built-in 60E1, 0 for files.
 double default_inclination(const std::string& spec);

@@ -47,7 +47,9 @@ enum class ColumnOrder {
 struct ReadOptions {
   LengthUnit unit = LengthUnit::automatic;       ///< plain-text files only; others carry a unit
   ColumnOrder columns = ColumnOrder::automatic;  ///< plain-text files only
-  std::optional<Body> body{};                    ///< overrides what the file or its extension says
+  /// The body expected: given to a file that does not say; a file that says another is refused
+  /// (parse_profile_text).
+  std::optional<Body> body{};
 };
 
 /// A departure from the strict format that a reader accepted in a real file; the loader reports it
@@ -78,9 +80,20 @@ struct RawProfile {
   std::optional<Side> side;        ///< what the file says, if it says
   std::vector<std::string> notes;  ///< what the reader established (unit, columns, flags applied)
   std::vector<std::pair<std::string, std::string>> header;  ///< header keys and values as read
-  /// Line of the header entry that states the body (Simpack "type", "# body:"); 0 when the body
-  /// comes from the extension or nowhere. A stated body is never overridden silently.
+  /// Line of the header entry that states the body (Simpack "type", "# body:", MiniProf's
+  /// "#MINIWHEELPROF"); 0 when the body comes from the extension or nowhere.
   int body_line = 0;
+  /// What states the body, quoted in the refusal of another body ("type = 0", "#MINIWHEELPROF:
+  /// a MiniProf wheel export", "extension .ban: a MiniProf rail export"); empty when nothing does
+  /// or when the line alone says it (wheelwear's "# body:"). A body stated by a line or by such
+  /// evidence is never overridden: parse_profile_text refuses another body (profile_io.hpp).
+  std::string body_evidence;
+  /// Wheels: the wheel's diameter at the taping line [m], where a header states it (MiniProf
+  /// "DiameterTaperline", docs/profiles.md); the rolling radius is half of it.
+  std::optional<double> wheel_diameter;
+  /// Wheels: the taping line's distance from the internal face (flange back) [m], where a header
+  /// states it (MiniProf "WheelDiameterTaperline", where DiameterTaperline is measured).
+  std::optional<double> taping_line_distance;
   std::vector<ReadRepair> repairs;    ///< what the reader accepted beyond the strict format
   std::vector<WrittenPoint> written;  ///< every point row as written, in file order
   std::string lateral_name = "y";     ///< the file's name of the lateral coordinate

@@ -1,6 +1,12 @@
 #pragma once
 /// SIMPACK / CONTACT rail and wheel profile files (.prr, .prw).
 ///
+/// Axes (docs/profiles.md), after the file's processing keys: y lateral, + towards the field side
+/// (mirror.y brings a file there; orientation.hpp turns one that is not), z vertical, + down
+/// (CONTACT takes SIMPACK z as down without testing it); the origin is the wheel's taping line (0
+/// at its height) or the top of rail, or for files made from MiniProf wheels the internal face
+/// (the loader's origin rule). No header key states a wheel's diameter or taping line.
+///
 /// Layout: '!' starts a comment; "header.begin ... header.end" holds `type` (0 rail, 1 wheel);
 /// "spline.begin ... spline.end" holds processing keys and the "point.begin ... point.end" block
 /// of "y z [weight]" rows. The reader applies the processing keys in SIMPACK's order (the order

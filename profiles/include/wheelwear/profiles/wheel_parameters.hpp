@@ -28,7 +28,7 @@ struct WheelParameters {
                         ///< running circle [m]
   double qR = 0.0;      ///< flange face slope measure: lateral distance from the qR point to the Sd
                         ///< point [m]
-  Point internal_face;  ///< extreme -y point of the profile (the flange back) [m]
+  Point internal_face;  ///< the internal face (internal_face.hpp) at the flange tip's height [m]
   Point running_circle;  ///< profile point taping_line_offset from the internal face [m]
   Point flange_tip;      ///< lowest point of the flange (largest z) [m]
   Point sd_point;        ///< flange face point of the Sd measurement [m]
@@ -36,8 +36,9 @@ struct WheelParameters {
 };
 
 /// Sh, Sd and qR of a wheel profile (EN 15313, as the standard defines them; frame of
-/// profile.hpp). The internal face is the profile's smallest y, so the profile must include the
-/// flange back. Throws InputError for rails or profiles without a measurable flange.
+/// profile.hpp). The internal face is internal_face()'s: the steep back-face points, else the
+/// profile's origin convention. Throws InputError for rails or profiles without a measurable
+/// flange.
 WheelParameters wheel_parameters(const Profile& wheel, const WheelParameterOptions& options = {});
 
 }  // namespace wheelwear::profiles
