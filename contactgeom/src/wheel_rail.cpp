@@ -8,12 +8,13 @@
 #include "wheel_rail_solve.hpp"
 #include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/profiles/internal_face.hpp"
 
 namespace wheelwear::contactgeom {
 
 WheelRailPair::WheelRailPair(profiles::Profile wheel_profile, profiles::Profile rail_profile)
     : wheel(std::move(wheel_profile)), rail(std::move(rail_profile)) {
-  flange_back_y = wheel.y_min();
+  flange_back_y = profiles::internal_face(wheel).y;
   if (wheel.info().nominal_radius > 0.0) wheel_radius = wheel.info().nominal_radius;
 }
 
@@ -50,13 +51,14 @@ void WheelRailOptions::validate() const {
 
 namespace {
 // As the command line, the messages and docs/results.md name them.
-constexpr core::NameTable<WheelRailStatus, 6> kStatusNames = {{
+constexpr core::NameTable<WheelRailStatus, 7> kStatusNames = {{
     {WheelRailStatus::ok, "ok"},
     {WheelRailStatus::no_contact, "no contact"},
     {WheelRailStatus::flange_climb, "flange climb"},
     {WheelRailStatus::not_converged, "not converged"},
     {WheelRailStatus::load_jump, "load jump"},
     {WheelRailStatus::profile_end, "profile end"},
+    {WheelRailStatus::past_flange, "past flange"},
 }};
 }  // namespace
 

@@ -70,6 +70,87 @@ double rail_gauge_y(const WheelRailPair& pair) {
   return rail_datum(pair).gauge_y;
 }
 
+namespace {
+
+// The flank is scanned this finely [m]: a tenth of the 0.5 mm a flange face turns 0.025 rad in
+// (R20), so the steepest sample lies within 1e-4 rad of the steepest point.
+constexpr double kFlankSampling = 0.05e-3;
+
+// Slope angle atan(-dz/dy) of the wheel surface at arc length s [rad]: + where it rises
+// (z falls) towards the field side, as the active flank does; pi/2 on a vertical tangent.
+double slope_angle(const profiles::Profile& wheel, double s) {
+  const profiles::Point t = wheel.tangent(s);
+  return std::atan2(-t[1], t[0]);
+}
+
+FlangeDatum compute_flange_datum(const profiles::Profile& wheel) {
+  FlangeDatum d;
+  const auto tape = wheel.surface_at(0.0);
+  if (!tape) return d;
+  // The tip: the largest z from the flange-side end to the taping line.
+  double z_tip = -std::numeric_limits<double>::infinity();
+  for (double s = 0.0; s <= tape->s; s += kFlankSampling) {
+    const double z = wheel.position(s)[1];
+    if (z > z_tip) {
+      z_tip = z;
+      d.s_tip = s;
+    }
+  }
+  // The active flank runs from the tip to the taping line; the back face beyond the tip is not
+  // part of it.
+  const auto n = static_cast<std::size_t>(std::floor((tape->s - d.s_tip) / kFlankSampling)) + 1;
+  if (n < 3) return d;
+  thread_local std::vector<double> angle;
+  angle.resize(n);
+  std::size_t k_max = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    angle[k] = slope_angle(wheel, d.s_tip + static_cast<double>(k) * kFlankSampling);
+    if (angle[k] > angle[k_max]) k_max = k;
+  }
+  d.found = true;
+  d.s_steepest = d.s_tip + static_cast<double>(k_max) * kFlankSampling;
+  d.steepest_angle = angle[k_max];
+  // The sample nearest the tip within the tolerance, then the crossing of the tolerance's level
+  // between it and its tip-side neighbour, by bisection to 1e-9 m.
+  const double level = d.steepest_angle - kFlangeSlopeTolerance;
+  std::size_t k = 0;
+  while (angle[k] < level) ++k;
+  d.s_limit = d.s_tip + static_cast<double>(k) * kFlankSampling;
+  if (k > 0) {
+    double lo = d.s_limit - kFlankSampling, hi = d.s_limit;
+    while (hi - lo > 1e-9) {
+      const double mid = 0.5 * (lo + hi);
+      (slope_angle(wheel, mid) < level ? lo : hi) = mid;
+    }
+    d.s_limit = hi;
+  }
+  return d;
+}
+
+}  // namespace
+
+FlangeDatum flange_datum(const profiles::Profile& wheel) {
+  // A scan of the flank costs about a contact solve; the last two wheels seen on this thread (a
+  // wheelset's left and right) keep theirs, found again by comparing the curve itself.
+  struct Entry {
+    CurveCopy curve;
+    bool used = false;
+    FlangeDatum datum;
+  };
+  thread_local std::array<Entry, 2> cache;
+  thread_local std::size_t next = 0;
+  const profiles::ArcLengthCurve& curve = wheel.curve();
+  if (curve.segment_count() == 0) return compute_flange_datum(wheel);
+  for (const Entry& e : cache)
+    if (e.used && e.curve.same(curve)) return e.datum;
+  Entry& e = cache[next];
+  next = (next + 1) % cache.size();
+  e.datum = compute_flange_datum(wheel);
+  e.used = true;
+  e.curve.assign(curve);
+  return e.datum;
+}
+
 WheelRailGap::WheelRailGap(const WheelRailPair& pair, const WheelsetPose& pose,
                            const WheelRailOptions& options, double gauge_y)
     : pair_(pair), options_(options) {
@@ -77,6 +158,7 @@ WheelRailGap::WheelRailGap(const WheelRailPair& pair, const WheelsetPose& pose,
   shift_ = gauge_y - 0.5 * (pair.gauge - pair.back_to_back) - pair.flange_back_y + pose.dy;
   const auto tape = pair.wheel.surface_at(0.0);
   z_tape_ = tape ? tape->z : 0.0;
+  s_tape_ = tape ? tape->s : 0.0;
   cos_roll_ = std::cos(pose.roll);
   sin_roll_ = std::sin(pose.roll);
   rail_walk_.reset(pair.rail, 0.0, 0.0);
@@ -105,7 +187,7 @@ bool WheelRailGap::close_walks() const {
   return ok;
 }
 
-std::optional<std::pair<double, WheelPoint>> WheelRailGap::walked_gap(double y) const {
+std::optional<GapPoint> WheelRailGap::walked_gap(double y) const {
   auto r = rail_walk_.at(y);
   if (!r) {
     // The walk stopped (or never started): check what it walked, look up, start again here.
@@ -127,7 +209,7 @@ std::optional<std::pair<double, WheelPoint>> WheelRailGap::walked_gap(double y) 
     wheel_walk_.seed(y_wheel, looked_up->s);
     wp = *looked_up;
   }
-  return std::make_pair(r->z_rolled - wp.z_rolled, wp);
+  return GapPoint{r->z_rolled - wp.z_rolled, wp, r->s};
 }
 
 std::optional<WheelPoint> WheelRailGap::wheel_at(double y) const {
@@ -178,12 +260,12 @@ std::optional<double> WheelRailGap::coarse_gap(double y) const {
   return r->z - w->z_rolled;
 }
 
-std::optional<std::pair<double, WheelPoint>> WheelRailGap::gap(double y) const {
+std::optional<GapPoint> WheelRailGap::gap(double y) const {
   const auto r = pair_.rail.surface_at(y);
   if (!r) return std::nullopt;
   const auto w = wheel_at(y);
   if (!w) return std::nullopt;
-  return std::make_pair(r->z - w->z_rolled, *w);
+  return GapPoint{r->z - w->z_rolled, *w, r->s};
 }
 
 void WheelRailGap::scan(CoarseScan& coarse) const {
@@ -209,6 +291,7 @@ void WheelRailGap::sample(const CoarseScan& coarse, double margin, GapSamples& g
   g.y.clear();
   g.h.clear();
   g.z_wheel.clear();
+  g.s_rail.clear();
   g.window.clear();
   g.end_samples.clear();
   g.h_min = kInf;
@@ -243,8 +326,9 @@ void WheelRailGap::sample(const CoarseScan& coarse, double margin, GapSamples& g
         const auto v = gap_at(y);
         if (!v) continue;
         g.y.push_back(y);
-        g.h.push_back(v->first);
-        g.z_wheel.push_back(v->second.z);
+        g.h.push_back(v->h);
+        g.z_wheel.push_back(v->wheel.z);
+        g.s_rail.push_back(v->s_rail);
         g.window.push_back(window);
       }
     };
@@ -254,6 +338,7 @@ void WheelRailGap::sample(const CoarseScan& coarse, double margin, GapSamples& g
       g.y.resize(first);
       g.h.resize(first);
       g.z_wheel.resize(first);
+      g.s_rail.resize(first);
       g.window.resize(first);
       sample([&](double y) { return gap(y); });
     }
@@ -268,6 +353,23 @@ void WheelRailGap::sample(const CoarseScan& coarse, double margin, GapSamples& g
 double WheelRailGap::contact_angle(double y) const {
   const auto r = pair_.rail.surface_at(y);
   return r ? std::atan(-r->dz_dy) : 0.0;
+}
+
+ContactDirection WheelRailGap::rail_direction(double s) const {
+  // The tangent (dy, dz) towards increasing s; contact_angle = atan(-dz/dy) lies in
+  // [-pi/2, pi/2], so its cosine is |dy| / |t|.
+  const profiles::Point t = pair_.rail.curve().derivative(s);
+  const double inverse = 1.0 / std::sqrt(t[0] * t[0] + t[1] * t[1]);
+  return {std::abs(t[0]) * inverse, -std::copysign(inverse, t[0]) * t[1]};
+}
+
+ContactDirection WheelRailGap::contact_direction(double y) const {
+  const auto r = pair_.rail.surface_at(y);
+  if (!r) return {};
+  const double t = -r->dz_dy;  // tan(contact angle)
+  if (!std::isfinite(t)) return {0.0, std::copysign(1.0, t)};
+  const double c = 1.0 / std::sqrt(1.0 + t * t);
+  return {c, t * c};
 }
 
 GapMinimum refined_minimum(const GapSamples& g, std::size_t first, std::size_t last) {

@@ -18,6 +18,7 @@ struct GapSamples {
   std::vector<double> y;        // rail-frame lateral coordinate [m]
   std::vector<double> h;        // vertical gap z_rail - z_wheel [m]
   std::vector<double> z_wheel;  // unrolled height of the wheel's material point (radius) [m]
+  std::vector<double> s_rail;   // arc length of the rail's surface point [m]
   std::vector<int> window;      // index of the window a sample belongs to
   double h_min = std::numeric_limits<double>::infinity();
   std::vector<std::size_t> end_samples;  // samples that lie at the end of a profile
@@ -38,6 +39,13 @@ struct WheelPoint {
   double s = 0.0;         // its arc length on the wheel profile [m]
 };
 
+// The gap at one rail-frame lateral coordinate with the surface points there.
+struct GapPoint {
+  double h = 0.0;  // vertical gap z_rail - z_wheel [m]
+  WheelPoint wheel;
+  double s_rail = 0.0;  // arc length of the rail's surface point [m]
+};
+
 // Where a rail profile sits in the track: the costly step of placing a wheel on its rail, kept
 // for the last rails seen (compared by their curves) rather than computed for every pose.
 struct RailDatum {
@@ -47,6 +55,40 @@ struct RailDatum {
 RailDatum rail_datum(const WheelRailPair& pair);
 // rail_datum(pair).gauge_y [m].
 double rail_gauge_y(const WheelRailPair& pair);
+
+// Where a wheel's flange stops steepening: contact whose O lies beyond this towards the flange
+// tip has passed the flank's steepest point (WheelRailStatus::past_flange). Slope angles are
+// those of the unrolled profile, atan(-dz/dy) rising towards the tread; a roll adds the same
+// angle everywhere and moves no material point's arc length, so one datum serves every pose.
+struct FlangeDatum {
+  bool found = false;           // false: no flank rises from a flange tip to the taping line
+  double s_tip = 0.0;           // arc length of the flange tip, the lowest point (largest z) [m]
+  double s_steepest = 0.0;      // arc length of the flank's steepest point [m]
+  double steepest_angle = 0.0;  // its slope angle [rad]
+  // Arc length of the flank point nearest the tip whose slope angle is still within
+  // kFlangeSlopeTolerance of steepest_angle; O at a smaller arc length is past the flange [m].
+  double s_limit = 0.0;
+};
+
+// The slope a contact may lose past the flank's steepest point and still count as flank
+// contact [rad]. The steepest point of a straight flank (S1002: 1.3 mm at 1.2224 rad) is
+// wherever the fitted curve's round-off or a measured profile's noise puts it; a smoothed
+// measured flank carries slope noise of order 0.01 rad (10 um over 1 mm). 0.02 rad (1.1 deg)
+// keeps contact anywhere on the steepest stretch ok, while the wheel that has passed it
+// (0.15 to 0.6 rad lost beyond the tip, 0.5 rad on a worn flange that climbs) is caught; on
+// S1002's R20 flange face it is 0.4 mm of arc.
+constexpr double kFlangeSlopeTolerance = 0.02;
+
+// The flange datum of a wheel profile, kept for the last wheels seen on this thread (compared
+// by their curves, as rail_datum does): a scan of the flank every 0.05 mm on the first call.
+FlangeDatum flange_datum(const profiles::Profile& wheel);
+
+// The direction of a contact normal in the track's lateral-vertical plane: cos and sin of the
+// contact angle.
+struct ContactDirection {
+  double cos = 1.0;
+  double sin = 0.0;
+};
 
 // The wheel placed on its rail at one pose. The wheel profile is not rebuilt for a roll: the
 // surface point seen at a rail-frame y is found on the unrolled profile by Newton's method on
@@ -64,7 +106,7 @@ class WheelRailGap {
   // The wheel's material point whose rolled surface lies at rail-frame y; nullopt off the profile.
   std::optional<WheelPoint> wheel_at(double y) const;
   // Vertical gap at rail-frame y and the wheel point there; nullopt outside either profile.
-  std::optional<std::pair<double, WheelPoint>> gap(double y) const;
+  std::optional<GapPoint> gap(double y) const;
   // The coarse scan: the gap every options.scan_spacing over the lateral overlap (coarse_gap).
   void scan(CoarseScan& coarse) const;
   // Samples the gap every strip_width in the windows where the coarse scan lies within `margin`
@@ -76,13 +118,21 @@ class WheelRailGap {
   // The gap at increasing rail-frame y, walked along both curves (surface_walk.hpp), with the
   // lookups of gap() where a walk cannot go on. Same values as gap() to 1e-15 m once
   // close_walks() has checked the walked stretches.
-  std::optional<std::pair<double, WheelPoint>> walked_gap(double y) const;
+  std::optional<GapPoint> walked_gap(double y) const;
   // Checks the open walked stretches by a lookup at their ends; false when one does not stand
   // (then the values walked since the last check are recomputed with gap()).
   bool close_walks() const;
   // Contact angle at rail-frame y: the rail surface's slope, + where it falls towards -y
   // (the gauge side), as on the gauge corner and flange contact [rad].
   double contact_angle(double y) const;
+  // cos and sin of contact_angle(y), from the slope without the arctangent (one lookup).
+  ContactDirection contact_direction(double y) const;
+  // The same at the rail's surface point of arc length s [m] (GapSamples::s_rail): from the
+  // curve's tangent there, without a lookup.
+  ContactDirection rail_direction(double s) const;
+  // Arc length of the wheel profile's taping line (y = 0) [m]: contact on the tread side of it
+  // cannot have passed the flange.
+  double s_tape() const { return s_tape_; }
   // Rolling radius of the wheel's material point with unrolled height z [m]: its distance from
   // the axle, which a roll about the taping point does not change.
   double rolling_radius(double z) const { return pair_.wheel_radius + z - z_tape_; }
@@ -92,6 +142,7 @@ class WheelRailGap {
   const WheelRailOptions& options_;
   double shift_ = 0.0;
   double z_tape_ = 0.0;
+  double s_tape_ = 0.0;
   double cos_roll_ = 1.0;
   double sin_roll_ = 0.0;
   // The gap for the coarse scan, which only chooses the sampled windows: with a roll, to

@@ -24,6 +24,85 @@ namespace {
 constexpr double kApproachResolution = 1e-13;
 constexpr int kMaxLoadEvaluations = 100;
 
+// Evaluations of the approach the fast path spends on correcting it to the strip-wise vertical
+// force before it leaves the contact to the bracketed solve (which takes ten or more): two or
+// three on the tread, up to five where the flank's angle spread makes N cos(angle) miss by 30 %.
+constexpr int kMaxFastCorrections = 6;
+// The fast path's first Kik-Piotrowski load solve stops at this relative tolerance on N (or the
+// looser load_tolerance): its N cos(angle) misses the strip-wise vertical force by the spread of
+// the angle over the patch anyway (3e-5 to 8e-4 on S1002's tread), which the corrections remove;
+// solving N closer only adds evaluations (one or two per solve).
+constexpr double kFirstGuessTolerance = 1e-4;
+
+// One contact region of the sampled gap as the Kik-Piotrowski solver sees it.
+struct Region {
+  const GapStrips& strips;  // strips_of() of samples [first, last]
+  std::size_t last;
+  double c;  // cosine of the contact angle at the region's gap minimum
+};
+
+// The fast path's single patch of `region` under the vertical force Fz, into kp and forces;
+// false unless the solve ends with one converged patch whose strip-wise vertical force meets
+// options.load_tolerance. The Kik-Piotrowski load solve at N = Fz/c misses Fz by the spread
+// of the contact angle over the patch; the approach is then corrected on the load residual of
+// load_residual.hpp, nearly linear in the approach: first a step that takes it as linear in
+// the local approach (Hertz, Fz ~ delta^(3/2)), then secant steps. The effective cosine Fz/N
+// hardly depends on the load, so two or three evaluations of the approach meet 1e-9.
+bool fast_path_approach(const WheelRailGap& geometry, const GapSamples& g,
+                        SampleDirections& directions, const Region& region, double E_star,
+                        double Fz, const WheelRailOptions& options, KpResult& kp,
+                        PatchForces& forces) {
+  const LoadTolerance load_met{options.load_tolerance};
+  KpOptions kp_options = options.kp;
+  kp_options.load_tolerance = std::max(options.load_tolerance, kFirstGuessTolerance);
+  solve_kp_load(region.strips, E_star, Fz / region.c, kp_options, kp);
+  const auto single = [&] { return kp.status == KpStatus::converged && kp.patches.size() == 1; };
+  if (!single()) return false;
+  forces = strip_forces(geometry, g, directions, region.strips, region.last, kp.patches[0]);
+  double f = load_residual(forces.vertical, Fz);
+  if (load_met(f)) return true;
+  double delta = kp.approach;
+  double next = kp.patches[0].h_O + (delta - kp.patches[0].h_O) / (1.0 + f);
+  for (int i = 0; i < kMaxFastCorrections; ++i) {
+    const double previous = delta, f_previous = f;
+    delta = next;
+    solve_kp_approach(region.strips, E_star, delta, options.kp, kp);
+    if (!single()) return false;
+    forces = strip_forces(geometry, g, directions, region.strips, region.last, kp.patches[0]);
+    f = load_residual(forces.vertical, Fz);
+    if (load_met(f)) return true;
+    if (f == f_previous) return false;
+    next = delta - f * (delta - previous) / (f - f_previous);
+  }
+  return false;
+}
+
+// Why the contact has passed the flange (WheelRailStatus::past_flange), or "" when no loaded
+// patch has its O beyond the flank's steepest point towards the tip.
+std::string past_flange_reason(const WheelRailGap& geometry,
+                               const std::vector<WheelRailPatch>& patches) {
+  // O on the tread side of the taping line has not reached the flange: no datum needed.
+  const bool on_flange_side =
+      std::any_of(patches.begin(), patches.end(), [&](const WheelRailPatch& p) {
+        return p.normal_force > 0.0 && p.s_wheel < geometry.s_tape();
+      });
+  if (!on_flange_side) return "";
+  const FlangeDatum flange = flange_datum(geometry.pair().wheel);
+  if (!flange.found) return "";
+  for (const WheelRailPatch& p : patches) {
+    if (!(p.normal_force > 0.0 && p.s_wheel < flange.s_limit)) continue;
+    const double y_steepest = geometry.pair().wheel.position(flange.s_steepest)[0];
+    return "O lies on the flange " + std::to_string((flange.s_limit - p.s_wheel) * 1e3) +
+           " mm (along the profile) towards its tip from the end of its steepest stretch (slope " +
+           std::to_string(flange.steepest_angle) +
+           " rad at y = " + std::to_string(y_steepest * 1e3) + " mm of the wheel profile, less " +
+           std::to_string(kFlangeSlopeTolerance) + " rad), at a contact angle of " +
+           std::to_string(p.contact_angle) + " rad carrying " + std::to_string(p.normal_force) +
+           " N: the flange climbs its rail or has passed it";
+  }
+  return "";
+}
+
 // The contact solved on one sampling of the gap.
 WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples& g,
                                   const WheelsetPose& pose, double vertical_force,
@@ -38,12 +117,15 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
   }
   const double E_star = combined_modulus(pair.youngs_modulus, pair.poisson);
   const LoadTolerance load_met{options.load_tolerance};
+  thread_local SampleDirections directions;
+  directions.reset(g.h.size());
 
   // Fast path, the usual case: one contact region. The window around the gap's minimum goes
-  // to the Kik-Piotrowski load solve at the normal load Fz/cos(angle), to the same relative
-  // tolerance as N cos(angle)/Fz = N/(Fz/cos(angle)); the answer stands if, at its approach,
-  // the gap shows that one region only. Its patch is then the one patches_at() would find at
-  // that approach (same strips, s from the same O), so it is described directly.
+  // to the Kik-Piotrowski load solve at the normal load Fz/cos(angle); the strip-wise vertical
+  // force of that patch differs from Fz by the spread of the angle over the patch, so the
+  // approach is then corrected (fast_path_approach). The answer stands if, at its
+  // approach, the gap shows that one region only. Its patch is then the one patches_at() would
+  // find at that approach (same strips, s from the same O), so it is described directly.
   double d = -1.0;
   bool at_jump = false;
   std::optional<PatchSet> fast;
@@ -60,21 +142,20 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
     const double c = std::cos(angle);
     thread_local std::vector<double> h, ax;
     const GapStrips strips = strips_of(geometry, g, first, last, y_O, c, h, ax);
-    KpOptions kp_options = options.kp;
-    kp_options.load_tolerance = options.load_tolerance;
     thread_local KpResult kp;
-    solve_kp_load(strips, E_star, vertical_force / c, kp_options, kp);
-    if (kp.status == KpStatus::converged && kp.patches.size() == 1) {
+    PatchForces forces;
+    if (fast_path_approach(geometry, g, directions, Region{strips, last, c}, E_star, vertical_force,
+                           options, kp, forces)) {
       const double candidate = kp.approach / c - g.h_min;
       const auto runs = interpenetration_runs(g, g.h_min + candidate, options.kp.epsilon);
       if (runs.size() == 1 &&
           std::abs(geometry.contact_angle(runs[0].y_O) - angle) < 1e-3 * std::max(1.0, angle)) {
         d = candidate;
         PatchSet e;
-        e.vertical = kp.patches[0].normal_force * c;
-        e.lateral = kp.patches[0].normal_force * std::sin(angle);
+        e.vertical = forces.vertical;
+        e.lateral = forces.lateral;
         e.steepest = std::abs(angle);
-        e.patches.push_back(describe_patch(geometry, kp.patches[0], y_O, angle, E_star));
+        e.patches.push_back(describe_patch(geometry, kp.patches[0], y_O, angle, forces, E_star));
         fast = std::move(e);
       }
     }
@@ -83,7 +164,8 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
     // Vertical force against approach beyond first touch: bracket, then the regula falsi of
     // bracketed_root.hpp on the load residual, nearly linear in the approach.
     auto residual = [&](double beyond_touch) {
-      const PatchSet e = patches_at(geometry, g, g.h_min + beyond_touch, E_star, options, false);
+      const PatchSet e =
+          patches_at(geometry, g, directions, g.h_min + beyond_touch, E_star, options, false);
       return load_residual(e.vertical, vertical_force);
     };
     double lo = 0.0, f_lo = -1.0;
@@ -108,8 +190,8 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
     at_jump = !root.converged && std::abs(root.hi - root.lo) <= kApproachResolution;
   }
 
-  PatchSet e =
-      fast ? std::move(*fast) : patches_at(geometry, g, g.h_min + d, E_star, options, true);
+  PatchSet e = fast ? std::move(*fast)
+                    : patches_at(geometry, g, directions, g.h_min + d, E_star, options, true);
   std::sort(e.patches.begin(), e.patches.end(),
             [](const WheelRailPatch& a, const WheelRailPatch& b) { return a.y_rail < b.y_rail; });
   result.patches = std::move(e.patches);
@@ -120,10 +202,13 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
   bool at_profile_end = false;
   for (const Run& run : interpenetration_runs(g, g.h_min + d, options.kp.epsilon))
     for (std::size_t k : g.end_samples) at_profile_end |= (k == run.first || k == run.last);
+  const std::string past = past_flange_reason(geometry, result.patches);
   if (at_jump) {
+    // The jump is reported first, with the flange's state when that is past.
     result.status = WheelRailStatus::load_jump;
     result.message = "the vertical force jumps at this approach (contact regions merge); it is " +
                      std::to_string(e.vertical) + " N";
+    if (!past.empty()) result.message += "; " + past;
   } else if (!load_met.met(e.vertical, vertical_force)) {
     result.status = WheelRailStatus::not_converged;
     result.message = "the vertical force iteration stopped at " + std::to_string(e.vertical) + " N";
@@ -135,6 +220,9 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
     result.status = WheelRailStatus::flange_climb;
     result.message = "contact angle " + std::to_string(e.steepest) +
                      " rad: the flange climbs the rail, no stable contact";
+  } else if (!past.empty()) {
+    result.status = WheelRailStatus::past_flange;
+    result.message = past;
   }
   return result;
 }
@@ -158,6 +246,7 @@ WheelRailContact solve_wheel_rail_at(const WheelRailPair& pair, const WheelsetPo
   const bool settled = result.status == WheelRailStatus::ok ||
                        result.status == WheelRailStatus::load_jump ||
                        result.status == WheelRailStatus::flange_climb ||
+                       result.status == WheelRailStatus::past_flange ||
                        result.status == WheelRailStatus::profile_end;
   if (first_margin < options.scan_margin &&
       (!settled || result.approach + kMarginReserve > first_margin)) {

@@ -43,13 +43,29 @@ std::vector<Run> interpenetration_runs(const GapSamples& g, double approach, dou
   return runs;
 }
 
+PatchForces strip_forces(const WheelRailGap& geometry, const GapSamples& g,
+                         SampleDirections& directions, const GapStrips& strips, std::size_t last,
+                         const KpPatch& patch) {
+  PatchForces f;
+  for (const KpStrip& strip : patch.strips) {
+    const double load = strip.line_load() * patch.ds;
+    const auto k = static_cast<std::size_t>(std::llround((strip.s - strips.s_first) / strips.ds));
+    const ContactDirection n = directions.at(geometry, g, last - k);
+    f.vertical += load * n.cos;
+    f.lateral += load * n.sin;
+  }
+  return f;
+}
+
 WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch, double y_O_run,
-                              double angle, double E_star) {
+                              double angle, PatchForces forces, double E_star) {
   const double c = std::cos(angle);
   WheelRailPatch p;
   p.kp = patch;
   p.contact_angle = angle;
   p.normal_force = patch.normal_force;
+  p.vertical_force = forces.vertical;
+  p.lateral_force = forces.lateral;
   p.pmax = patch.pmax;
   // O of the KP patch lies at s_O from the run's minimum, along the contact plane.
   const double y_O = y_O_run - patch.s_O * c;
@@ -91,8 +107,9 @@ GapStrips strips_of(const WheelRailGap& geometry, const GapSamples& g, std::size
   return strips;
 }
 
-PatchSet patches_at(const WheelRailGap& geometry, const GapSamples& g, double approach,
-                    double E_star, const WheelRailOptions& options, bool describe) {
+PatchSet patches_at(const WheelRailGap& geometry, const GapSamples& g, SampleDirections& directions,
+                    double approach, double E_star, const WheelRailOptions& options,
+                    bool describe) {
   PatchSet out;
   thread_local std::vector<double> h, ax;
   thread_local KpResult kp;
@@ -103,10 +120,12 @@ PatchSet patches_at(const WheelRailGap& geometry, const GapSamples& g, double ap
     solve_kp_approach(strips, E_star, approach * c, options.kp, kp);
     if (kp.status != KpStatus::converged) continue;
     for (const KpPatch& patch : kp.patches) {
-      out.vertical += patch.normal_force * c;
-      out.lateral += patch.normal_force * std::sin(angle);
+      const PatchForces f = strip_forces(geometry, g, directions, strips, run.last, patch);
+      out.vertical += f.vertical;
+      out.lateral += f.lateral;
       out.steepest = std::max(out.steepest, std::abs(angle));
-      if (describe) out.patches.push_back(describe_patch(geometry, patch, run.y_O, angle, E_star));
+      if (describe)
+        out.patches.push_back(describe_patch(geometry, patch, run.y_O, angle, f, E_star));
     }
   }
   return out;

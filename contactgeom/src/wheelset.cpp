@@ -30,9 +30,10 @@ constexpr double kMaxRoll = 0.09;
 // The alternation of roll and lateral positions stops when the roll changes less than this [rad].
 constexpr double kRollChange = 1e-9;
 
+// The flange statuses carry the load too: the lateral search may pass through them.
 bool carries_load(const WheelRailContact& c) {
   return c.status == WheelRailStatus::ok || c.status == WheelRailStatus::load_jump ||
-         c.status == WheelRailStatus::flange_climb;
+         c.status == WheelRailStatus::flange_climb || c.status == WheelRailStatus::past_flange;
 }
 
 bool flange_loaded(const WheelRailContact& c, double flange_angle) {

@@ -47,7 +47,7 @@ TEST(WheelRailGap, WalkedGapIsTheLookedUpGap) {
       const auto looked_up = gap.gap(y);
       ASSERT_EQ(walked.has_value(), looked_up.has_value()) << y;
       if (walked) {
-        EXPECT_NEAR(walked->first, looked_up->first, 2e-13) << y;
+        EXPECT_NEAR(walked->h, looked_up->h, 2e-13) << y;
       }
     }
     EXPECT_TRUE(gap.close_walks());

@@ -26,17 +26,23 @@ struct Bounds {
   double area_rel, angle, position_mm, psi;
 };
 
-// What the Kik-Piotrowski chain reaches against Kalker's exact theory, row by row. Tread
-// contact (y_ws >= -4 mm): area within 8 %, contact angle within 0.015 rad, O within 0.6 mm and
-// psi within 0.1. Near y_ws = 0 the gap is flat over ~20 mm, so O (a minimum of an almost
-// constant gap) moves by 1 mm for a 1 um change of the gap: 1.2 mm there. In the flange root
-// (y_ws = -6) the contact angle changes by 0.03 rad per 0.4 mm of O, and the flange contact
-// (y_ws = -8, only 9 element rows across in the reference) is resolved coarsely by both.
+// What the Kik-Piotrowski chain reaches against Kalker's exact theory, row by row, with the wheel
+// placed as CONTACT places it (flange back at FBPOS = -70 mm; the file starts on the back
+// rounding at -69.61 mm, profiles::internal_face). O lies within 0.1 mm of CONTACT's initial
+// contact point in every row (a strip width: the gap minimum is refined between strips; 0.06 mm
+// is the largest seen) and the contact angle within 0.015 rad. The area is the method's: tread
+// contact within 8 %; at y_ws = 0 the gap is flat over ~20 mm and the virtual penetration widens
+// the conformal patch (+16 %), as in the flange root (y_ws = -6, +17 %); the flange contact
+// (y_ws = -8, only 9 element rows across in the reference) is resolved coarsely by both. psi
+// measures the patch's lateral asymmetry from its edges: 0.1, except at y_ws = -2, where the
+// reference patch is the most lopsided (W_neg/W_pos = 2.4) and KP's edges lie a few strips
+// inside CONTACT's (-0.20 against -0.40).
 Bounds bounds_for(double y_ws) {
-  if (y_ws == -8.0) return {0.45, 0.02, 0.1, 0.15};
-  if (y_ws == -6.0) return {0.12, 0.05, 0.5, 0.25};
-  if (y_ws == 0.0) return {0.08, 0.015, 1.2, 0.1};
-  return {0.08, 0.015, 0.6, 0.1};
+  if (y_ws == -8.0) return {0.45, 0.015, 0.1, 0.15};
+  if (y_ws == -6.0) return {0.2, 0.015, 0.1, 0.1};
+  if (y_ws == -2.0) return {0.08, 0.015, 0.1, 0.25};
+  if (y_ws == 0.0) return {0.18, 0.015, 0.1, 0.1};
+  return {0.08, 0.015, 0.1, 0.1};
 }
 
 TEST(WheelRailVersusContact, PatchesMatchExactTheoryWithinTheMethodsAccuracy) {
@@ -104,7 +110,10 @@ TEST(WheelRailSweep, IsContinuousAndFindsTwoPointContact) {
     // of the single contact over a concave stretch of the rail, which we allow.
     if (c.message.empty() && c.patches.size() == previous_count &&
         std::abs(largest_o - previous_o) < 2e-3) {
-      EXPECT_LT(std::abs(largest_n / previous_n - 1.0), 0.2) << "dy " << pose.dy;
+      // 0.25: as the patch climbs from the flange root onto the flank (6.65 to 7 mm) its
+      // effective cosine Fz/N falls from 0.6 to 0.35, smoothly (strip-wise projection), so N
+      // rises by up to 23 % per 0.1 mm step there.
+      EXPECT_LT(std::abs(largest_n / previous_n - 1.0), 0.25) << "dy " << pose.dy;
     }
     // A position whose load fell inside a jump does not anchor the next comparison.
     previous_count = c.message.empty() ? c.patches.size() : 0;

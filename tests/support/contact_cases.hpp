@@ -168,9 +168,12 @@ struct WheelRailCase {
   tangential::Material material;  ///< G = 80 GPa, nu = 0.25
   double mu = kFriction;
   double FN = 0.0, FX = 0.0, FS = 0.0;  ///< [N]
-  double MN = 0.0;                      ///< spin moment [N m]
-  double frictional_power = 0.0;        ///< [W]; negative: dissipated
-  double p_max = 0.0;                   ///< [Pa]
+  /// The wheel's total forces in the track frame (FY_tr_total, FZ_tr_total) [N]: FZ = the
+  /// prescribed 55 kN; FY < 0 for the left wheel's flange contact.
+  double FY_track = 0.0, FZ_track = 0.0;
+  double MN = 0.0;                ///< spin moment [N m]
+  double frictional_power = 0.0;  ///< [W]; negative: dissipated
+  double p_max = 0.0;             ///< [Pa]
   int contact_elements = 0, adhesion_elements = 0, slip_elements = 0;
   double dx = 0.0, ds = 0.0;                ///< element size [m]
   double area = 0.0;                        ///< contact elements x dx ds [m^2]
@@ -366,6 +369,8 @@ inline std::vector<WheelRailCase> wheel_rail_cases(
     c.FN = in.number(k, "FN_N");
     c.FX = in.number(k, "FX_N");
     c.FS = in.number(k, "FS_N");
+    c.FY_track = in.number(k, "FY_tr_total_N");
+    c.FZ_track = in.number(k, "FZ_tr_total_N");
     c.MN = detail::n_mm(in.number(k, "MN_Nmm"));
     c.frictional_power = in.number(k, "fric_power_W");
     c.p_max = detail::mpa(in.number(k, "pmax_MPa"));

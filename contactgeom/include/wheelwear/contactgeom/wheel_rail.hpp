@@ -3,8 +3,8 @@
 /// their SDEC regions and Hertz comparators (the chain of CONTACT's wheel/rail module, with
 /// the Kik-Piotrowski normal problem).
 
-#include <string>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "wheelwear/contactgeom/hertz.hpp"
@@ -29,7 +29,8 @@ struct WheelRailPair {
   double youngs_modulus = 200e9;  ///< E of wheel and rail [Pa]
   double poisson = 0.25;          ///< nu of wheel and rail [-]
 
-  /// A pair with the flange back at the wheel profile's smallest y (its -y end).
+  /// A pair with the flange back at the wheel profile's internal face (profiles::internal_face:
+  /// its steep back-face points, else its origin convention).
   WheelRailPair(profiles::Profile wheel_profile, profiles::Profile rail_profile);
   void validate() const;  ///< throws InputError naming a bad field
 };
@@ -54,9 +55,10 @@ struct WheelRailOptions {
   /// comes within 0.1 mm of that.
   double scan_margin = 2e-3;
   /// Prescribed vertical force: the iteration stops when |Fz/Fz_target - 1| <= load_tolerance,
-  /// in (0, 0.01], and the status is not_converged when the final Fz misses this. The single-
-  /// region fast path hands it to solve_kp_load as its load_tolerance (there N/N_target =
-  /// Fz/Fz_target); kp.load_tolerance is not used by the wheel/rail solves.
+  /// in (0, 0.01], with Fz the strip-wise WheelRailContact::vertical_force, and the status is
+  /// not_converged when the final Fz misses this. The single-region fast path solves the
+  /// Kik-Piotrowski load problem for a first guess (to 1e-4 on N, or this if looser) and then
+  /// corrects the approach to this; kp.load_tolerance is not used by the wheel/rail solves.
   double load_tolerance = 1e-9;
   double max_contact_angle = 1.35;  ///< steeper contact is reported as flange climb [rad]
   /// Prescribed lateral force (solve_wheel_rail_lateral): stop when |Fy/Fz - target/Fz| is
@@ -71,32 +73,48 @@ struct WheelRailOptions {
 
 /// One contact patch: its strips, measures, SDEC and the quantities at O.
 struct WheelRailPatch {
-  KpPatch kp;                ///< the Kik-Piotrowski strips (s: lateral, + towards the gauge side)
-  PatchMeasures measures;    ///< area, length, width, W1, W2 in the contact plane
-  Sdec sdec;                 ///< Eq. 13-14 regularisation
+  KpPatch kp;              ///< the Kik-Piotrowski strips (s: lateral, + towards the gauge side)
+  PatchMeasures measures;  ///< area, length, width, W1, W2 in the contact plane
+  Sdec sdec;               ///< Eq. 13-14 regularisation
   /// Hertz ellipse from the curvatures at O at the same normal force; none where the lateral
   /// relative curvature is not positive.
   std::optional<HertzSolution> hertz;
-  double y_wheel = 0.0;      ///< O on the (unrolled) wheel profile, from its origin, + towards the
-                             ///< flange [m]
+  double y_wheel = 0.0;  ///< O on the (unrolled) wheel profile, from its origin, + towards the
+                         ///< flange [m]
   double y_rail = 0.0;   ///< O on the rail profile, from its origin, + towards the gauge side [m]
   double s_wheel = 0.0;  ///< arc length of O on the wheel profile [m]
   double contact_angle = 0.0;   ///< angle of the contact plane to the track plane [rad]
   double rolling_radius = 0.0;  ///< wheel radius at O: its material point's distance from the
                                 ///< axle [m], which a roll does not change
   double normal_force = 0.0;    ///< [N]
-  double pmax = 0.0;            ///< [Pa]
+  /// The patch's share of WheelRailContact::vertical_force: its strips' line loads projected
+  /// with the contact angle gamma(s) at each strip, sum q(s) ds cos(gamma(s)) [N]. Equal to
+  /// normal_force cos(contact_angle) only where the rail's slope is the same across the patch.
+  double vertical_force = 0.0;
+  /// The patch's share of WheelRailContact::lateral_force, sum q(s) ds sin(gamma(s)) [N], + towards
+  /// the gauge side.
+  double lateral_force = 0.0;
+  double pmax = 0.0;  ///< [Pa]
 };
 
-/// Outcome of a wheel/rail contact evaluation.
+/// Outcome of a wheel/rail contact evaluation. Where several apply, the first of load_jump,
+/// not_converged, profile_end, flange_climb, past_flange is reported (a load_jump's message
+/// also says when its contact is past the flange).
 enum class WheelRailStatus {
   ok,
   no_contact,
-  flange_climb,
+  flange_climb,  ///< a contact angle exceeds WheelRailOptions::max_contact_angle
   not_converged,
-  load_jump,    ///< the load falls inside a jump of N(approach) where regions merge; the
-                ///< nearest side is reported and the vertical force misses the load
+  load_jump,    ///< the load falls inside a jump of the vertical force against the approach
+                ///< (regions merge); the nearer side is reported and the vertical force misses
+                ///< the load
   profile_end,  ///< the contact reaches the end of a profile: the profiles are too short
+  /// A loaded patch's O lies on the wheel's flange beyond the flank's steepest point, towards the
+  /// flange tip: tip-wards of every point of the active flank (taping line to flange tip) whose
+  /// slope is within 0.02 rad of the flank's largest (kFlangeSlopeTolerance,
+  /// contactgeom/src/wheel_rail_gap.hpp). The contact angle falls as the wheel moves on: the
+  /// flange climbs its rail or has passed it.
+  past_flange,
 };
 
 /// All patches of one wheel on its rail.
@@ -104,10 +122,13 @@ struct WheelRailContact {
   WheelRailStatus status = WheelRailStatus::no_contact;
   std::string message;                  ///< why, when status != ok
   std::vector<WheelRailPatch> patches;  ///< ordered from the field side to the gauge side
-  double vertical_force = 0.0;          ///< sum of N cos(angle) [N]
-  double lateral_force = 0.0;           ///< sum of N sin(angle) [N], + pushes the wheel towards the
-                                        ///< gauge side (track centre), as flange contact does
-  double approach = 0.0;                ///< vertical approach beyond first touch [m]
+  /// Sum of the patches' vertical_force: every strip's line load projected with the contact
+  /// angle at that strip, sum q(s) ds cos(gamma(s)) [N]; the prescribed load meets this.
+  double vertical_force = 0.0;
+  /// Sum of the patches' lateral_force, sum q(s) ds sin(gamma(s)) [N], + pushes the wheel towards
+  /// the gauge side (track centre), as flange contact does.
+  double lateral_force = 0.0;
+  double approach = 0.0;  ///< vertical approach beyond first touch [m]
 };
 
 /// Solves the normal contact of the wheel under a prescribed vertical force Fz [N] > 0.
