@@ -19,7 +19,8 @@ void BM_StateKernel(benchmark::State& state) {
                                 "\naxle_load_N = 110e3\nspeed_m_s = 30\nyaw_rad = 1e-3\n",
                             {});
   const pipeline::StateKernel kernel(scene);
-  const profiles::Profile wheel = profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius);
+  const profiles::Profile wheel =
+      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
   const contactgeom::WheelsetOnTrack track{kernel.pair(wheel), kernel.pair(wheel)};
   std::size_t patches = 0;
   for (auto _ : state) {

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "contact_inputs.hpp"
 #include "json_writer.hpp"
+#include "wheelwear/contactgeom/nadal.hpp"
 #include "wheelwear/contactgeom/wheel_rail.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/tangential/exact/wheel_rail_exact.hpp"
@@ -39,8 +40,8 @@ tangential::WheelRailExactSolution exact_patch(const contactgeom::WheelRailPair&
   tangential::WheelRailExactOptions options;
   options.nx = options.ny = args.exact_grid;
   options.margin = args.exact_margin;
-  return tangential::wheel_rail_exact(pair, args.in.pose, p, args.in.creepages_at(p), args.in.mu,
-                                      options);
+  return tangential::wheel_rail_exact(pair, args.in.pose, p, args.in.creepages_at(pair, p),
+                                      args.in.mu, options);
 }
 
 void check_exact_options(const ContactArgs& args) {
@@ -77,9 +78,9 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
   }
   if (args.creep) {
     const tangential::TangentialSolution s =
-        tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, args.in.creepages_at(p),
+        tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, args.in.creepages_at(pair, p),
                             {p.normal_force, args.in.mu}, args.in.material());
-    const tangential::Creepages c = args.in.creepages_at(p);
+    const tangential::Creepages c = args.in.creepages_at(pair, p);
     o.add("vx", c.vx).add("vy", c.vy).add("phi", c.phi);
     o.add("Fx", s.forces.Fx).add("Fy", s.forces.Fy).add("Mz", s.forces.Mz.value_or(0.0));
     if (args.tangential == "exact") {
@@ -102,6 +103,21 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
   return o.str();
 }
 
+// Nadal's criterion for the contact, with each patch's FASTSIM-SDEC lateral creep force where
+// --creep gives creepages (the forces patch_json reports), else with the normal forces only.
+contactgeom::NadalCheck nadal_of(const SolvedContact& solved, const ContactArgs& args) {
+  contactgeom::PatchLateralCreep creep_Fy;
+  if (args.creep) {
+    creep_Fy.emplace();
+    for (const auto& p : solved.contact.patches)
+      creep_Fy->push_back(tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec,
+                                              args.in.creepages_at(solved.pair, p),
+                                              {p.normal_force, args.in.mu}, args.in.material())
+                              .forces.Fy);
+  }
+  return contactgeom::nadal_check(solved.contact, args.in.mu, creep_Fy);
+}
+
 void run_contact(const ContactArgs& args) {
   if (args.tangential == "exact") {
     check_exact_options(args);
@@ -112,7 +128,9 @@ void run_contact(const ContactArgs& args) {
   }
   const SolvedContact solved = solve_contact(args.in);
   const contactgeom::WheelRailContact& contact = solved.contact;
+  for (const std::string& w : solved.warnings) std::cerr << "wheelwear: warning: " << w << '\n';
 
+  const contactgeom::NadalCheck nadal = nadal_of(solved, args);
   if (args.json) {
     std::vector<std::string> patches;
     for (const auto& p : contact.patches) patches.push_back(patch_json(solved.pair, p, args));
@@ -122,6 +140,12 @@ void run_contact(const ContactArgs& args) {
         .add("vertical_force", contact.vertical_force)
         .add("lateral_force", contact.lateral_force)
         .add("approach", contact.approach)
+        .add("nadal_exceeded", nadal.exceeded)
+        .add("Y_over_Q", nadal.Y_over_Q)
+        .add("nadal_limit", nadal.limit)
+        .add("nadal_delta", nadal.delta)
+        .add("nadal_applies", nadal.applies)
+        .add_raw("warnings", json_strings(solved.warnings))
         .add_raw("patches", json_array(patches));
     std::cout << out.str() << '\n';
   } else {
@@ -129,6 +153,15 @@ void run_contact(const ContactArgs& args) {
                 contact.message.empty() ? "" : ": ", contact.message.c_str());
     std::printf("vertical force %.6g N, lateral force %.6g N, approach %.4g mm\n",
                 contact.vertical_force, contact.lateral_force, contact.approach * 1e3);
+    if (!contact.patches.empty())
+      std::printf(
+          "Nadal      Y/Q %.4g%s against (tan d - mu)/(1 + mu tan d) = %.4g at d = %.4f rad: "
+          "%s\n",
+          nadal.Y_over_Q, args.creep ? " (creep forces included)" : " (normal forces only)",
+          nadal.limit, nadal.delta,
+          !nadal.applies   ? "not flank contact, the criterion does not apply"
+          : nadal.exceeded ? "EXCEEDED: the flange may climb"
+                           : "within the limit");
     int k = 0;
     for (const auto& p : contact.patches) {
       std::printf(
@@ -140,7 +173,7 @@ void run_contact(const ContactArgs& args) {
           p.measures.W1 * 1e3, p.measures.W2 * 1e3, p.pmax * 1e-6, p.sdec.a * 1e3, p.sdec.b * 1e3,
           p.sdec.psi);
       if (args.creep) {
-        const tangential::Creepages c = args.in.creepages_at(p);
+        const tangential::Creepages c = args.in.creepages_at(solved.pair, p);
         const tangential::CreepForces f =
             tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, c,
                                 {p.normal_force, args.in.mu}, args.in.material())

@@ -2,7 +2,9 @@
 
 #include <CLI/CLI.hpp>
 #include <stdexcept>
+#include <utility>
 
+#include "wheelwear/core/plausibility.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
 
 namespace wheelwear::cli {
@@ -22,8 +24,10 @@ void add_contact_options(CLI::App* cmd, ContactInputs& in) {
   cmd->add_option("--gauge", in.gauge, "track gauge [m]")->capture_default_str();
   cmd->add_option("--back-to-back", in.back_to_back, "back-to-back distance [m]")
       ->capture_default_str();
-  cmd->add_option("--wheel-radius", in.wheel_radius, "nominal rolling radius [m]")
-      ->capture_default_str();
+  cmd->add_option("--wheel-radius", in.wheel_radius,
+                  "nominal rolling radius at the taping line [m]; default half the diameter a\n"
+                  "wheel file's header states, else 0.46");
+  add_profile_file_options(cmd, in.files);
   cmd->add_option("--E", in.E, "Young's modulus of wheel and rail [Pa]")->capture_default_str();
   cmd->add_option("--nu", in.nu, "Poisson's ratio [-]")->capture_default_str();
   cmd->add_option("--strip-width", in.strip_width, "lateral sampling of the gap [m]")
@@ -52,24 +56,49 @@ void add_contact_options(CLI::App* cmd, ContactInputs& in) {
       ->capture_default_str();
 }
 
-tangential::Creepages ContactInputs::creepages_at(const contactgeom::WheelRailPatch& patch) const {
+tangential::Creepages ContactInputs::creepages_at(const contactgeom::WheelRailPair& pair,
+                                                  const contactgeom::WheelRailPatch& patch) const {
   if (!kinematic) return creepages;
-  return contactgeom::kinematic_creepages(patch, pose, motion, wheel_radius);
+  return contactgeom::kinematic_creepages(patch, pose, motion, pair.wheel_radius);
 }
 
+namespace {
+
+// Refuses the impossible typed inputs (unit mistakes, mostly) before any profile is read and
+// returns the warnings for the implausible ones.
+std::vector<std::string> check_plausibility(const ContactInputs& in) {
+  std::vector<std::string> warnings;
+  core::check_plausible(core::kYawLimit, "--yaw", in.pose.yaw, warnings);
+  core::check_plausible(core::kWheelLoadLimit, "--load", in.load, warnings);
+  core::check_plausible(core::kSpeedLimit, "--V", in.motion.speed, warnings);
+  core::check_plausible(core::kFrictionLimit, "--mu", in.mu, warnings);
+  core::check_plausible(core::kCreepageLimit, "--vx", in.creepages.vx, warnings);
+  core::check_plausible(core::kCreepageLimit, "--vy", in.creepages.vy, warnings);
+  return warnings;
+}
+
+}  // namespace
+
 SolvedContact solve_contact(const ContactInputs& in) {
-  SolvedContact out{contactgeom::WheelRailPair(profiles::wheel_profile(in.wheel, in.wheel_radius),
-                                               profiles::rail_profile(in.rail, in.inclination)),
-                    {}};
+  std::vector<std::string> warnings = check_plausibility(in);
+  const profiles::ProfileFileOptions files = in.files.options();
+  SolvedContact out{
+      contactgeom::WheelRailPair(profiles::wheel_profile(in.wheel, in.wheel_radius, files),
+                                 profiles::rail_profile(in.rail, in.inclination, files)),
+      {},
+      std::move(warnings)};
   out.pair.gauge = in.gauge;
   out.pair.back_to_back = in.back_to_back;
-  out.pair.wheel_radius = in.wheel_radius;
+  out.pair.wheel_radius = out.pair.wheel.info().nominal_radius;
   out.pair.youngs_modulus = in.E;
   out.pair.poisson = in.nu;
   contactgeom::WheelRailOptions options;
   options.strip_width = in.strip_width;
   options.kp.epsilon = in.epsilon;
   out.contact = contactgeom::solve_wheel_rail(out.pair, in.pose, in.load, options);
+  if (auto warning =
+          core::plausibility_warning(core::kApproachLimit, "approach", out.contact.approach))
+    out.warnings.push_back(*warning);
   return out;
 }
 

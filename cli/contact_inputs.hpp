@@ -4,7 +4,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "profile_file_options.hpp"
 #include "wheelwear/contactgeom/kinematics.hpp"
 #include "wheelwear/contactgeom/wheel_rail.hpp"
 #include "wheelwear/tangential/creep_types.hpp"
@@ -23,7 +25,9 @@ struct ContactInputs {
   std::optional<double> inclination;
   double gauge = 1.435;
   double back_to_back = 1.360;
-  double wheel_radius = 0.46;
+  /// Nominal rolling radius [m]; default the wheel file header's diameter / 2, else 0.46.
+  std::optional<double> wheel_radius;
+  ProfileFileArgs files;  // how profile files are read
   double E = 200e9;
   double nu = 0.25;
   double strip_width = 0.1e-3;
@@ -33,8 +37,10 @@ struct ContactInputs {
   contactgeom::WheelsetMotion motion{20.0, 0.0, 0.0, 0.0, 0.75};
   double mu = 0.3;
 
-  /// The creepages at O of `patch`: given directly, or from the wheelset's motion.
-  tangential::Creepages creepages_at(const contactgeom::WheelRailPatch& patch) const;
+  /// The creepages at O of `patch` of `pair`: given directly, or from the wheelset's motion
+  /// (with the pair's nominal radius).
+  tangential::Creepages creepages_at(const contactgeom::WheelRailPair& pair,
+                                     const contactgeom::WheelRailPatch& patch) const;
 
   /// Combined shear modulus G = E / (2 (1 + nu)) [Pa] and nu.
   tangential::Material material() const { return {E / (2.0 * (1.0 + nu)), nu}; }
@@ -43,11 +49,12 @@ struct ContactInputs {
 /// Adds the shared options to `cmd`, writing into `inputs`.
 void add_contact_options(CLI::App* cmd, ContactInputs& inputs);
 
-/// The wheel/rail pair the inputs describe, and its contact; throws on bad input and on a
-/// contact that is missing or did not converge (naming the position and the fix).
+/// The wheel/rail pair the inputs describe, and its contact; throws on bad input and on an
+/// impossible one (core/plausibility.hpp). `warnings` names the implausible inputs and approach.
 struct SolvedContact {
   contactgeom::WheelRailPair pair;
   contactgeom::WheelRailContact contact;
+  std::vector<std::string> warnings;
 };
 SolvedContact solve_contact(const ContactInputs& inputs);
 

@@ -8,10 +8,12 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "json_writer.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/plausibility.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
@@ -81,6 +83,19 @@ void check_options(const CreepArgs& args, tangential::Method method) {
   }
 }
 
+// Refuses the impossible patch, load, friction and creepages (unit mistakes, mostly) and returns
+// the warnings for the implausible ones (core/plausibility.hpp).
+std::vector<std::string> check_plausibility(const CreepArgs& args) {
+  std::vector<std::string> warnings;
+  core::check_plausible(core::kSemiAxisLimit, "--a", args.sdec.a, warnings);
+  core::check_plausible(core::kSemiAxisLimit, "--b", args.sdec.b, warnings);
+  core::check_plausible(core::kWheelLoadLimit, "--N", args.load.N, warnings);
+  core::check_plausible(core::kFrictionLimit, "--mu", args.load.mu, warnings);
+  core::check_plausible(core::kCreepageLimit, "--vx", args.creepages.vx, warnings);
+  core::check_plausible(core::kCreepageLimit, "--vy", args.creepages.vy, warnings);
+  return warnings;
+}
+
 // The options of solve_patch from the command line; chooses the FASTSIM grid for
 // --target-error.
 tangential::SolveOptions solve_options(const CreepArgs& args, tangential::Method method,
@@ -141,6 +156,8 @@ void run_creep(const CreepArgs& args) {
   const auto method = tangential::parse_method(args.method);
   if (!method) throw InputError("--method " + args.method + ": unknown method");
   check_options(args, *method);
+  const std::vector<std::string> implausible = check_plausibility(args);
+  for (const std::string& w : implausible) std::cerr << "wheelwear: warning: " << w << '\n';
   std::optional<tangential::GridChoice> chosen;
   const tangential::SolveOptions options = solve_options(args, *method, chosen);
   const tangential::TangentialSolution s = tangential::solve_patch(
@@ -152,8 +169,10 @@ void run_creep(const CreepArgs& args) {
   const std::string table_outside = s.table_outside.value_or("");
   const bool has_cells = s.cells > 0 || (tangential::has_cell_fields(*method) && !s.from_table);
   const double mu_n = args.load.mu * args.load.N;
-  const std::string warnings = forces.flags.describe();
+  const std::string flags = forces.flags.describe();
   if (args.json) {
+    std::vector<std::string> warnings = implausible;
+    if (!flags.empty()) warnings.push_back(flags);
     JsonObject out;
     out.add("method", args.method)
         .add("Fx", forces.Fx)
@@ -171,7 +190,7 @@ void run_creep(const CreepArgs& args) {
           .add("predicted_error", chosen->predicted_error);
     }
     if (s.exact) add_exact_json(out, *s.exact, args);
-    out.add("extrapolated", forces.flags.any()).add("warnings", warnings);
+    out.add("extrapolated", forces.flags.any()).add_raw("warnings", json_strings(warnings));
     std::cout << out.str() << '\n';
     return;
   }
@@ -190,7 +209,7 @@ void run_creep(const CreepArgs& args) {
     std::printf("grid     %d x %d cells for --target-error %g (model error %.3g of muN)\n",
                 chosen->nx, chosen->ny, *args.target_error, chosen->predicted_error);
   }
-  if (!warnings.empty()) std::printf("warning  %s\n", warnings.c_str());
+  if (!flags.empty()) std::printf("warning  %s\n", flags.c_str());
 }
 
 }  // namespace
@@ -215,16 +234,17 @@ void add_creep_command(CLI::App& app) {
       "under 1 ms). On CONTACT's pure-spin cases 40 x 40 lies within 1 % of muN of CONTACT's\n"
       "80 x 80 answer and 80 x 80 reproduces it to 2e-7. It has no error model, so it refuses\n"
       "--target-error, and it takes neither --nx/--ny nor --bound/--scheme.");
-  cmd->add_option("--method", args->method,
-                  "fastsim-sdec (default), fastsim-eql, fastsim-eqe, fastsim-eqe-shifted,\n"
-                  "fastsim-elliptic, linear-sdec, she-sdec (Shen-Hedrick-Elkins),\n"
-                  "exact (Kalker's exact theory, see above; JSON adds status, iterations,\n"
-                  "adhesion_fraction, adhesion_elements, N_grid, frictional_work, exact_grid;\n"
-                  "cells and slip_cells count contact and slipping elements),\n"
-                  "table (the book of exact-theory tables, data/creep_table.h5: Fx, Fy, Mz within 1 % of\n"
-                  "muN of the exact theory in about 1 us; a/b 0.2-5, |psi| <= 0.8, nu\n"
-                  "0.25-0.28; an error outside its range) or best (the table inside its\n"
-                  "range, fastsim-sdec outside; the JSON's \"source\" says which)")
+  cmd->add_option(
+         "--method", args->method,
+         "fastsim-sdec (default), fastsim-eql, fastsim-eqe, fastsim-eqe-shifted,\n"
+         "fastsim-elliptic, linear-sdec, she-sdec (Shen-Hedrick-Elkins),\n"
+         "exact (Kalker's exact theory, see above; JSON adds status, iterations,\n"
+         "adhesion_fraction, adhesion_elements, N_grid, frictional_work, exact_grid;\n"
+         "cells and slip_cells count contact and slipping elements),\n"
+         "table (the book of exact-theory tables, data/creep_table.h5: Fx, Fy, Mz within 1 % of\n"
+         "muN of the exact theory in about 1 us; a/b 0.2-5, |psi| <= 0.8, nu\n"
+         "0.25-0.28; an error outside its range) or best (the table inside its\n"
+         "range, fastsim-sdec outside; the JSON's \"source\" says which)")
       ->check(CLI::IsMember(core::all_names(tangential::kMethodNames)));
   cmd->add_option("--a", args->sdec.a, "semi-length along x [m]")->required();
   cmd->add_option("--b", args->sdec.b, "semi-width along y [m]")->required();

@@ -80,4 +80,11 @@ std::string json_array(const std::vector<std::string>& elements) {
   return out + "]";
 }
 
+std::string json_strings(const std::vector<std::string>& texts) {
+  std::vector<std::string> elements;
+  elements.reserve(texts.size());
+  for (const std::string& text : texts) elements.push_back(quoted(text));
+  return json_array(elements);
+}
+
 }  // namespace wheelwear::cli

@@ -31,6 +31,9 @@ class JsonObject {
 /// Serialises a list of already-serialised JSON values as an array.
 std::string json_array(const std::vector<std::string>& elements);
 
+/// Serialises a list of texts as a JSON array of strings, e.g. ["a", "b"].
+std::string json_strings(const std::vector<std::string>& texts);
+
 /// Escapes a string for a JSON string literal (without the quotes).
 std::string json_escape(std::string_view text);
 

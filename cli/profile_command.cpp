@@ -16,6 +16,7 @@
 #include "json_writer.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/columns_format.hpp"
+#include "wheelwear/profiles/internal_face.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
@@ -32,7 +33,7 @@ struct ProfileArgs {
   std::string wheel, rail, out, side = "right", unit = "auto", inclination = "1:40";
   std::string gauge_side = "auto";
   std::string origin{pr::to_string(pr::LoadOptions{}.origin)};
-  double taping_line_distance = pr::LoadOptions{}.taping_line_distance;
+  std::optional<double> taping_line_distance;
   bool info = false, json = false;
   double spacing = 0.5e-3;
   double smoothing = 0.3e-3;
@@ -231,6 +232,13 @@ void run_profile(const ProfileArgs& args) {
       out.add("origin", std::string(pr::to_string(loaded.origin.origin)))
           .add("origin_shift", loaded.origin.shift)
           .add("origin_reason", loaded.origin.reason);
+    if (profile.body() == pr::Body::wheel) {
+      const pr::InternalFace face = pr::internal_face(profile);
+      out.add("internal_face_y", face.y)
+          .add("internal_face", face.how)
+          .add("nominal_radius", profile.info().nominal_radius)
+          .add("taping_line_distance", profile.info().taping_line_distance);
+    }
     if (parameters)
       out.add("Sh", parameters->Sh).add("Sd", parameters->Sd).add("qR", parameters->qR);
     if (profile.body() == pr::Body::rail) {
@@ -263,6 +271,12 @@ void run_profile(const ProfileArgs& args) {
                 loaded.origin.reason.c_str());
   std::printf("y range    %.3f ... %.3f mm (arc length %.3f mm)\n", profile.y_min() * 1e3,
               profile.y_max() * 1e3, profile.length() * 1e3);
+  if (profile.body() == pr::Body::wheel) {
+    std::printf("face       internal face %s\n", pr::internal_face(profile).how.c_str());
+    if (profile.info().nominal_radius > 0.0)
+      std::printf("radius     %.2f mm nominal rolling radius at the taping line\n",
+                  profile.info().nominal_radius * 1e3);
+  }
   std::printf("curvature  min %.4g 1/m, max %.4g 1/m (positive = convex)\n", k_min, k_max);
   if (parameters) {
     std::printf("Sh         %.3f mm\n", parameters->Sh * 1e3);
@@ -362,8 +376,8 @@ void add_profile_command(CLI::App& app) {
   args->taping_line_distance_option =
       cmd->add_option("--taping-line-distance", args->taping_line_distance,
                       "wheel files: taping line distance from the internal face [m] for\n"
-                      "--origin internal-face/auto, 0.03 ... 0.11 (EN 13715: 0.070)")
-          ->capture_default_str();
+                      "--origin internal-face/auto, 0.03 ... 0.11; default the file header's\n"
+                      "where it states one, else 0.070 (EN 13715)");
   args->flange_height =
       cmd->add_option("--flange-height", args->s1002.flange_height,
                       "S1002 flange height Sh [m], 0.028 ... 0.032 (EN 13715 h28 ... h32)")

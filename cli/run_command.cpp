@@ -4,8 +4,10 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -41,6 +43,23 @@ std::string duration(double seconds) {
   return text;
 }
 
+// "  (12 % of the distance not worn: 3 climbing, 1 Nadal)" for the progress line.
+std::string dropped_note(const pipeline::DroppedStates& d) {
+  std::string note = "  (" + std::to_string(std::lround(100.0 * d.dropped_patches_weight)) +
+                     " % of the distance not worn:";
+  const std::pair<int, const char*> reasons[] = {{d.failed_contacts, "failed"},
+                                                 {d.climbing_contacts, "climbing"},
+                                                 {d.load_jump_contacts, "load jump"},
+                                                 {d.nadal_contacts, "Nadal"}};
+  const char* separator = " ";
+  for (const auto& [count, name] : reasons)
+    if (count > 0) {
+      note += separator + std::to_string(count) + " " + name;
+      separator = ", ";
+    }
+  return note + ")";
+}
+
 // Progress on stderr: one redrawn line on a terminal, one line per step otherwise.
 void show_progress(const pipeline::RunProgress& p) {
   const bool tty = ::isatty(STDERR_FILENO) != 0;
@@ -54,12 +73,33 @@ void show_progress(const pipeline::RunProgress& p) {
   std::fprintf(stderr, "%s[%s] step %d  %.1f / %.1f km  %.0f states/s  ETA %s%s%s", tty ? "\r" : "",
                bar.c_str(), p.step, p.distance / 1e3, p.total_distance / 1e3,
                p.evaluations_per_second, done >= 1.0 ? "0 s" : duration(eta).c_str(),
-               p.failed_contacts > 0
-                   ? ("  (" + std::to_string(p.failed_contacts) + " contacts skipped)").c_str()
-                   : "",
+               p.dropped.dropped_patches_weight > 0.0 ? dropped_note(p.dropped).c_str() : "",
                tty ? "   " : "\n");
   if (tty && done >= 1.0) std::fputc('\n', stderr);
   std::fflush(stderr);
+}
+
+// The run's dropped states over all its steps, by the names of DroppedStates::named(): counts
+// summed, weights as the share of the run's distance (each step's share times the distance of
+// the step it drove).
+std::map<std::string, double> run_dropped(const pipeline::ResultsFile& file, int last) {
+  std::vector<double> step_distance;
+  double distance = 0.0;
+  for (int step = 0; step <= last; ++step) {
+    step_distance.push_back(file.read_step_array(step, "step_distance").at(0));
+    distance += step_distance.back();
+  }
+  std::map<std::string, double> totals;
+  for (const auto& [name, unused] : pipeline::DroppedStates{}.named()) {
+    const bool weight = name.find("_weight") != std::string::npos;
+    double& total = totals[name];
+    for (int step = 0; step <= last; ++step) {
+      const double value = file.read_step_array(step, name).at(0);
+      const auto k = static_cast<std::size_t>(step);
+      total += weight && distance > 0.0 ? value * step_distance[k] / distance : value;
+    }
+  }
+  return totals;
 }
 
 void report(const RunArgs& args, const std::string& output, const pipeline::RunSummary& s) {
@@ -71,6 +111,7 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
     return file.read_step_array(step, name).at(0);
   };
   const double rate = s.elapsed > 0.0 ? static_cast<double>(s.evaluations) / s.elapsed : 0.0;
+  const std::map<std::string, double> dropped = run_dropped(file, last);
   if (args.json) {
     JsonObject o;
     o.add("output", output)
@@ -90,6 +131,8 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
         .add("geometry_solves", static_cast<double>(s.geometry_solves))
         .add("patches", static_cast<double>(s.patches))
         .add("table_patches", static_cast<double>(s.table_patches));
+    for (const auto& [name, unused] : pipeline::DroppedStates{}.named())
+      o.add(name, dropped.at(name));
     std::cout << o.str() << '\n';
     return;
   }
@@ -106,6 +149,14 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
               at(last, "equivalent_conicity"));
   std::printf("  %zu state evaluations in %.1f s (%.0f states/s, %zu contact geometries)\n",
               s.evaluations, s.elapsed, rate, s.geometry_solves);
+  if (dropped.at("dropped_patches_weight") > 0.0) {
+    std::printf(
+        "  %.2f %% of the distance not worn (states dropped whole): %.0f failed, %.0f "
+        "climbing, %.0f load-jump, %.0f Nadal contacts over all steps\n",
+        100.0 * dropped.at("dropped_patches_weight"), dropped.at("failed_contacts"),
+        dropped.at("climbing_contacts"), dropped.at("load_jump_contacts"),
+        dropped.at("nadal_contacts"));
+  }
   if (s.table_patches > 0) {
     std::printf("  %zu of %zu patches with totals from the book of tables (best)\n",
                 s.table_patches, s.patches);

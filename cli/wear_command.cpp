@@ -46,8 +46,9 @@ double wheel_y(const profiles::Profile& wheel, double s) {
   return -wheel.position(s).x();
 }
 
-ModelWear wear_of(const WearArgs& args, const contactgeom::WheelRailPatch& p,
-                  tangential::ContactModel model, const wear::WearLaw& law) {
+ModelWear wear_of(const WearArgs& args, const contactgeom::WheelRailPair& pair,
+                  const contactgeom::WheelRailPatch& p, tangential::ContactModel model,
+                  const wear::WearLaw& law) {
   std::optional<contactgeom::Sdec> hertz;
   if (p.hertz) hertz = contactgeom::Sdec{p.hertz->a, p.hertz->b, 0.0};
   const tangential::ModelPatch mp = tangential::model_patch(model, p.sdec, hertz);
@@ -58,7 +59,7 @@ ModelWear wear_of(const WearArgs& args, const contactgeom::WheelRailPatch& p,
   options.fastsim.field_set =
       args.map.empty() ? tangential::CellFieldSet::wear : tangential::CellFieldSet::all;
   ModelWear out{model,
-                tangential::solve_patch(mp.method, mp.region, args.in.creepages_at(p),
+                tangential::solve_patch(mp.method, mp.region, args.in.creepages_at(pair, p),
                                         {p.normal_force, args.in.mu}, args.in.material(), options),
                 {},
                 {}};
@@ -146,13 +147,18 @@ void run_wear(const WearArgs& args) {
   }
   const SolvedContact solved = solve_contact(args.in);
   const auto& contact = solved.contact;
+  std::vector<std::string> warnings = solved.warnings;
+  for (const std::string& w : warnings) std::cerr << "wheelwear: warning: " << w << '\n';
   if (contact.status == contactgeom::WheelRailStatus::no_contact ||
       contact.status == contactgeom::WheelRailStatus::not_converged ||
       contact.status == contactgeom::WheelRailStatus::profile_end) {
     throw std::runtime_error(std::string("contact ") + contactgeom::status_name(contact.status) +
                              ": " + contact.message);
   }
-  if (!contact.message.empty()) std::cerr << "wheelwear: warning: " << contact.message << '\n';
+  if (!contact.message.empty()) {
+    std::cerr << "wheelwear: warning: " << contact.message << '\n';
+    warnings.push_back(contact.message);
+  }
   const profiles::Profile& wheel = solved.pair.wheel;
 
   std::vector<std::vector<ModelWear>> per_patch;
@@ -161,10 +167,10 @@ void run_wear(const WearArgs& args) {
     if (args.compare) {
       for (tangential::ContactModel m : tangential::kContactModels) {
         if (m == tangential::ContactModel::hertz && !p.hertz) continue;
-        models.push_back(wear_of(args, p, m, *law));
+        models.push_back(wear_of(args, solved.pair, p, m, *law));
       }
     } else {
-      models.push_back(wear_of(args, p, *chosen, *law));
+      models.push_back(wear_of(args, solved.pair, p, *chosen, *law));
     }
     per_patch.push_back(std::move(models));
   }
@@ -192,6 +198,7 @@ void run_wear(const WearArgs& args) {
     out.add("status", contactgeom::status_name(contact.status))
         .add("law", args.law)
         .add("V", args.in.motion.speed)
+        .add_raw("warnings", json_strings(warnings))
         .add_raw("patches", json_array(patches));
     std::cout << out.str() << '\n';
     return;

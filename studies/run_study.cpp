@@ -23,9 +23,9 @@
 #include <string>
 
 #include "wheelwear/pipeline/collective_wear.hpp"
-#include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/pipeline/wear_run.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
 
 namespace {
 
@@ -59,7 +59,8 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // Seconds of one evaluation of `scene`'s collective on the new wheel, best of `repeats`.
 double evaluation_seconds(const pipeline::Scene& scene, bool reuse, int repeats) {
   const pipeline::CollectiveEvaluator evaluator(scene, reuse);
-  const profiles::Profile wheel = profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius);
+  const profiles::Profile wheel =
+      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
   double best = 1e300;
   for (int r = 0; r < repeats; ++r) {
     const auto t0 = std::chrono::steady_clock::now();

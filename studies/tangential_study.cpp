@@ -24,9 +24,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -47,7 +47,8 @@ Outcome evaluate(pipeline::Scene scene, pipeline::TangentialMethod method, const
                  int repeats) {
   scene.tangential = method;
   const pipeline::CollectiveEvaluator evaluator(scene);
-  const profiles::Profile wheel = profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius);
+  const profiles::Profile wheel =
+      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
   Outcome out{name, 1e300, {}};
   for (int r = 0; r < repeats; ++r) {
     const auto t0 = std::chrono::steady_clock::now();

@@ -66,18 +66,70 @@ std::vector<double> wheel_weights(const Scene& scene) {
   return weights;
 }
 
+std::vector<std::pair<std::string, double>> DroppedStates::named() const {
+  return {{"failed_contacts", failed_contacts},
+          {"failed_contacts_weight", failed_contacts_weight},
+          {"climbing_contacts", climbing_contacts},
+          {"climbing_contacts_weight", climbing_contacts_weight},
+          {"nadal_contacts", nadal_contacts},
+          {"nadal_contacts_weight", nadal_contacts_weight},
+          {"load_jump_contacts", load_jump_contacts},
+          {"load_jump_contacts_weight", load_jump_contacts_weight},
+          {"dropped_patches", dropped_patches},
+          {"dropped_patches_weight", dropped_patches_weight}};
+}
+
+namespace {
+
+// Counts a dropped state's wheels by reason; its share once per reason and once as dropped.
+void count_dropped(const StateOutcome& state, double share, DroppedStates& d) {
+  bool seen[5] = {false, false, false, false, false};
+  for (const WheelOutcome& wheel : state.wheels) {
+    d.dropped_patches += static_cast<int>(wheel.contact_patches);
+    const DropReason reason = wheel.drop_reason();
+    const auto r = static_cast<std::size_t>(reason);
+    if (reason == DropReason::none) continue;
+    const bool first = !seen[r];
+    seen[r] = true;
+    const auto count = [&](int& contacts, double& weight) {
+      ++contacts;
+      if (first) weight += share;
+    };
+    switch (reason) {
+      case DropReason::failed:
+        count(d.failed_contacts, d.failed_contacts_weight);
+        break;
+      case DropReason::climbing:
+        count(d.climbing_contacts, d.climbing_contacts_weight);
+        break;
+      case DropReason::load_jump:
+        count(d.load_jump_contacts, d.load_jump_contacts_weight);
+        break;
+      case DropReason::nadal:
+        count(d.nadal_contacts, d.nadal_contacts_weight);
+        break;
+      case DropReason::none:
+        break;
+    }
+  }
+  d.dropped_patches_weight += share;
+}
+
+}  // namespace
+
 void reduce_states(const Scene& scene, const std::vector<StateOutcome>& states,
                    CollectiveWear& out) {
   const std::vector<double> weights = wheel_weights(scene);
+  double total = 0.0;
+  for (const auto& s : scene.states) total += s.weight;
   for (std::size_t i = 0; i < states.size(); ++i) {
+    if (states[i].dropped()) {
+      count_dropped(states[i], scene.states[i].weight / total, out.dropped);
+      continue;
+    }
     for (int side = 0; side < 2; ++side) {
       const WheelOutcome& wheel = states[i].wheels[static_cast<std::size_t>(side)];
       const double weight = weights[2 * i + static_cast<std::size_t>(side)];
-      if (!wheel.usable()) {
-        ++out.failed_contacts;
-        out.failed_weight += weight * (scene.separate_wheels ? 0.5 : 1.0);
-        continue;
-      }
       out.hertz_dropped += static_cast<std::size_t>(wheel.hertz_dropped);
       std::vector<double>& rate =
           out.rate[scene.separate_wheels ? static_cast<std::size_t>(side) : 0].depth;

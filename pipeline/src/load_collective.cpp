@@ -8,17 +8,21 @@
 #include <sstream>
 
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/plausibility.hpp"
 #include "wheelwear/core/text.hpp"
 
 namespace wheelwear::pipeline::detail {
 
 namespace {
 
-// Limits that catch unit mistakes (mm for m, kN for N) as much as impossible values.
-constexpr double kMaxShift = 0.05;        // [m]: beyond it no wheel is on its rail
-constexpr double kMaxYaw = 0.1;           // [rad]
-constexpr double kMaxLoad = 1e6;          // [N] on one wheel
-constexpr double kMaxSpeed = 150.0;       // [m/s]
+// Limits that catch unit mistakes (mm for m, kN for N) as much as impossible values; yaw, loads,
+// speed and creepages are the plausibility table's (core/plausibility.hpp), which also judges
+// those columns (plausible_column) for its messages with the reason and the likely fix.
+constexpr double kMaxShift = 0.05;  // [m]: beyond it no wheel is on its rail
+constexpr double kMaxYaw = core::kYawLimit.refuse;
+constexpr double kMaxLoad = core::kWheelLoadLimit.refuse;  // [N] on one wheel
+constexpr double kMaxSpeed = core::kSpeedLimit.refuse;
+constexpr double kMaxCreepage = core::kCreepageLimit.refuse;
 constexpr double kMaxLateralSpeed = 5.0;  // [m/s]
 constexpr double kMinCurveRadius = 50.0;  // [m]
 
@@ -59,21 +63,32 @@ const std::vector<Column>& columns() {
       {"lateral_velocity_m_s", "dy/dt, + to the left [m/s]",
        [](auto& s, double v) { s.lateral_velocity = v; }, -kMaxLateralSpeed, kMaxLateralSpeed},
       {"vx_left", "longitudinal creepage of the left wheel [-]",
-       [](auto& s, double v) { creepages(s, true)->vx = v; }, -1.0, 1.0},
+       [](auto& s, double v) { creepages(s, true)->vx = v; }, -kMaxCreepage, kMaxCreepage},
       {"vy_left", "lateral creepage of the left wheel [-]",
-       [](auto& s, double v) { creepages(s, true)->vy = v; }, -1.0, 1.0},
+       [](auto& s, double v) { creepages(s, true)->vy = v; }, -kMaxCreepage, kMaxCreepage},
       {"spin_left_1_m", "spin creepage of the left wheel [1/m]",
        [](auto& s, double v) { creepages(s, true)->phi = v; }, -100.0, 100.0},
       {"vx_right", "longitudinal creepage of the right wheel [-]",
-       [](auto& s, double v) { creepages(s, false)->vx = v; }, -1.0, 1.0},
+       [](auto& s, double v) { creepages(s, false)->vx = v; }, -kMaxCreepage, kMaxCreepage},
       {"vy_right", "lateral creepage of the right wheel [-]",
-       [](auto& s, double v) { creepages(s, false)->vy = v; }, -1.0, 1.0},
+       [](auto& s, double v) { creepages(s, false)->vy = v; }, -kMaxCreepage, kMaxCreepage},
       {"spin_right_1_m", "spin creepage of the right wheel [1/m]",
        [](auto& s, double v) { creepages(s, false)->phi = v; }, -100.0, 100.0},
       {"weight", "share of the running distance [-]", [](auto& s, double v) { s.weight = v; }, 0.0,
        1e12},
   };
   return table;
+}
+
+// The row of the plausibility table that also judges a column, if one does. The axle load keeps
+// its range only (twice a wheel's).
+const core::PlausibilityLimit* plausible_column(std::string_view name) {
+  if (name == "yaw_rad") return &core::kYawLimit;
+  if (name == "load_left_N" || name == "load_right_N") return &core::kWheelLoadLimit;
+  if (name == "speed_m_s") return &core::kSpeedLimit;
+  if (name == "vx_left" || name == "vy_left" || name == "vx_right" || name == "vy_right")
+    return &core::kCreepageLimit;
+  return nullptr;
 }
 
 bool is_label(std::string_view name) {
@@ -108,6 +123,8 @@ void set_state_field(WheelsetStateSpec& state, const StateField& field, const st
   }
   for (const Column& c : columns()) {
     if (field.name != c.name) continue;
+    if (const core::PlausibilityLimit* limit = plausible_column(c.name))
+      core::require_plausible(*limit, where + ": " + c.name, field.number);
     if (!std::isfinite(field.number) || field.number < c.lo || field.number > c.hi) {
       throw InputError(where + ": " + c.name + " = " + format_value(field.number) + ": the " +
                        c.meaning + " must be finite and within [" + format_value(c.lo) + ", " +

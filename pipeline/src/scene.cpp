@@ -84,6 +84,23 @@ std::string profile_spec(const toml::node& node, const std::string& key, const f
   return file.string();
 }
 
+// [wheel] origin: "auto", "taping-line" or "internal-face" (profiles::WheelOrigin).
+profiles::WheelOrigin wheel_origin(const toml::node& node, const std::string& key) {
+  const std::string name = text(node, key);
+  const auto origin = profiles::parse_wheel_origin(name);
+  if (!origin)
+    throw InputError(where(node.source(), key) + " = \"" + name +
+                     "\": unknown origin; use auto, taping-line (the file's y = 0 is the taping "
+                     "line) or internal-face (the flange back, as MiniProf writes wheels)");
+  return *origin;
+}
+
+// The share of a file's points the cleaning may discard.
+double max_drop(const toml::node& node, const std::string& key) {
+  return number(node, key, 0.0, 1.0,
+                "the share of points the cleaning may discard (merged duplicates do not count)");
+}
+
 std::vector<WheelsetStateSpec> inline_states(const toml::node& node, const std::string& key) {
   const toml::array* array = node.as_array();
   if (!array || !array->is_array_of_tables()) {
@@ -152,11 +169,29 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                          {"radius_m",
                           [&](const auto& n, const auto& k) {
                             s.wheel_radius = number(n, k, 0.2, 1.0, "the rolling radius in m");
+                          }},
+                         {"origin",
+                          [&](const auto& n, const auto& k) {
+                            s.wheel_file.origin = wheel_origin(n, k);
+                          }},
+                         {"taping_line_distance_m",
+                          [&](const auto& n, const auto& k) {
+                            s.wheel_file.taping_line_distance =
+                                number(n, k, 0.03, 0.11,
+                                       "the taping line's distance from the internal face in m");
+                          }},
+                         {"max_drop",
+                          [&](const auto& n, const auto& k) {
+                            s.wheel_file.max_drop_fraction = max_drop(n, k);
                           }}})},
       {"rail", section("rail",
                        {{"profile",
                          [&](const auto& n, const auto& k) {
                            s.rail_profile = profile_spec(n, k, base_directory, "60E1");
+                         }},
+                        {"max_drop",
+                         [&](const auto& n, const auto& k) {
+                           s.rail_file.max_drop_fraction = max_drop(n, k);
                          }},
                         {"inclination",
                          [&](const auto& n, const auto& k) {

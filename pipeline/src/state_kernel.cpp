@@ -49,8 +49,29 @@ double LocalWear::area() const {
 }
 
 bool WheelOutcome::usable() const {
-  return status == contactgeom::WheelRailStatus::ok ||
-         status == contactgeom::WheelRailStatus::load_jump;
+  return status == contactgeom::WheelRailStatus::ok;
+}
+
+DropReason WheelOutcome::drop_reason() const {
+  using contactgeom::WheelRailStatus;
+  switch (status) {
+    case WheelRailStatus::ok:
+      return nadal.exceeded ? DropReason::nadal : DropReason::none;
+    case WheelRailStatus::flange_climb:
+    case WheelRailStatus::past_flange:
+      return DropReason::climbing;
+    case WheelRailStatus::load_jump:
+      return DropReason::load_jump;
+    case WheelRailStatus::no_contact:
+    case WheelRailStatus::not_converged:
+    case WheelRailStatus::profile_end:
+      return DropReason::failed;
+  }
+  return DropReason::failed;
+}
+
+bool StateOutcome::dropped() const {
+  return wheels[0].drop_reason() != DropReason::none || wheels[1].drop_reason() != DropReason::none;
 }
 
 tangential::Method scene_method(tangential::ContactModel model, TangentialMethod tangential) {
@@ -74,7 +95,7 @@ tangential::Method scene_method(tangential::ContactModel model, TangentialMethod
 StateKernel::StateKernel(const Scene& scene)
     : scene_(scene),
       rail_(std::make_shared<const profiles::Profile>(
-          profiles::rail_profile(scene.rail_profile, scene.rail_inclination))),
+          profiles::rail_profile(scene.rail_profile, scene.rail_inclination, scene.rail_file))),
       law_(wear::TgammaLaw::usfd()),
       method_(scene_method(scene.model, scene.tangential)) {
   if (!scene.wear_law_table.empty()) {
@@ -102,7 +123,7 @@ contactgeom::WheelRailPair StateKernel::pair(const profiles::Profile& wheel) con
   contactgeom::WheelRailPair p(wheel, *rail_);
   p.gauge = scene_.gauge;
   p.back_to_back = scene_.back_to_back;
-  p.wheel_radius = scene_.wheel_radius;
+  p.wheel_radius = wheel.info().nominal_radius;
   p.youngs_modulus = scene_.youngs_modulus;
   p.poisson = scene_.poisson;
   p.validate();
@@ -133,6 +154,7 @@ WheelOutcome StateKernel::wheel(const contactgeom::WheelsetContact& both, int si
   out.vertical_force = contact.vertical_force;
   out.lateral_force = contact.lateral_force;
   out.lateral_fit = side == 0 ? both.left_fit : both.right_fit;
+  out.contact_patches = contact.patches.size();
   if (!out.usable()) return out;
 
   const contactgeom::WheelsetMotion motion = wheel_motion(s, side, scene_.lateral_arm);
@@ -161,8 +183,9 @@ WheelOutcome StateKernel::wheel(const contactgeom::WheelsetContact& both, int si
     }
     const contactgeom::Sdec region =
         tangential::model_patch(scene_.model, patch.sdec, hertz).region;
-    p.creepages =
-        given ? *given : contactgeom::kinematic_creepages(patch, pose, motion, scene_.wheel_radius);
+    p.creepages = given ? *given
+                        : contactgeom::kinematic_creepages(patch, pose, motion,
+                                                           wheel_profile.info().nominal_radius);
     const tangential::ContactLoad load{patch.normal_force, scene_.friction};
     tangential::solve_patch(method_, region, p.creepages, load, material, options, solution);
     p.wear = wear_window(patch, region.b, wheel_profile.length());
@@ -189,6 +212,10 @@ WheelOutcome StateKernel::wheel(const contactgeom::WheelsetContact& both, int si
       kept.y = solution.fields->y;
     }
   }
+  std::vector<double> creep_Fy;
+  for (const PatchOutcome& p : out.patches)
+    creep_Fy.push_back(p.solved ? p.solution.forces.Fy : 0.0);
+  out.nadal = contactgeom::nadal_check(contact, scene_.friction, creep_Fy);
   return out;
 }
 

@@ -83,7 +83,20 @@ void add_state_summaries(GroupRecord& g, const std::vector<StateOutcome>& states
   using W = const WheelOutcome&;
   wheel_array("status", per_wheel(states, [](W w) { return static_cast<double>(w.status); }), "1",
               "[state, wheel (left, right)] contact status: 0 ok, 1 no contact, 2 flange climb, "
-              "3 not converged, 4 load jump, 5 profile end");
+              "3 not converged, 4 load jump, 5 profile end, 6 past the flange");
+  wheel_array("drop_reason",
+              per_wheel(states, [](W w) { return static_cast<double>(w.drop_reason()); }), "1",
+              "[state, wheel] why the wheel keeps its state from being worn: 0 none, 1 failed, "
+              "2 climbing, 3 load jump, 4 beyond Nadal's limit (a state with any reason is not "
+              "worn)");
+  wheel_array("nadal_delta", per_wheel(states, [](W w) { return w.nadal.delta; }), "rad",
+              "[state, wheel] Nadal's delta: the largest contact angle of the patches carrying "
+              "10 % of the wheel's normal load (status ok only, else 0)");
+  wheel_array("Y_over_Q", per_wheel(states, [](W w) { return w.nadal.Y_over_Q; }), "1",
+              "[state, wheel] lateral over vertical force of the wheel in the track plane, creep "
+              "forces included");
+  wheel_array("nadal_limit", per_wheel(states, [](W w) { return w.nadal.limit; }), "1",
+              "[state, wheel] Nadal's limit (tan delta - mu)/(1 + mu tan delta)");
   wheel_array(
       "patches",
       per_wheel(states, [](W w) { return w.usable() ? static_cast<double>(w.patches.size()) : 0; }),

@@ -52,9 +52,29 @@ struct LoopStart {
   std::vector<WornProfile> worn;
 };
 
+// What each counter of DroppedStates means, for the results file.
+std::string dropped_description(const std::string& name) {
+  const bool weight = name.size() > 7 && name.compare(name.size() - 7, 7, "_weight") == 0;
+  const std::string base = weight ? name.substr(0, name.size() - 7) : name;
+  std::string what;
+  if (base == "failed_contacts")
+    what = "wheel contacts without a usable contact (no contact, not converged, profile end)";
+  if (base == "climbing_contacts")
+    what = "wheel contacts in flange climb or past the flange (beyond its steepest point)";
+  if (base == "nadal_contacts") what = "wheel contacts with Y/Q beyond Nadal's limit";
+  if (base == "load_jump_contacts")
+    what = "wheel contacts whose load falls in a jump of the vertical force";
+  if (base == "dropped_patches")
+    return weight ? "share of the running distance of the states not worn (dropped whole)"
+                  : "contact patches of both wheels of the states not worn (dropped whole)";
+  return weight ? "share of the running distance of the states with " + what +
+                      " (each state once), not worn"
+                : what + "; their states are not worn";
+}
+
 std::vector<WornProfile> new_profiles(const Scene& scene) {
   const profiles::Profile initial =
-      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius);
+      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
   WornProfile w{"wheel", initial.info(), initial.curve_options(), initial.knot_points()};
   // The profile is re-interpolated through its knots: smoothing was applied once, on reading.
   w.curve.smoothing_length = 0.0;
@@ -143,10 +163,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     g.arrays.push_back(scalar("distance", distance, "m", "running distance at this step"));
     g.arrays.push_back(scalar("step_distance", step_distance, "m",
                               "distance of the wear increment taken from here (0: the end)"));
-    g.arrays.push_back(scalar("failed_contacts", cw.failed_contacts, "1",
-                              "wheel contacts without a usable patch (skipped)"));
-    g.arrays.push_back(scalar("failed_weight", cw.failed_weight, "1",
-                              "share of the running distance of the skipped contacts"));
+    for (const auto& [name, value] : cw.dropped.named())
+      g.arrays.push_back(scalar(name, value, "1", dropped_description(name)));
     g.arrays.push_back(
         scalar("patches", static_cast<double>(cw.patches), "1", "contact patches solved"));
     g.arrays.push_back(scalar("table_patches", static_cast<double>(cw.table_patches), "1",
@@ -226,7 +244,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       p.states = scene.states.size();
       p.elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
       p.evaluations_per_second = static_cast<double>(summary.evaluations) / p.elapsed;
-      p.failed_contacts = cw.failed_contacts;
+      p.dropped = cw.dropped;
       options.progress(p);
     }
     if (step_distance == 0.0) break;

@@ -42,8 +42,9 @@ class SceneTest : public ::testing::Test {
 TEST_F(SceneTest, ReadsEveryKeyInSiUnits) {
   const Scene s = parse_scene(
       "title = \"t\"\n"
-      "[wheel]\nprofile = \"S1002\"\nradius_m = 0.45\n"
-      "[rail]\nprofile = \"60E1\"\ninclination = 0.05\n"
+      "[wheel]\nprofile = \"S1002\"\nradius_m = 0.45\norigin = \"internal-face\"\n"
+      "taping_line_distance_m = 0.0715\nmax_drop = 0.3\n"
+      "[rail]\nprofile = \"60E1\"\ninclination = 0.05\nmax_drop = 0.1\n"
       "[track]\ngauge_m = 1.432\nback_to_back_m = 1.358\n"
       "[material]\nyoungs_modulus_Pa = 210e9\npoisson = 0.3\n"
       "[contact]\nmodel = \"eqe-shifted\"\nfriction = 0.4\ngrid_nx = 12\ngrid_ny = 14\n"
@@ -55,7 +56,11 @@ TEST_F(SceneTest, ReadsEveryKeyInSiUnits) {
           std::string(kState),
       dir_);
   EXPECT_EQ(s.title, "t");
-  EXPECT_DOUBLE_EQ(s.wheel_radius, 0.45);
+  EXPECT_DOUBLE_EQ(s.wheel_radius.value(), 0.45);
+  EXPECT_EQ(s.wheel_file.origin, profiles::WheelOrigin::internal_face);
+  EXPECT_DOUBLE_EQ(s.wheel_file.taping_line_distance.value(), 0.0715);
+  EXPECT_DOUBLE_EQ(s.wheel_file.max_drop_fraction, 0.3);
+  EXPECT_DOUBLE_EQ(s.rail_file.max_drop_fraction, 0.1);
   ASSERT_TRUE(s.rail_inclination.has_value());
   EXPECT_NEAR(*s.rail_inclination, std::atan(0.05), 1e-15);
   EXPECT_DOUBLE_EQ(s.gauge, 1.432);
@@ -221,6 +226,13 @@ INSTANTIATE_TEST_SUITE_P(
                  "scene line 2: wheel.radius_m: expected a number"},
         BadScene{"RadiusInMillimetres", "[wheel]\nradius_m = 460\n" + std::string(kState),
                  "wheel.radius_m = 460"},
+        BadScene{"UnknownOrigin", "[wheel]\norigin = \"flange\"\n" + std::string(kState),
+                 "wheel.origin = \"flange\": unknown origin; use auto, taping-line"},
+        BadScene{"TapingLineInMillimetres",
+                 "[wheel]\ntaping_line_distance_m = 70\n" + std::string(kState),
+                 "wheel.taping_line_distance_m = 70"},
+        BadScene{"MaxDropAbove1", "[rail]\nmax_drop = 20\n" + std::string(kState),
+                 "rail.max_drop = 20"},
         BadScene{"NegativeFriction", "[contact]\nfriction = -0.1\n" + std::string(kState),
                  "contact.friction = -0.1"},
         BadScene{"MissingProfile", "[wheel]\nprofile = \"nosuch.csv\"\n" + std::string(kState),

@@ -40,7 +40,7 @@ struct KernelCase {
   explicit KernelCase(const std::string& text)
       : scene(parse_scene(text, {})),
         kernel(scene),
-        wheel(profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius)),
+        wheel(profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file)),
         track{kernel.pair(wheel), kernel.pair(wheel)} {}
 };
 
@@ -70,7 +70,9 @@ TEST(StateKernel, WearsEveryPatchOfTwoPointContact) {
   reduced.rate.push_back(wear::WearDistribution::zeros(0.0, kWearBin, bins));
   reduce_states(s.scene, {out}, reduced);
   EXPECT_EQ(reduced.patches, 3u);
-  EXPECT_EQ(reduced.failed_contacts, 0);
+  EXPECT_FALSE(out.dropped());
+  EXPECT_EQ(reduced.dropped.dropped_patches, 0);
+  EXPECT_EQ(reduced.dropped.dropped_patches_weight, 0.0);
   const double area = reduced.rate[0].area();
   EXPECT_NEAR(area, expected, 1e-12 * expected);
 }

@@ -4,6 +4,8 @@
 /// worn profile.
 
 #include <cstddef>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "wheelwear/pipeline/scene.hpp"
@@ -12,6 +14,27 @@
 #include "wheelwear/wear/wear_distribution.hpp"
 
 namespace wheelwear::pipeline {
+
+/// The states an evaluation did not wear (StateOutcome::dropped), by the reason of each wheel
+/// (WheelOutcome::drop_reason). `*_contacts` count wheel contacts with the reason; their
+/// `*_weight` is the share of the running distance of the states that have at least one such
+/// contact, each state counted once per reason. dropped_patches counts the contact patches of
+/// both wheels of every dropped state, dropped_patches_weight the dropped states' share.
+struct DroppedStates {
+  int failed_contacts = 0;
+  double failed_contacts_weight = 0.0;
+  int climbing_contacts = 0;
+  double climbing_contacts_weight = 0.0;
+  int nadal_contacts = 0;
+  double nadal_contacts_weight = 0.0;
+  int load_jump_contacts = 0;
+  double load_jump_contacts_weight = 0.0;
+  int dropped_patches = 0;
+  double dropped_patches_weight = 0.0;
+
+  /// The counters with their names, in a fixed order (the results' and the JSON's names).
+  std::vector<std::pair<std::string, double>> named() const;
+};
 
 /// The result of one evaluation.
 struct CollectiveWear {
@@ -22,8 +45,7 @@ struct CollectiveWear {
   /// Every state's outcome, in the collective's order; kept when the scene records state
   /// summaries or T gamma maps (the patches keep their cells for maps).
   std::vector<StateOutcome> states;
-  int failed_contacts = 0;          ///< wheel contacts without usable patches (skipped)
-  double failed_weight = 0.0;       ///< their share of the running distance (of the two wheels)
+  DroppedStates dropped;            ///< states not worn, by reason
   std::size_t geometry_solves = 0;  ///< distinct wheel/rail contacts solved (after reuse)
   std::size_t patches = 0;          ///< patches solved and worn
   std::size_t table_patches = 0;    ///< of them, with totals from the book of tables ("best")

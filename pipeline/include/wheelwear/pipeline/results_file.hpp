@@ -28,7 +28,10 @@ namespace wheelwear::pipeline {
 /// Version of the file's layout, the root attribute `format_version`: bumped by every change
 /// of the layout, each listed in docs/results.md. 2: root attribute, per-patch datasets of
 /// shape (states, 2, P), every patch worn, `hertz_dropped` per step, `creep_table_sha256`.
-inline constexpr int kFormatVersion = 2;
+/// 3: states dropped whole by reason (`failed_contacts` ... `dropped_patches` and their
+/// `_weight`s replace `failed_contacts`, `failed_weight`), per-state `drop_reason`, Nadal's
+/// `nadal_delta`, `Y_over_Q`, `nadal_limit`, status 6 past the flange, strip-wise forces.
+inline constexpr int kFormatVersion = 3;
 
 /// One dataset: values in row-major order with their shape ({} for a scalar, {n}, {rows, cols}).
 struct ArrayRecord {

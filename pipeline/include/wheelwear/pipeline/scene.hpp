@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/tangential/contact_model.hpp"
 #include "wheelwear/tangential/creep_types.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
@@ -44,7 +45,8 @@ enum class TangentialMethod {
   fastsim,  ///< FASTSIM with the contact model's region and flexibilities
   /// Inside the book of tables each SDEC patch's forces, spin moment and frictional work are
   /// Kalker's exact theory's, spread over the patch as FASTSIM-SDEC spreads them
-  /// (wheelwear/tangential/table_correction.hpp); FASTSIM-SDEC alone outside the table. Needs model sdec.
+  /// (wheelwear/tangential/table_correction.hpp); FASTSIM-SDEC alone outside the table. Needs model
+  /// sdec.
   best,
   /// Kalker's exact theory on the SDEC patch (exact_sdec on grid_nx x grid_ny elements,
   /// tangential/exact/exact_fields.hpp): the reference, at milliseconds per patch. Needs model
@@ -56,8 +58,12 @@ enum class TangentialMethod {
 struct Scene {
   std::string title;
   std::string wheel_profile = "S1002";  ///< standard name or resolved file path
-  double wheel_radius = 0.46;           ///< [m]
+  /// Nominal rolling radius at the taping line [m]; default half the diameter a wheel file's
+  /// header states, else profiles::kDefaultWheelRadius.
+  std::optional<double> wheel_radius;
+  profiles::ProfileFileOptions wheel_file;  ///< how a wheel file is read (origin, ...)
   std::string rail_profile = "60E1";
+  profiles::ProfileFileOptions rail_file;  ///< how a rail file is read
   std::optional<double> rail_inclination;  ///< [rad]; default per profile_source.hpp
   double gauge = 1.435;                    ///< [m]
   double back_to_back = 1.360;             ///< [m]

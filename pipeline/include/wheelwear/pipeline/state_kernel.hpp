@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "wheelwear/contactgeom/nadal.hpp"
 #include "wheelwear/contactgeom/sdec.hpp"
 #include "wheelwear/contactgeom/wheelset.hpp"
 #include "wheelwear/pipeline/scene.hpp"
@@ -45,6 +46,16 @@ struct PatchOutcome {
   LocalWear wear;                           ///< this patch's wear per metre running
 };
 
+/// Why a wheel keeps its state from being worn. A run drops such a state whole, both wheels: one
+/// wheel's contact cannot be trusted without the other's, whose loads it shares.
+enum class DropReason {
+  none,
+  failed,     ///< no usable contact: no contact, not converged, profile end
+  climbing,   ///< flange climb or past the flange (contact beyond the flange's steepest point)
+  load_jump,  ///< the load falls inside a jump of the vertical force; the load is missed
+  nadal,      ///< Y/Q beyond Nadal's limit (contactgeom/nadal.hpp)
+};
+
 /// One wheel of a state.
 struct WheelOutcome {
   contactgeom::WheelRailStatus status = contactgeom::WheelRailStatus::no_contact;
@@ -53,16 +64,27 @@ struct WheelOutcome {
   double lateral_force = 0.0;   ///< sum of N sin(angle) [N], + pushing the wheel to the centre
   contactgeom::LateralFit lateral_fit = contactgeom::LateralFit::not_prescribed;
   std::vector<PatchOutcome> patches;  ///< every patch, from the field side to the gauge side
+                                      ///< (solved only when the status is ok)
+  std::size_t contact_patches = 0;    ///< patches of the contact, whatever its status
   int hertz_dropped = 0;              ///< patches not solved for want of a Hertz ellipse
+  /// Nadal's criterion with the flange friction (the scene's) and the solved patches' lateral
+  /// creep forces; status ok only (else left at its default, not exceeded).
+  contactgeom::NadalCheck nadal;
 
-  /// Whether the contact gives patches to wear (status ok or load_jump).
+  /// Whether the contact gives patches to wear (status ok).
   bool usable() const;
+  /// Why this wheel's state cannot be worn; failed before climbing before load_jump before
+  /// nadal, one reason per wheel.
+  DropReason drop_reason() const;
 };
 
 /// Both wheels of one state (0 left, 1 right).
 struct StateOutcome {
   double roll = 0.0;  ///< wheelset roll [rad], + when the left wheel goes down
   std::array<WheelOutcome, 2> wheels;
+
+  /// Whether either wheel has a drop reason: the state is not worn.
+  bool dropped() const;
 };
 
 /// The fixed part of the physics: rail, track, material, contact model, tangential method and

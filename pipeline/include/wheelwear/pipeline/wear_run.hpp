@@ -6,6 +6,7 @@
 #include <functional>
 #include <string>
 
+#include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/scene.hpp"
 
 namespace wheelwear::pipeline {
@@ -18,7 +19,7 @@ struct RunProgress {
   std::size_t states = 0;               ///< states in the collective
   double elapsed = 0.0;                 ///< wall time of this process so far [s]
   double evaluations_per_second = 0.0;  ///< wheelset states evaluated per second so far
-  int failed_contacts = 0;              ///< wheel contacts of this step that had no usable patch
+  DroppedStates dropped;                ///< states of this step not worn, by reason
 };
 
 /// How a run is driven.

@@ -1,0 +1,45 @@
+#include "profile_file_options.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include "wheelwear/core/input_error.hpp"
+
+namespace wheelwear::cli {
+
+profiles::ProfileFileOptions ProfileFileArgs::options() const {
+  profiles::ProfileFileOptions out;
+  const auto parsed = profiles::parse_wheel_origin(origin);
+  if (!parsed)
+    throw InputError("--origin " + origin + ": must be auto, taping-line or internal-face");
+  out.origin = *parsed;
+  out.taping_line_distance = taping_line_distance;
+  out.max_drop_fraction = max_drop;
+  return out;
+}
+
+bool ProfileFileArgs::wheel_file_option_given() const {
+  return origin_option->count() > 0 || taping_line_distance_option->count() > 0;
+}
+
+void add_profile_file_options(CLI::App* cmd, ProfileFileArgs& args) {
+  args.origin_option =
+      cmd->add_option("--origin", args.origin,
+                      "wheel files: the file's lateral origin. auto takes the taping line if\n"
+                      "the profile reaches 60 mm or more on the flange side of y = 0, the\n"
+                      "internal face (flange back, as MiniProf writes wheels) if its flange-side\n"
+                      "end lies within 5 mm of y = 0, and refuses anything else; taping-line or\n"
+                      "internal-face say which (the latter moves the wheel by the taping line\n"
+                      "distance)")
+          ->check(CLI::IsMember({"auto", "taping-line", "internal-face"}))
+          ->capture_default_str();
+  args.taping_line_distance_option = cmd->add_option(
+      "--taping-line-distance", args.taping_line_distance,
+      "wheel files: taping line distance from the internal face [m], 0.03 ... 0.11;\n"
+      "default the file header's where it states one, else 0.070 (EN 13715)");
+  cmd->add_option("--max-drop", args.max_drop,
+                  "profile files: largest share of points the cleaning may discard (0 ... 1);\n"
+                  "merged near-duplicate points do not count")
+      ->capture_default_str();
+}
+
+}  // namespace wheelwear::cli
