@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numeric>
+#include <tuple>
 
 #include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
@@ -98,6 +99,58 @@ TEST(StateKernel, CountsAPatchWithoutHertzEllipse) {
   reduce_states(s.scene, {out}, reduced);
   EXPECT_EQ(reduced.hertz_dropped, 1u);
   EXPECT_EQ(reduced.patches, 2u);  // the left tread and the right wheel's patch
+}
+
+// A state with one wheel past the flange, beyond Nadal's limit or in a load jump, or failed, is
+// dropped whole: no wear from either wheel, its share of the distance counted once per reason,
+// its wheels' patches counted as dropped. Reference: the collective's weights (1 : 3 here) and
+// the patch counts set in the test; the kept state's wear is the only wear.
+TEST(StateKernel, DropsAStateWholeAndCountsItOncePerReason) {
+  const KernelCase s(two_point_scene() +
+                     "[[load_collective.state]]\ndy_m = 0.0\naxle_load_N = 110e3\n"
+                     "speed_m_s = 30\nweight = 3\n");
+  ASSERT_EQ(s.scene.states.size(), 2u);
+  const StateOutcome kept = s.kernel.evaluate(s.track, s.scene.states[0]);
+  ASSERT_FALSE(kept.dropped());
+  const auto reduce = [&](const std::vector<StateOutcome>& states) {
+    CollectiveWear out;
+    const auto bins = static_cast<std::size_t>(std::ceil(s.wheel.length() / kWearBin)) + 1;
+    out.rate.push_back(wear::WearDistribution::zeros(0.0, kWearBin, bins));
+    reduce_states(s.scene, states, out);
+    return out;
+  };
+  const double kept_area = reduce({kept, StateOutcome{}}).rate[0].area();
+  int compared = 0;
+  using contactgeom::WheelRailStatus;
+  for (const auto& [status, nadal, reason] :
+       {std::tuple{WheelRailStatus::past_flange, false, DropReason::climbing},
+        std::tuple{WheelRailStatus::flange_climb, false, DropReason::climbing},
+        std::tuple{WheelRailStatus::load_jump, false, DropReason::load_jump},
+        std::tuple{WheelRailStatus::ok, true, DropReason::nadal},
+        std::tuple{WheelRailStatus::not_converged, false, DropReason::failed}}) {
+    StateOutcome bad = s.kernel.evaluate(s.track, s.scene.states[1]);
+    ASSERT_FALSE(bad.dropped());
+    bad.wheels[0].status = status;
+    bad.wheels[0].nadal.exceeded = nadal;
+    bad.wheels[1].status = status;  // both wheels: counted twice, weighed once
+    bad.wheels[1].nadal.exceeded = nadal;
+    ASSERT_EQ(bad.wheels[0].drop_reason(), reason);
+    const std::size_t patches = bad.wheels[0].contact_patches + bad.wheels[1].contact_patches;
+    const CollectiveWear out = reduce({kept, bad});
+    EXPECT_NEAR(out.rate[0].area(), kept_area,
+                1e-15 * kept_area);  // the dropped state wears nothing
+    const DroppedStates& d = out.dropped;
+    EXPECT_EQ(d.dropped_patches, static_cast<int>(patches));
+    EXPECT_DOUBLE_EQ(d.dropped_patches_weight, 0.75);
+    const int contacts =
+        d.failed_contacts + d.climbing_contacts + d.load_jump_contacts + d.nadal_contacts;
+    EXPECT_EQ(contacts, 2);
+    const double weight = d.failed_contacts_weight + d.climbing_contacts_weight +
+                          d.load_jump_contacts_weight + d.nadal_contacts_weight;
+    EXPECT_DOUBLE_EQ(weight, 0.75);
+    ++compared;
+  }
+  EXPECT_EQ(compared, 5);
 }
 
 class StateKernelRun : public ::testing::Test {

@@ -1,0 +1,68 @@
+// `wheelwear contact` names the contact's state: past the flange, and Nadal's criterion beside
+// the status, on CONTACT's S1002/UIC60 pair (tests/data/contact/profiles). References: CONTACT's
+// flange case (y_ws = -8 mm: Y/Q = 137.2/55 = 2.49, contact angle 1.2053 rad) and the closed
+// form of the limit, tan(delta - atan mu).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "support/csv_table.hpp"
+#include "support/run_command.hpp"
+
+namespace wheelwear {
+namespace {
+
+using testing::json_number;
+using testing::run_wheelwear;
+
+std::string pair_args(double dy) {
+  const std::string dir = testing::test_data("contact/profiles/");
+  return "contact --wheel " + dir + "MBench_S1002_v3.prw --rail " + dir +
+         "MBench_UIC60_v3.prr --incl 0 --load 55000 --mu 0.35 --creep --kinematic --V 2 --json "
+         "--dy " +
+         std::to_string(dy);
+}
+
+bool json_true(const std::string& json, const std::string& key) {
+  return json.find("\"" + key + "\": true") != std::string::npos;
+}
+
+TEST(ContactStatusCommand, FlankContactBeyondNadalsLimitIsFlagged) {
+  const auto r = run_wheelwear(pair_args(0.008));  // CONTACT's y_ws = -8 mm
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"status\": \"ok\""), std::string::npos) << r.out;
+  EXPECT_TRUE(json_true(r.out, "nadal_applies"));
+  EXPECT_TRUE(json_true(r.out, "nadal_exceeded"));
+  const double delta = *json_number(r.out, "nadal_delta");
+  EXPECT_NEAR(delta, 1.2053, 0.015);  // wheel_rail_test's angle bound against CONTACT
+  EXPECT_NEAR(*json_number(r.out, "nadal_limit"), std::tan(delta - std::atan(0.35)), 1e-12);
+  // Y/Q within 5 % of CONTACT's: the creepages here are free rolling, CONTACT's a prescribed
+  // 1e-3 (the lateral creep force is 2 % of the normal force, 0.6 % of Y/Q per 1e-3).
+  EXPECT_NEAR(*json_number(r.out, "Y_over_Q"), 137.2 / 55.0, 0.05 * 137.2 / 55.0);
+}
+
+TEST(ContactStatusCommand, TreadAndRootContactAreNotFlagged) {
+  int compared = 0;
+  for (double dy : {-0.004, 0.0, 0.004, 0.006}) {
+    const auto r = run_wheelwear(pair_args(dy));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("\"status\": \"ok\""), std::string::npos) << dy << r.out;
+    EXPECT_FALSE(json_true(r.out, "nadal_applies")) << dy;
+    EXPECT_FALSE(json_true(r.out, "nadal_exceeded")) << dy;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 4);
+}
+
+TEST(ContactStatusCommand, ContactPastTheFlangeHasItsOwnStatus) {
+  for (double dy : {0.012, 0.02, 0.03}) {
+    const auto r = run_wheelwear(pair_args(dy));
+    ASSERT_EQ(r.exit_code, 0) << r.err;  // reported, not an error
+    EXPECT_NE(r.out.find("\"status\": \"past flange\""), std::string::npos) << dy << r.out;
+  }
+}
+
+}  // namespace
+}  // namespace wheelwear
