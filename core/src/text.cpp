@@ -105,6 +105,14 @@ std::optional<double> parse_number(std::string_view token) {
   return negative ? -value : value;
 }
 
+std::string format_mm(double metres, int decimals) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(decimals);
+  out << metres * 1e3 << " mm";
+  return out.str();
+}
+
 std::string format_number(double value) {
   char buffer[64];
   const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 
 namespace wheelwear::profiles {
 
@@ -55,14 +56,6 @@ std::string format_mm(double metres) {
   return out.str();
 }
 
-std::string format_depth(double metres) {
-  std::ostringstream out;
-  out.setf(std::ios::fixed);
-  out.precision(1);
-  out << metres * 1e3 << " mm";
-  return out.str();
-}
-
 }  // namespace
 
 void CleaningOptions::validate() const {
@@ -100,7 +93,7 @@ std::string CropReport::summary() const {
       << format_mm(depth) << " below the top of rail (";
   if (gauge_side > 0) side("gauge side", gauge_side, gauge_lines);
   if (field_side > 0) side("field side", field_side, field_lines);
-  out << "down to " << format_depth(deepest) << ")";
+  out << "down to " << core::format_mm(deepest, 1) << ")";
   return out.str();
 }
 

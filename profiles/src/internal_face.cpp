@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 
 namespace wheelwear::profiles {
 
@@ -25,14 +26,6 @@ double tip_arc_length(const Profile& wheel) {
     }
   }
   return s_tip;
-}
-
-std::string mm(double metres) {
-  std::ostringstream out;
-  out.setf(std::ios::fixed);
-  out.precision(2);
-  out << metres * 1e3 << " mm";
-  return out.str();
 }
 
 }  // namespace
@@ -56,15 +49,15 @@ InternalFace internal_face(const Profile& wheel) {
     std::nth_element(ys.begin(), ys.begin() + static_cast<std::ptrdiff_t>(ys.size() / 2), ys.end());
     face.y = ys[ys.size() / 2];
     face.measured = true;
-    face.how = "measured: the median of the steep back-face points over " + mm(z_hi - z_lo) +
-               " of height, at y = " + mm(face.y);
+    face.how = "measured: the median of the steep back-face points over " +
+               core::format_mm(z_hi - z_lo, 2) + " of height, at y = " + core::format_mm(face.y, 2);
     return face;
   }
   const double distance = wheel.info().taping_line_distance;
   face.y = -distance;
   face.how = "by convention: the profile has no steep back face (it starts at y = " +
-             mm(wheel.position(0.0)[0]) + "), so the face lies " + mm(distance) +
-             " from the taping line at y = 0";
+             core::format_mm(wheel.position(0.0)[0], 2) + "), so the face lies " +
+             core::format_mm(distance, 2) + " from the taping line at y = 0";
   return face;
 }
 

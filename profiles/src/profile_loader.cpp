@@ -24,14 +24,6 @@ constexpr core::NameTable<WheelOrigin, 3> kOriginNames = {{
 // An estimated inclination below minus this (1:200) means the field side lies lower.
 constexpr double kMirroredInclination = 1.0 / 200.0;
 
-std::string mm(double metres) {
-  std::ostringstream out;
-  out.setf(std::ios::fixed);
-  out.precision(1);
-  out << metres * 1e3 << " mm";
-  return out.str();
-}
-
 // A rail whose gauge side does not reach the gauge measuring depth has no gauge point, and
 // `contact` cannot place it; say so while the file is at hand, with the likely cause.
 std::optional<std::string> gauge_point_warning(const Profile& rail, const RawProfile& raw,
@@ -48,8 +40,9 @@ std::optional<std::string> gauge_point_warning(const Profile& rail, const RawPro
                         ": no gauge point: the gauge side (the profile's -y end" +
                         (orientation.mirrored_y ? ", the file's larger lateral values"
                                                 : ", the file's smaller lateral values") +
-                        ") reaches " + mm(reach) + " below the top of rail, less than the " +
-                        mm(track.gauge_measuring_depth) +
+                        ") reaches " + core::format_mm(reach, 1) +
+                        " below the top of rail, less than the " +
+                        core::format_mm(track.gauge_measuring_depth, 1) +
                         " where the gauge is measured, so `contact` cannot place this rail. If "
                         "the gauge face is at the file's other end, set the gauge side "
                         "(profile --gauge-side, LoadOptions::orientation.mirror_y)";
@@ -76,14 +69,6 @@ std::optional<std::string> mirrored_rail_warning(const Profile& rail, const RawP
   return message.str();
 }
 
-std::string mm3(double metres) {
-  std::ostringstream out;
-  out.setf(std::ios::fixed);
-  out.precision(3);
-  out << metres * 1e3 << " mm";
-  return out.str();
-}
-
 // The automatic rule's verdict (WheelOrigin) on oriented points: `evidence` is the flange-side end
 // and the criterion it meets; no origin when it meets neither.
 struct OriginVerdict {
@@ -94,17 +79,17 @@ struct OriginVerdict {
 OriginVerdict automatic_origin(const RawProfile& raw) {
   double end = raw.points.front()[0];
   for (const Point& p : raw.points) end = std::min(end, p[0]);
-  const std::string at = "its flange-side end lies at y = " + mm3(end);
+  const std::string at = "its flange-side end lies at y = " + core::format_mm(end, 3);
   if (end <= -kTapingLineReach)
-    return {WheelOrigin::taping_line,
-            at + ", " + mm(kTapingLineReach) + " or more on the flange side of y = 0"};
+    return {WheelOrigin::taping_line, at + ", " + core::format_mm(kTapingLineReach, 1) +
+                                          " or more on the flange side of y = 0"};
   if (std::abs(end) <= kInternalFaceTolerance)
     return {WheelOrigin::internal_face,
-            at + ", within " + mm(kInternalFaceTolerance) + " of y = 0"};
-  return {std::nullopt, at + ", neither " + mm(kTapingLineReach) +
+            at + ", within " + core::format_mm(kInternalFaceTolerance, 1) + " of y = 0"};
+  return {std::nullopt, at + ", neither " + core::format_mm(kTapingLineReach, 1) +
                             " or more on the flange side of y = 0 (origin at the taping line) "
                             "nor within " +
-                            mm(kInternalFaceTolerance) +
+                            core::format_mm(kInternalFaceTolerance, 1) +
                             " of y = 0 (origin at the internal face, as MiniProf writes wheels)"};
 }
 
@@ -125,8 +110,8 @@ void warn_if_header_differs(const RawProfile& raw, const char* what, std::option
                             std::optional<double> header, const char* option,
                             std::vector<std::string>& warnings) {
   if (!set || !header || std::abs(*set - *header) <= 1e-6) return;
-  warnings.push_back(raw.source + ": " + what + " " + mm3(*set) + " as set (" + option +
-                     ") differs from the file header's " + mm3(*header) +
+  warnings.push_back(raw.source + ": " + what + " " + core::format_mm(*set, 3) + " as set (" +
+                     option + ") differs from the file header's " + core::format_mm(*header, 3) +
                      "; the set value is used");
 }
 
@@ -169,12 +154,14 @@ OriginReport place_wheel_origin(RawProfile& raw, const LoadOptions& options,
                          raw.taping_line_distance, "--taping-line-distance", warnings);
   if (report.origin == WheelOrigin::internal_face) {
     report.shift = -distance;
-    report.reason += std::string("; taping line ") + mm3(distance) + " from the internal face (" +
+    report.reason += std::string("; taping line ") + core::format_mm(distance, 3) +
+                     " from the internal face (" +
                      (options.taping_line_distance ? "as set"
                       : raw.taping_line_distance   ? "the file header's"
                                                    : "EN 13715's default") +
                      ")";
-    report.reason += "; moved by " + mm3(report.shift) + " to put the taping line at y = 0";
+    report.reason +=
+        "; moved by " + core::format_mm(report.shift, 3) + " to put the taping line at y = 0";
     for (Point& p : raw.points) p[0] += report.shift;
   }
   return report;

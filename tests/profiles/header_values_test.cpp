@@ -23,15 +23,7 @@ namespace {
 // A value in mm read as m differs from value * 1e-3 by the rounding of that product only.
 constexpr double kConversion = 1e-15;
 
-template <class F>
-std::string refusal(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using testing::refusal;
 
 bool has_note(const RawProfile& raw, const std::string& text) {
   return std::any_of(raw.notes.begin(), raw.notes.end(),

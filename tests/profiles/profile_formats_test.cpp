@@ -121,15 +121,7 @@ std::size_t expect_same_points(const PointList& loaded, const PointList& written
   return compared;
 }
 
-template <class F>
-std::string refusal(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using testing::refusal;
 
 TEST(ProfileFormats, S1002LoadsIdenticallyFromEveryWheelFormat) {
   const auto dir = testing::scratch_dir();

@@ -6,18 +6,18 @@
 
 #include "test_support.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
-#include "wheelwear/core/text.hpp"
 
 namespace wheelwear::profiles {
 
 using core::check_text;
 using core::format_number;
 using core::parse_number;
-using core::write_file_atomically;
 using core::read_text_file;
+using core::write_file_atomically;
 namespace {
 
 using testing::read_text;

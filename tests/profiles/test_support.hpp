@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/raw_profile.hpp"
 
 namespace wheelwear::profiles::testing {
@@ -26,5 +27,16 @@ std::filesystem::path contact_rail_file();
 /// The measured MiniProf wheel and rail (tests/data/measured).
 std::filesystem::path measured_wheel_file();
 std::filesystem::path measured_rail_file();
+
+/// Runs `f` and returns the message of the InputError it throws, or "no error".
+template <class F>
+std::string refusal(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
 
 }  // namespace wheelwear::profiles::testing

@@ -42,16 +42,7 @@ PointList file_points(const std::filesystem::path& path) {
   return out;
 }
 
-// Throws and returns the message (empty if nothing was thrown).
-template <class F>
-std::string refusal(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
+using testing::refusal;
 
 TEST(WheelOrigin, BothOriginsLoadToTheSameProfile) {
   const LoadedProfile back = load("s1002_flange_back.whl", WheelOrigin::automatic);

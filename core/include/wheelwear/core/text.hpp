@@ -34,6 +34,9 @@ std::optional<double> parse_number(std::string_view token);
 /// Shortest text that reads back to exactly `value` (std::to_chars).
 std::string format_number(double value);
 
+/// A length in metres as millimetres with `decimals` places and the unit: "12.3 mm".
+std::string format_mm(double metres, int decimals);
+
 /// Writes `content` to `path` through a temporary file in the same folder and a rename, so an
 /// existing file is either replaced whole or left untouched. Throws InputError on failure.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
