@@ -82,11 +82,12 @@ std::vector<std::string> check_plausibility(const ContactInputs& in) {
 SolvedContact solve_contact(const ContactInputs& in) {
   std::vector<std::string> warnings = check_plausibility(in);
   const profiles::ProfileFileOptions files = in.files.options();
+  // The loaders' warnings (an origin the rule contradicts, a rail without a gauge point or
+  // probably mirrored) belong to this contact: a user sees them here or not at all.
+  profiles::Profile wheel = profiles::wheel_profile(in.wheel, in.wheel_radius, files, &warnings);
+  profiles::Profile rail = profiles::rail_profile(in.rail, in.inclination, files, &warnings);
   SolvedContact out{
-      contactgeom::WheelRailPair(profiles::wheel_profile(in.wheel, in.wheel_radius, files),
-                                 profiles::rail_profile(in.rail, in.inclination, files)),
-      {},
-      std::move(warnings)};
+      contactgeom::WheelRailPair(std::move(wheel), std::move(rail)), {}, std::move(warnings)};
   out.pair.gauge = in.gauge;
   out.pair.back_to_back = in.back_to_back;
   out.pair.wheel_radius = out.pair.wheel.info().nominal_radius;

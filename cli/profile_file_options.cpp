@@ -14,6 +14,9 @@ profiles::ProfileFileOptions ProfileFileArgs::options() const {
   out.origin = *parsed;
   out.taping_line_distance = taping_line_distance;
   out.max_drop_fraction = max_drop;
+  const auto mirror = profiles::gauge_side_mirror(gauge_side);
+  if (!mirror) throw InputError("--gauge-side " + gauge_side + ": must be auto, left or right");
+  out.rail_gauge_side = *mirror;
   return out;
 }
 
@@ -39,6 +42,12 @@ void add_profile_file_options(CLI::App* cmd, ProfileFileArgs& args) {
   cmd->add_option("--max-drop", args.max_drop,
                   "profile files: largest share of points the cleaning may discard (0 ... 1);\n"
                   "merged near-duplicate points do not count")
+      ->capture_default_str();
+  cmd->add_option("--gauge-side", args.gauge_side,
+                  "rail files: where the file has the gauge face on its lateral axis as\n"
+                  "written: left = smaller values, right = larger (MiniProf rails: right),\n"
+                  "auto = the end measured deeper; set it when auto mirrors a rail")
+      ->check(CLI::IsMember({"auto", "left", "right"}))
       ->capture_default_str();
 }
 

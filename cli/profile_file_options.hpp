@@ -19,6 +19,7 @@ struct ProfileFileArgs {
   std::string origin = "auto";
   std::optional<double> taping_line_distance;
   double max_drop = profiles::ProfileFileOptions{}.max_drop_fraction;
+  std::string gauge_side = "auto";
   CLI::Option* origin_option = nullptr;
   CLI::Option* taping_line_distance_option = nullptr;
 
@@ -28,7 +29,7 @@ struct ProfileFileArgs {
   bool wheel_file_option_given() const;
 };
 
-/// Adds --origin, --taping-line-distance and --max-drop to `cmd`.
+/// Adds --origin, --taping-line-distance, --max-drop and --gauge-side to `cmd`.
 void add_profile_file_options(CLI::App* cmd, ProfileFileArgs& args);
 
 }  // namespace wheelwear::cli

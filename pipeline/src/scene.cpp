@@ -193,6 +193,16 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                          [&](const auto& n, const auto& k) {
                            s.rail_file.max_drop_fraction = max_drop(n, k);
                          }},
+                        {"gauge_side",
+                         [&](const auto& n, const auto& k) {
+                           const std::string side = text(n, k);
+                           const auto mirror = profiles::gauge_side_mirror(side);
+                           if (!mirror)
+                             throw InputError(where(n.source(), k) + " = \"" + side +
+                                              "\": use auto, left (the gauge face at the file's "
+                                              "smaller lateral values) or right (larger)");
+                           s.rail_file.rail_gauge_side = *mirror;
+                         }},
                         {"inclination",
                          [&](const auto& n, const auto& k) {
                            s.rail_inclination = std::atan(

@@ -36,16 +36,17 @@ std::optional<std::string> gauge_point_warning(const Profile& rail, const RawPro
   }
   const double reach = rail.position(0.0)[1] - top_of_rail(rail).point[1];
   const int line = raw.lines.empty() ? 0 : raw.lines.front();
-  std::string message = raw.source + (line > 0 ? ":" + std::to_string(line) : std::string()) +
-                        ": no gauge point: the gauge side (the profile's -y end" +
-                        (orientation.mirrored_y ? ", the file's larger lateral values"
-                                                : ", the file's smaller lateral values") +
-                        ") reaches " + core::format_mm(reach, 1) +
-                        " below the top of rail, less than the " +
-                        core::format_mm(track.gauge_measuring_depth, 1) +
-                        " where the gauge is measured, so `contact` cannot place this rail. If "
-                        "the gauge face is at the file's other end, set the gauge side "
-                        "(profile --gauge-side, LoadOptions::orientation.mirror_y)";
+  std::string message =
+      raw.source + (line > 0 ? ":" + std::to_string(line) : std::string()) +
+      ": no gauge point: the gauge side (the profile's -y end" +
+      (orientation.mirrored_y ? ", the file's larger lateral values"
+                              : ", the file's smaller lateral values") +
+      ") reaches " + core::format_mm(reach, 1) + " below the top of rail, less than the " +
+      core::format_mm(track.gauge_measuring_depth, 1) +
+      " where the gauge is measured, so `contact` cannot place this rail. If "
+      "the gauge face is at the file's other end, set the gauge side "
+      "(--gauge-side of profile, contact and wear, the scene's [rail] gauge_side, "
+      "LoadOptions::orientation.mirror_y)";
   return message;
 }
 
@@ -64,8 +65,8 @@ std::optional<std::string> mirrored_rail_warning(const Profile& rail, const RawP
           << "), but rails are canted towards the track centre: the gauge face is probably at "
           << "the file's other end (" << (orientation.mirrored_y ? "smaller" : "larger")
           << " lateral values; the automatic rule takes the end measured deeper). Set the gauge "
-          << "side if so (profile --gauge-side " << (orientation.mirrored_y ? "left" : "right")
-          << ", LoadOptions::orientation.mirror_y)";
+          << "side if so (--gauge-side " << (orientation.mirrored_y ? "left" : "right")
+          << ", the scene's [rail] gauge_side, LoadOptions::orientation.mirror_y)";
   return message.str();
 }
 

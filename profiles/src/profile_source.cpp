@@ -45,11 +45,25 @@ LoadOptions ProfileFileOptions::load_options(Body body) const {
   options.origin = origin;
   options.taping_line_distance = taping_line_distance;
   options.cleaning.max_drop_fraction = max_drop_fraction;
+  if (body == Body::rail) options.orientation.mirror_y = rail_gauge_side;
   return options;
 }
 
+namespace {
+
+profiles::Profile loaded(const std::string& spec, const LoadOptions& options,
+                         std::vector<std::string>* warnings) {
+  LoadedProfile file = profiles::load_profile(spec, options);
+  if (warnings)
+    warnings->insert(warnings->end(), file.cleaning.warnings.begin(), file.cleaning.warnings.end());
+  return std::move(file.profile);
+}
+
+}  // namespace
+
 profiles::Profile wheel_profile(const std::string& spec, std::optional<double> radius,
-                                const ProfileFileOptions& files) {
+                                const ProfileFileOptions& files,
+                                std::vector<std::string>* warnings) {
   if (radius)
     require(*radius > 0.1 && *radius < 2.0, "wheel radius", *radius, "must lie in 0.1 ... 2 m");
   if (spec == "S1002") {
@@ -60,11 +74,12 @@ profiles::Profile wheel_profile(const std::string& spec, std::optional<double> r
   profiles::LoadOptions options = files.load_options(Body::wheel);
   options.nominal_radius = radius;
   options.fallback_nominal_radius = kDefaultWheelRadius;
-  return profiles::load_profile(spec, options).profile;
+  return loaded(spec, options, warnings);
 }
 
 profiles::Profile rail_profile(const std::string& spec, std::optional<double> inclination,
-                               const ProfileFileOptions& files) {
+                               const ProfileFileOptions& files,
+                               std::vector<std::string>* warnings) {
   const double angle = inclination.value_or(default_inclination(spec));
   require(std::isfinite(angle) && std::abs(angle) <= 0.1, "rail inclination", angle,
           "must lie in -0.1 ... 0.1 rad (1:40 is 0.025, 1:20 is 0.05)");
@@ -75,8 +90,7 @@ profiles::Profile rail_profile(const std::string& spec, std::optional<double> in
     options.inclination = angle;
     return profiles::rail_60e1(options);
   }
-  const profiles::Profile rail =
-      profiles::load_profile(spec, files.load_options(Body::rail)).profile;
+  const profiles::Profile rail = loaded(spec, files.load_options(Body::rail), warnings);
   return angle == 0.0 ? rail : canted(rail, angle);
 }
 

@@ -44,7 +44,7 @@ TEST_F(SceneTest, ReadsEveryKeyInSiUnits) {
       "title = \"t\"\n"
       "[wheel]\nprofile = \"S1002\"\nradius_m = 0.45\norigin = \"internal-face\"\n"
       "taping_line_distance_m = 0.0715\nmax_drop = 0.3\n"
-      "[rail]\nprofile = \"60E1\"\ninclination = 0.05\nmax_drop = 0.1\n"
+      "[rail]\nprofile = \"60E1\"\ninclination = 0.05\nmax_drop = 0.1\ngauge_side = \"right\"\n"
       "[track]\ngauge_m = 1.432\nback_to_back_m = 1.358\n"
       "[material]\nyoungs_modulus_Pa = 210e9\npoisson = 0.3\n"
       "[contact]\nmodel = \"eqe-shifted\"\nfriction = 0.4\ngrid_nx = 12\ngrid_ny = 14\n"
@@ -61,6 +61,7 @@ TEST_F(SceneTest, ReadsEveryKeyInSiUnits) {
   EXPECT_DOUBLE_EQ(s.wheel_file.taping_line_distance.value(), 0.0715);
   EXPECT_DOUBLE_EQ(s.wheel_file.max_drop_fraction, 0.3);
   EXPECT_DOUBLE_EQ(s.rail_file.max_drop_fraction, 0.1);
+  EXPECT_EQ(s.rail_file.rail_gauge_side, profiles::Mirror::flip);
   ASSERT_TRUE(s.rail_inclination.has_value());
   EXPECT_NEAR(*s.rail_inclination, std::atan(0.05), 1e-15);
   EXPECT_DOUBLE_EQ(s.gauge, 1.432);
@@ -231,6 +232,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"TapingLineInMillimetres",
                  "[wheel]\ntaping_line_distance_m = 70\n" + std::string(kState),
                  "wheel.taping_line_distance_m = 70"},
+        BadScene{"UnknownGaugeSide", "[rail]\ngauge_side = \"inside\"\n" + std::string(kState),
+                 "rail.gauge_side = \"inside\": use auto, left"},
         BadScene{"MaxDropAbove1", "[rail]\nmax_drop = 20\n" + std::string(kState),
                  "rail.max_drop = 20"},
         BadScene{"NegativeFriction", "[contact]\nfriction = -0.1\n" + std::string(kState),

@@ -217,7 +217,7 @@ TEST(ProfileCommand, TheGaugeSideSetsAMirroredSwitchRailRight) {
   const CliRun automatic = run("--rail " + quoted(path) + " --json");
   ASSERT_EQ(automatic.status, 0) << automatic.err;
   EXPECT_NEAR(*json_number(automatic.out, "inclination"), -incl, 1e-3);
-  EXPECT_TRUE(has(automatic.out, "(profile --gauge-side right, ")) << automatic.out;
+  EXPECT_TRUE(has(automatic.out, "(--gauge-side right, ")) << automatic.out;
   const CliRun right = run("--rail " + quoted(path) + " --gauge-side right --json");
   ASSERT_EQ(right.status, 0) << right.err;
   EXPECT_NEAR(*json_number(right.out, "inclination"), incl, 1e-3);

@@ -167,8 +167,8 @@ TEST(RealRailFiles, AMirroredSwitchRailIsWarnedOfAndSetRightByTheGaugeSide) {
                 ": the field side lies lower than the gauge side (estimated inclination -0.0248 "
                 "rad, about 1:40), but rails are canted towards the track centre: the gauge face "
                 "is probably at the file's other end (larger lateral values; the automatic rule "
-                "takes the end measured deeper). Set the gauge side if so (profile --gauge-side "
-                "right, LoadOptions::orientation.mirror_y)");
+                "takes the end measured deeper). Set the gauge side if so (--gauge-side right, the "
+                "scene's [rail] gauge_side, LoadOptions::orientation.mirror_y)");
 
   LoadOptions right;
   right.orientation.mirror_y = *gauge_side_mirror("right");
@@ -200,13 +200,14 @@ TEST(RealRailFiles, ARailWithoutAGaugePointIsWarnedOf) {
   EXPECT_FALSE(estimate_inclination(rail.profile));
   // Its last row, line 78, is the gauge end: 9.6 mm below the top (Y = 0).
   ASSERT_EQ(rail.cleaning.warnings.size(), 1u);
-  EXPECT_EQ(rail.cleaning.warnings.front(),
-            path.string() +
-                ":78: no gauge point: the gauge side (the profile's -y end, the file's larger "
-                "lateral values) reaches 9.6 mm below the top of rail, less than the 14.0 mm "
-                "where the gauge is measured, so `contact` cannot place this rail. If the gauge "
-                "face is at the file's other end, set the gauge side (profile --gauge-side, "
-                "LoadOptions::orientation.mirror_y)");
+  EXPECT_EQ(
+      rail.cleaning.warnings.front(),
+      path.string() +
+          ":78: no gauge point: the gauge side (the profile's -y end, the file's larger "
+          "lateral values) reaches 9.6 mm below the top of rail, less than the 14.0 mm "
+          "where the gauge is measured, so `contact` cannot place this rail. If the gauge "
+          "face is at the file's other end, set the gauge side (--gauge-side of profile, "
+          "contact and wear, the scene's [rail] gauge_side, LoadOptions::orientation.mirror_y)");
 }
 
 TEST(RealRailFiles, TheInclinationEstimateFindsTheCant) {

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "wheelwear/profiles/profile.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
@@ -17,6 +18,9 @@ struct ProfileFileOptions {
   /// file's header where it states one, else 70 mm (EN 13715).
   std::optional<double> taping_line_distance;
   double max_drop_fraction = 0.2;  ///< share of points cleaning may discard (CleaningOptions)
+  /// Rails: where the file has its gauge face on its lateral axis (OrientationOptions::mirror_y:
+  /// automatic, keep = the smaller values, flip = the larger ones).
+  Mirror rail_gauge_side = Mirror::automatic;
 
   /// LoadOptions for a file of `body`, with these choices.
   LoadOptions load_options(Body body) const;
@@ -28,14 +32,18 @@ inline constexpr double kDefaultWheelRadius = 0.46;
 /// "S1002" (generated, EN 13715 defaults) or a wheel profile file. The nominal radius (the
 /// rolling radius at the taping line, Profile::info().nominal_radius) is `radius` where given,
 /// else half the diameter a file's header states, else kDefaultWheelRadius.
+/// A file's loading warnings (LoadedProfile::cleaning.warnings) are appended to `warnings`
+/// where given.
 profiles::Profile wheel_profile(const std::string& spec, std::optional<double> radius,
-                                const ProfileFileOptions& files = {});
+                                const ProfileFileOptions& files = {},
+                                std::vector<std::string>* warnings = nullptr);
 
 /// "60E1" (generated, EN 15302 arcs) or a profile file, inclined by `inclination` [rad] towards
 /// the track centre. Without an inclination the built-in rail is inclined 1:40 and a file is
 /// taken as it is (rail files usually carry their inclination).
 profiles::Profile rail_profile(const std::string& spec, std::optional<double> inclination,
-                               const ProfileFileOptions& files = {});
+                               const ProfileFileOptions& files = {},
+                               std::vector<std::string>* warnings = nullptr);
 
 /// Default inclination applied to a rail spec: atan(1/40) for the built-in 60E1, 0 for files.
 double default_inclination(const std::string& spec);
