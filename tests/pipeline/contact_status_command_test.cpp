@@ -64,5 +64,21 @@ TEST(ContactStatusCommand, ContactPastTheFlangeHasItsOwnStatus) {
   }
 }
 
+// A rail the automatic rule mirrors (a switch rail measured deeper on its field side) is warned of
+// where the contact is computed, and --gauge-side sets it right.
+TEST(ContactStatusCommand, TheLoadersWarningsReachTheContactAndGaugeSideFixesTheRail) {
+  const std::string rail = testing::test_data("profiles/switch_rail_field_side_deeper.ban");
+  const std::string args = "contact --rail " + rail + " --incl 0 --dy 0 --load 55000 --json";
+  const auto automatic = run_wheelwear(args);
+  ASSERT_EQ(automatic.exit_code, 0) << automatic.err;
+  const std::string warning = "the field side lies lower than the gauge side";
+  EXPECT_NE(automatic.err.find(warning), std::string::npos) << automatic.err;
+  EXPECT_NE(automatic.out.find(warning), std::string::npos) << automatic.out;
+  const auto set = run_wheelwear(args + " --gauge-side right");
+  ASSERT_EQ(set.exit_code, 0) << set.err;
+  EXPECT_EQ(set.err.find(warning), std::string::npos) << set.err;
+  EXPECT_NE(set.out.find("\"warnings\": []"), std::string::npos) << set.out;
+}
+
 }  // namespace
 }  // namespace wheelwear
