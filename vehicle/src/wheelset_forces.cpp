@@ -1,0 +1,140 @@
+#include "wheelwear/vehicle/wheelset_forces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "wheelwear/core/input_error.hpp"
+
+namespace wheelwear::vehicle {
+
+namespace {
+
+// Q of a wheel must meet its load to this relative tolerance; the contact's vertical force is
+// corrected by the creep forces' vertical part until it does.
+constexpr double kLoadTolerance = 1e-9;
+constexpr int kMaxLoadIterations = 30;
+
+void validate(const RunningConditions& running) {
+  require(std::isfinite(running.speed) && running.speed > 0.0, "speed", running.speed,
+          "the forward speed must be positive (m/s)");
+  require(std::isfinite(running.curve_radius) &&
+              (running.curve_radius == 0.0 || std::abs(running.curve_radius) >= 10.0),
+          "curve radius", running.curve_radius, "must be 0 (tangent track) or |R| >= 10 m");
+  require(std::isfinite(running.friction) && running.friction > 0.0, "friction", running.friction,
+          "must be positive");
+}
+
+// The patches of one wheel solved at the wheel's motion, summed into the wheel's forces.
+WheelForces wheel_forces(const WheelsetModel& model, const contactgeom::WheelRailContact& contact,
+                         const contactgeom::WheelsetPose& pose,
+                         const contactgeom::WheelsetMotion& motion, double nominal_radius,
+                         double friction) {
+  WheelForces w;
+  w.status = contact.status;
+  if (contact.patches.empty()) return w;
+  double largest = -1.0;
+  for (const contactgeom::WheelRailPatch& patch : contact.patches) {
+    PatchForces p;
+    p.normal_force = patch.normal_force;
+    p.contact_angle = patch.contact_angle;
+    p.rolling_radius = patch.rolling_radius;
+    p.creepages = contactgeom::kinematic_creepages(patch, pose, motion, nominal_radius);
+    const contactgeom::Sdec region =
+        model.ellipse_at_O ? contactgeom::Sdec{patch.sdec.a, patch.sdec.b, 0.0} : patch.sdec;
+    const tangential::TangentialSolution s =
+        tangential::solve_patch(model.method, region, p.creepages, {patch.normal_force, friction},
+                                model.material, model.solve);
+    p.Fx = s.forces.Fx;
+    p.Fy = s.forces.Fy;
+    p.Mz = s.forces.Mz.value_or(0.0);
+    const double c = std::cos(p.contact_angle), sn = std::sin(p.contact_angle);
+    w.Q += patch.vertical_force - p.Fy * sn;
+    w.Y += patch.lateral_force + p.Fy * c;
+    w.Fx += p.Fx;
+    w.Fy += p.Fy * c;
+    w.N += p.normal_force;
+    w.torque += p.Fx * p.rolling_radius - p.Mz * sn;
+    if (p.normal_force > largest) {
+      largest = p.normal_force;
+      w.contact_angle = p.contact_angle;
+    }
+    w.patches.push_back(p);
+  }
+  return w;
+}
+
+bool carries_load(contactgeom::WheelRailStatus status) {
+  using contactgeom::WheelRailStatus;
+  return status == WheelRailStatus::ok || status == WheelRailStatus::load_jump ||
+         status == WheelRailStatus::flange_climb || status == WheelRailStatus::past_flange;
+}
+
+}  // namespace
+
+contactgeom::WheelsetMotion wheel_motion(const WheelsetMotionState& state,
+                                         const RunningConditions& running, int side,
+                                         double lateral_arm) {
+  // The wheelset turns at -V/R (counter-clockwise +: a right-hand curve turns clockwise) plus
+  // its own yaw rate; a point at lateral position y moves forward at V - (turn rate) y.
+  const double turn =
+      (running.curve_radius == 0.0 ? 0.0 : -running.speed / running.curve_radius) + state.yaw_rate;
+  const double sign = side == 0 ? 1.0 : -1.0;  // the right wheel is mirrored
+  contactgeom::WheelsetMotion motion;
+  motion.speed = running.speed;
+  motion.lateral_velocity = sign * state.lateral_velocity;
+  motion.yaw_rate = -sign * turn;  // V_w = V + yaw_rate * arm for the wheel at +-arm
+  motion.angular_velocity = state.spin;
+  motion.lateral_arm = lateral_arm;
+  return motion;
+}
+
+WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionState& state,
+                               double load_left, double load_right,
+                               const RunningConditions& running) {
+  validate(running);
+  require(std::isfinite(state.spin) && state.spin > 0.0, "spin", state.spin,
+          "the axle's angular velocity must be positive (rad/s)");
+  require(std::isfinite(load_left) && load_left > 0.0, "left wheel load", load_left,
+          "must be positive (N)");
+  require(std::isfinite(load_right) && load_right > 0.0, "right wheel load", load_right,
+          "must be positive (N)");
+  const std::array<double, 2> loads{load_left, load_right};
+  std::array<double, 2> solved_for = loads;  // the vertical force the contact is solved for
+  WheelsetForces out;
+  for (int iteration = 0; iteration < kMaxLoadIterations; ++iteration) {
+    contactgeom::WheelsetState geometry;
+    geometry.dy = state.dy;
+    geometry.yaw = state.yaw;
+    geometry.vertical_force_left = solved_for[0];
+    geometry.vertical_force_right = solved_for[1];
+    out.contact = contactgeom::solve_wheelset(model.track, geometry, model.contact);
+    ++out.load_iterations;
+    bool met = true;
+    for (int side = 0; side < 2; ++side) {
+      const auto k = static_cast<std::size_t>(side);
+      const contactgeom::WheelRailContact& c = side == 0 ? out.contact.left : out.contact.right;
+      const contactgeom::WheelsetPose& pose =
+          side == 0 ? out.contact.left_pose : out.contact.right_pose;
+      const contactgeom::WheelRailPair& pair = side == 0 ? model.track.left : model.track.right;
+      out.wheels[k] =
+          wheel_forces(model, c, pose, wheel_motion(state, running, side, model.lateral_arm),
+                       pair.wheel_radius, running.friction);
+      if (!carries_load(c.status)) continue;
+      const double miss = loads[k] - out.wheels[k].Q;
+      if (std::abs(miss) > kLoadTolerance * loads[k]) {
+        met = false;
+        solved_for[k] = std::max(0.01 * loads[k], solved_for[k] + miss);
+      }
+    }
+    if (met) break;
+  }
+  const WheelForces& left = out.wheels[0];
+  const WheelForces& right = out.wheels[1];
+  out.lateral = right.Y - left.Y;
+  out.yaw_moment = model.lateral_arm * (right.Fx - left.Fx);
+  out.Fx_axle = left.Fx + right.Fx;
+  out.axle_torque = left.torque + right.torque;
+  return out;
+}
+
+}  // namespace wheelwear::vehicle
