@@ -158,11 +158,18 @@ CropReport crop_rail(RawProfile& raw, double depth, const CleaningOptions& optio
   if (first == n) return report;  // nothing above the depth: leave it to validation
   std::size_t last = n - 1;
   while (deep(last)) --last;
+  // The deep point next to the head is kept only where the measurement runs on through the
+  // depth; one far below it lies across a gap in the data, which it would only carry inwards.
+  const auto reaches = [&](std::size_t i) {
+    return pts[i][1] - top <= depth + kCropNeighbourReach;
+  };
+  const std::size_t keep_first = first > 0 && reaches(first - 1) ? 1 : 0;
+  const std::size_t keep_last = last + 1 < n && reaches(last + 1) ? 1 : 0;
   std::vector<bool> drop(n, false);
-  for (std::size_t i = 0; i + 1 < first; ++i) drop[i] = true;
-  for (std::size_t i = last + 2; i < n; ++i) drop[i] = true;
-  report.gauge_side = first > 1 ? first - 1 : 0;
-  report.field_side = last + 2 < n ? n - last - 2 : 0;
+  for (std::size_t i = 0; i + keep_first < first; ++i) drop[i] = true;
+  for (std::size_t i = last + 1 + keep_last; i < n; ++i) drop[i] = true;
+  report.gauge_side = first - keep_first;
+  report.field_side = n - 1 - last - keep_last;
   // Line ranges in file order: orientation may have reversed the rows.
   const auto range = [&](std::size_t from, std::size_t to) {  // points [from, to)
     std::pair<int, int> lines{0, 0};

@@ -159,7 +159,7 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
   bool in_data = false;
   std::vector<std::vector<double>> rows;
   std::vector<std::vector<std::string>> row_tokens;
-  std::vector<int> row_lines, comment_lines;
+  std::vector<int> row_lines, comment_lines, text_lines;
   std::string column_def = "X,Y";
   std::optional<double> declared_points;
   int declared_line = 0;
@@ -240,6 +240,21 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
       }
       continue;
     }
+    if (in_data && !rows.empty() && tokens.size() > rows.front().size()) {
+      // A full row of numbers followed by words without a comment character ("add point to
+      // extend gauge face" in a file of CONTACT's test bank): CONTACT reads the numbers and
+      // ignores the rest, and so does this reader, with a warning naming the lines.
+      const std::size_t width = rows.front().size();
+      std::vector<std::string> head(tokens.begin(), tokens.begin() + static_cast<long>(width));
+      const auto first = static_cast<unsigned char>(tokens[width].front());
+      if (auto numbers = numbers_of(head); numbers && std::isalpha(first)) {
+        text_lines.push_back(number);
+        rows.push_back(std::move(*numbers));
+        row_tokens.push_back(std::move(head));
+        row_lines.push_back(number);
+        continue;
+      }
+    }
     if (!in_data) {
       if (old_layout) continue;  // free header text of the older layout
       throw InputError(where() + ": \"" + quote_line(line) +
@@ -275,6 +290,13 @@ RawProfile parse_miniprof(std::string_view text, std::string_view source,
   if (!comment_lines.empty())
     raw.add_repair("trailing_comments", comment_lines,
                    trailing_comment_text(comment_lines.size(), "\", %, ! or #"));
+  if (!text_lines.empty())
+    raw.add_repair("trailing_text", text_lines,
+                   std::to_string(text_lines.size()) +
+                       " point rows carry words after their numbers without a comment character; "
+                       "the words are ignored (as CONTACT does): check that these points belong "
+                       "to the measurement",
+                   true);
   for (std::size_t r = 0; r < rows.size(); ++r) {
     raw.points.emplace_back(rows[r][xi] * 1e-3, rows[r][yi] * 1e-3);
     raw.written.push_back({row_lines[r], row_tokens[r][xi], row_tokens[r][yi]});

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <string>
 
@@ -60,6 +61,42 @@ TEST(RealRailFiles, TrailingCommentsOnRowsAreReadAsComments) {
   EXPECT_TRUE(rail.cleaning.warnings.empty());
   EXPECT_NE(rail.cleaning.summary().find("; read: trailing_comments 4"), std::string::npos)
       << rail.cleaning.summary();
+}
+
+// Words after a full row without a comment character (one of CONTACT's measured rails ends with
+// "add point to extend gauge face"): the numbers are read as CONTACT reads them, with a warning.
+TEST(RealRailFiles, WordsAfterARowWithoutACommentCharacterAreReadWithAWarning) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "wheelwear_rail_words.ban";
+  {
+    std::ifstream in(rail_file("rail_base.ban"));
+    std::ofstream out(path);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number)
+      out << line << (number == 42 ? "      add point to extend gauge face" : "") << '\n';
+  }
+  const LoadedProfile rail = load_profile(path);
+  EXPECT_GT(expect_same_profile(rail, load_profile(rail_file("rail_base.ban")), 0), 38u);
+  ASSERT_EQ(rail.cleaning.reading.size(), 1u);
+  const ReadRepair& repair = rail.cleaning.reading.front();
+  EXPECT_EQ(repair.name, "trailing_text");
+  EXPECT_EQ(repair.lines, (std::vector<int>{42}));
+  EXPECT_TRUE(repair.warning);
+  ASSERT_EQ(rail.cleaning.warnings.size(), 1u);
+  EXPECT_NE(rail.cleaning.warnings[0].find(":42: 1 point rows carry words after their numbers"),
+            std::string::npos)
+      << rail.cleaning.warnings[0];
+  // Words that do not follow a full row are still refused.
+  {
+    std::ofstream out(path);
+    out << "XYPoints=2\nColumnDef=X,Y\n\n1.0 2.0\n3.0 add\n";
+  }
+  LoadOptions rail_file_options;
+  rail_file_options.read.body = Body::rail;
+  EXPECT_NE(
+      error_of([&] { load_profile(path, rail_file_options); }).find("is not a row of numbers"),
+      std::string::npos);
+  std::filesystem::remove(path);
 }
 
 TEST(RealRailFiles, APointCountOffByOneIsAcceptedWithAWarning) {
@@ -146,6 +183,31 @@ TEST(RealRailFiles, ADeepUndercutIsCroppedAwayAndReported) {
                 "side 2, lines 55 ... 56; down to 35.4 mm))");
 }
 
+// A measured rail whose gauge face has a gap in the data below the gauge point (a roller
+// measured in one MiniProf file jumps from 17 to 30 mm deep): rail_deep_undercut.ban with
+// rows 43 ... 47 (25.4 ... 28.5 mm deep) removed, so its deep rows start 30 mm down, 4.6 mm
+// below the last row above 25 mm. The crop drops them all (the deepest kept would lie across
+// the gap, 2 mm or more below the depth) and the rail loads as rail_base.ban without its row 43.
+TEST(RealRailFiles, ACropDropsDeepPointsBeyondAGapInTheData) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / "wheelwear_rail_deep_gap.ban";
+  {
+    std::ifstream in(rail_file("rail_deep_undercut.ban"));
+    std::ofstream out(path);
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number)
+      if (number < 43 || number > 47) out << (number == 3 ? "XYPoints=46" : line) << '\n';
+  }
+  const LoadedProfile rail = load_profile(path);
+  EXPECT_EQ(rail.points_read, 46u);
+  const CropReport& crop = rail.cleaning.crop;
+  EXPECT_EQ(crop.gauge_side, 9u);  // every row 30 mm deep and more
+  EXPECT_EQ(crop.gauge_lines, std::make_pair(43, 51));
+  EXPECT_NEAR(gauge_point(rail.profile).point[1] - top_of_rail(rail.profile).point[1], 0.014,
+              1e-12);  // the profile still reaches the gauge point
+  std::filesystem::remove(path);
+}
+
 TEST(RealRailFiles, CroppingEveryRailIsAnOptionAndTheDepthIsChecked) {
   // The base rail is accepted whole, so by default nothing is cropped; cropping it at 20 mm
   // removes the rows deeper than 20.21 mm below Y = 0: lines 42 and 43 (23.92, 25.42) but the
@@ -209,7 +271,7 @@ TEST(RealRailFiles, MessagesQuoteTheWholeLineAndNameLinesInFileOrder) {
       error_of([&] { parse_miniprof("XYPoints=2\n\n1 2\n" + row + "\n", "long.ban", ".ban"); }),
       "long.ban:4: \"" + row +
           "\" is not a row of numbers (text after \", %, ! or # is a comment)");
-  const std::string very_long = "1 2 " + std::string(300, 'x');
+  const std::string very_long = "1 2 -" + std::string(300, 'x');  // not words: refused
   EXPECT_EQ(error_of([&] {
               parse_miniprof("XYPoints=2\n\n1 2\n" + very_long + "\n", "long.ban", ".ban");
             }),

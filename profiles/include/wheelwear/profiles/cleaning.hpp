@@ -119,9 +119,15 @@ CleaningReport clean(RawProfile& raw, Body body, const CleaningOptions& options 
 /// Throws InputError unless `depth` [m] is 0 or in [0.014, 0.2] (crop_rail).
 void check_crop_depth(double depth);
 
+/// A crop keeps the deep point next to the head only if it lies within this [m] below the crop
+/// depth: the measurement runs on through the depth (a point much deeper lies across a gap in the
+/// data, 12 mm in one measured rail, and would be refused as one).
+inline constexpr double kCropNeighbourReach = 2e-3;
+
 /// Crops a rail (points oriented, z down) to the part a wheel can touch: from each end, the run
 /// of points deeper than `depth` below the top of rail is removed but for its point nearest the
-/// head, so that the profile still reaches `depth`. Points that dip below it inside the profile
+/// head where that lies within kCropNeighbourReach below the depth, so that the profile still
+/// reaches `depth` where the data allow. Points that dip below it inside the profile
 /// are left to the cleaning. The top is the highest point within the cleaning's bounding box
 /// around the median point, so a stray point cannot move it. depth 0 crops nothing. Throws
 /// InputError unless depth is 0 or in [0.014, 0.2] m (the gauge point lies 14 mm deep).
