@@ -246,6 +246,9 @@ void run_profile(const ProfileArgs& args) {
       if (gauge) out.add("gauge_point_y", gauge->point[0]).add("gauge_point_z", gauge->point[1]);
       if (inclination) out.add("inclination", inclination->angle);
       if (cleaning.crop.cropped() > 0) out.add("crop_depth", cleaning.crop.depth);
+      if (cleaning.lip.hidden > 0)
+        out.add("lip_shadowed_points", static_cast<int>(cleaning.lip.hidden))
+            .add("lip", cleaning.lip.summary());
     }
     std::cout << out.str() << '\n';
     return;
@@ -262,6 +265,10 @@ void run_profile(const ProfileArgs& args) {
     if (!cleaning.crop.reason.empty())
       std::printf("crop       needed: whole, the profile was refused: %s\n",
                   cleaning.crop.reason.c_str());
+  }
+  if (cleaning.lip.hidden > 0) {
+    std::printf("lip        %s\n", cleaning.lip.summary().c_str());
+    std::printf("lip        needed: %s\n", cleaning.lip.reason.c_str());
   }
   for (const auto& kink : cleaning.kinks)
     std::printf("kink       line %d at (%.3f, %.3f) mm: turns %.0f deg\n", kink.line,

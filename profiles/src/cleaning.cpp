@@ -114,6 +114,7 @@ std::string CleaningReport::summary() const {
   if (!kinks.empty()) out << "; " << kinks.size() << (kinks.size() == 1 ? " kink" : " kinks");
   if (crop.cropped() > 0)
     out << "; cropped " << crop.cropped() << " below " << format_mm(crop.depth);
+  if (lip.hidden > 0) out << "; shadowed " << lip.hidden << " under a lip";
   std::string read;
   for (const ReadRepair& repair : reading)
     read += (read.empty() ? "" : ", ") + repair.name + " " + std::to_string(repair.count);
@@ -183,6 +184,97 @@ CropReport crop_rail(RawProfile& raw, double depth, const CleaningOptions& optio
   for (std::size_t i = 0; i < n; ++i)
     if (drop[i]) report.deepest = std::max(report.deepest, pts[i][1] - top);
   raw.erase_if(drop);
+  return report;
+}
+
+std::string LipReport::summary() const {
+  if (hidden == 0) return "";
+  std::ostringstream out;
+  out << "shadowed " << hidden << " points under the head's lips";
+  if (lines.first > 0) out << " (lines " << lines.first << " ... " << lines.second << ")";
+  out << " from " << core::format_mm(edge_depth, 1) << " below the top of rail, down to "
+      << core::format_mm(deepest, 1)
+      << ": a face below its lip's edge is taken as vertical, as a wheel's flange meets it";
+  if (added > 0) out << " (" << added << " points added)";
+  return out.str();
+}
+
+namespace {
+
+// The points of one side of the head hidden under a lip: walking away from the top (towards
+// index 0 for the gauge side, `step` -1, or the last index for the field side, +1), each point
+// that lies behind the outermost one so far. Returns the outermost point's index (the edge).
+std::size_t hide_under_lip(const PointList& pts, std::size_t top, int step,
+                           std::vector<bool>& hidden) {
+  std::size_t edge = top;
+  const double outward = step < 0 ? -1.0 : 1.0;  // the gauge side lies at -y
+  for (auto i = static_cast<long>(top) + step; i >= 0 && i < static_cast<long>(pts.size());
+       i += step) {
+    const auto k = static_cast<std::size_t>(i);
+    if (outward * (pts[k][0] - pts[edge][0]) >= 0.0)
+      edge = k;
+    else
+      hidden[k] = true;
+  }
+  return edge;
+}
+
+// Vertical points every 0.5 mm below `edge` down to z `bottom`, from the edge downwards.
+PointList vertical_face(const Point& edge, double bottom) {
+  constexpr double kSpacing = 0.5e-3;
+  PointList face;
+  for (double z = edge[1] + kSpacing; z < bottom + 1e-12; z += kSpacing)
+    face.emplace_back(edge[0], z);
+  return face;
+}
+
+}  // namespace
+
+LipReport shadow_lip(RawProfile& raw) {
+  LipReport report;
+  auto& pts = raw.points;
+  if (pts.size() < 3) return report;
+  if (raw.lines.size() != pts.size()) raw.lines.assign(pts.size(), 0);
+  std::size_t top = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (pts[i][1] < pts[top][1]) top = i;
+  const double top_z = pts[top][1];
+  std::vector<bool> hidden(pts.size(), false);
+  const Point gauge_edge = pts[hide_under_lip(pts, top, -1, hidden)];
+  const Point field_edge = pts[hide_under_lip(pts, top, +1, hidden)];
+  std::vector<int> hidden_lines;
+  double gauge_deepest = 0.0, field_deepest = 0.0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (!hidden[i]) continue;
+    ++report.hidden;
+    if (raw.lines[i] > 0) hidden_lines.push_back(raw.lines[i]);
+    double& deepest = i < top ? gauge_deepest : field_deepest;
+    deepest = std::max(deepest, pts[i][1] - top_z);
+  }
+  if (report.hidden == 0) return report;
+  if (!hidden_lines.empty())
+    report.lines = {*std::min_element(hidden_lines.begin(), hidden_lines.end()),
+                    *std::max_element(hidden_lines.begin(), hidden_lines.end())};
+  report.deepest = std::max(gauge_deepest, field_deepest);
+  report.edge_depth = (gauge_deepest > 0.0 ? gauge_edge : field_edge)[1] - top_z;
+  const bool gauge_ends_hidden = hidden.front();
+  const bool field_ends_hidden = hidden.back();
+  raw.erase_if(hidden);
+  // Where a side ends under its lip, its face continues vertically below the edge (deepest
+  // first at the gauge end, which runs towards index 0).
+  if (gauge_ends_hidden) {
+    PointList face = vertical_face(gauge_edge, top_z + gauge_deepest);
+    std::reverse(face.begin(), face.end());
+    report.added += face.size();
+    pts.insert(pts.begin(), face.begin(), face.end());
+    raw.lines.insert(raw.lines.begin(), face.size(), 0);
+  }
+  if (field_ends_hidden) {
+    const PointList face = vertical_face(field_edge, top_z + field_deepest);
+    report.added += face.size();
+    pts.insert(pts.end(), face.begin(), face.end());
+    raw.lines.insert(raw.lines.end(), face.size(), 0);
+  }
   return report;
 }
 

@@ -206,18 +206,40 @@ LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options) {
         cleaning = clean_and_check(whole);
         raw = std::move(whole);
       } catch (const InputError& refused) {
+        // Cropped to what a wheel can touch, and then, if still refused, with the underside of
+        // a lip shadowed (cleaning.hpp): the first that passes is taken.
         CropReport crop = crop_rail(raw, options.crop_depth, options.cleaning);
-        if (crop.cropped() == 0) throw;
         crop.reason = refused.what();
-        try {
-          cleaning = clean_and_check(raw);
-        } catch (const InputError& again) {
-          if (crop.reason == again.what())
-            throw InputError(crop.reason + " (also after " + crop.summary() + ")");
-          throw InputError(std::string(again.what()) + " (after " + crop.summary() +
-                           ", needed because the whole profile was refused: " + crop.reason + ")");
+        std::string error = refused.what();
+        if (crop.cropped() > 0) {
+          RawProfile cropped = raw;
+          try {
+            cleaning = clean_and_check(cropped);
+            raw = std::move(cropped);
+            cleaning.crop = crop;
+            error.clear();
+          } catch (const InputError& again) {
+            error = crop.reason == again.what()
+                        ? crop.reason + " (also after " + crop.summary() + ")"
+                        : std::string(again.what()) + " (after " + crop.summary() +
+                              ", needed because the whole profile was refused: " + crop.reason +
+                              ")";
+          }
         }
-        cleaning.crop = crop;
+        if (!error.empty()) {
+          RawProfile shadowed = raw;
+          LipReport lip = shadow_lip(shadowed);
+          lip.reason = error;
+          if (lip.hidden == 0) throw InputError(error);
+          try {
+            cleaning = clean_and_check(shadowed);
+          } catch (const InputError&) {
+            throw InputError(error);  // the lip was not why: the first error says what is
+          }
+          raw = std::move(shadowed);
+          if (crop.cropped() > 0) cleaning.crop = crop;
+          cleaning.lip = lip;
+        }
       }
     }
   } else {

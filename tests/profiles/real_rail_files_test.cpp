@@ -173,14 +173,23 @@ TEST(RealRailFiles, ADeepUndercutIsCroppedAwayAndReported) {
   LoadOptions never;
   never.crop_depth = 0.0;
   EXPECT_EQ(error_of([&] { load_profile(path, never); }), whole);
-  // Cropped at 33 mm (33.21 mm below Y = 0), the undercut stays: the same error, and the crop
-  // that did not help (lines 55, 56: Y = -34.8, -35.6; line 54, Y = -34.0, is kept).
+  // Cropped at 33 mm (33.21 mm below Y = 0), the undercut stays (lines 55, 56: Y = -34.8,
+  // -35.6 are cropped; line 54, Y = -34.0, is kept), and is shadowed as under a lip: the rows
+  // that recede behind X = 47.34 (line 49) are removed, lines 50 ... 54 (X 47.10 ... 46.74), and
+  // the face continues vertically below line 49 to the deepest of them (Y = -34.0).
   LoadOptions deeper;
   deeper.crop_depth = 0.033;
-  EXPECT_EQ(error_of([&] { load_profile(path, deeper); }),
-            whole +
-                " (also after cropped 2 points deeper than 33 mm below the top of rail (gauge "
-                "side 2, lines 55 ... 56; down to 35.4 mm))");
+  const LoadedProfile shadowed = load_profile(path, deeper);
+  EXPECT_EQ(shadowed.cleaning.crop.cropped(), 2u);
+  const LipReport& lip = shadowed.cleaning.lip;
+  EXPECT_EQ(lip.hidden, 5u);
+  EXPECT_EQ(lip.lines, std::make_pair(50, 54));
+  EXPECT_NEAR(lip.edge_depth, (30.0 - 0.21) * 1e-3, 1e-15);
+  EXPECT_NEAR(lip.deepest, (34.0 - 0.21) * 1e-3, 1e-15);
+  EXPECT_EQ(lip.reason, whole + " (also after " + shadowed.cleaning.crop.summary() + ")");
+  // The gauge face below the edge is the vertical X = 47.34 mm (in the profile frame -y), to
+  // the 10 um the fit's smoothing (0.3 mm) overshoots at the edge's corner.
+  EXPECT_NEAR(shadowed.profile.y_min(), -47.34e-3, 10e-6);
 }
 
 // A measured rail whose gauge face has a gap in the data below the gauge point (a roller
@@ -286,6 +295,42 @@ TEST(RealRailFiles, MessagesQuoteTheWholeLineAndNameLinesInFileOrder) {
   EXPECT_EQ(error_of([&] { prepare_profile(parse_miniprof(text, "gap.ban", ".ban")); }),
             "gap.ban: gap of 14.8094 mm between the points of lines 23 and 24 exceeds the 5 mm "
             "limit (missing data?)");
+}
+
+}  // namespace
+}  // namespace wheelwear::profiles
+
+namespace wheelwear::profiles {
+namespace {
+
+// CONTACT's averaged low rail: its gauge face recedes 0.6 mm under a lip from 12 mm below the
+// top (above the gauge point) and its field side under another; the words after its last row and
+// its point count one off are read with warnings. It loads with the lips shadowed and its gauge
+// point on the lip's edge.
+TEST(MeasuredRails, ALippedLowRailLoadsWithItsLipsShadowed) {
+  const LoadedProfile rail = load_profile(testing::data_path("measured/avg_low2.ban"));
+  const LipReport& lip = rail.cleaning.lip;
+  EXPECT_GT(lip.hidden, 0u);
+  EXPECT_LT(lip.edge_depth, 0.014);  // the gauge face recedes above the gauge point
+  EXPECT_NE(lip.reason.find("the points go back"), std::string::npos) << lip.reason;
+  std::vector<std::string> repairs;
+  for (const ReadRepair& r : rail.cleaning.reading) repairs.push_back(r.name);
+  EXPECT_NE(std::find(repairs.begin(), repairs.end(), "trailing_text"), repairs.end());
+  EXPECT_NE(std::find(repairs.begin(), repairs.end(), "point_count"), repairs.end());
+  // The gauge point lies on the vertical below the edge: its y is the edge's.
+  const double gauge_y = gauge_point(rail.profile).point[0];
+  EXPECT_NEAR(gauge_y, rail.profile.y_min(), 10e-6);  // the fit's rounding at the corner
+}
+
+// The roller's gauge face jumps from 17 to 30 mm deep: the crop drops the deep rows beyond the
+// gap and the rest loads.
+TEST(MeasuredRails, ARollerWithAGapLowOnItsFaceLoadsCropped) {
+  const LoadedProfile roller =
+      load_profile(testing::data_path("measured/left-roller-v1-pre-dry.ban"));
+  EXPECT_EQ(roller.cleaning.crop.gauge_side, 6u);
+  EXPECT_EQ(roller.cleaning.crop.gauge_lines, std::make_pair(36, 41));
+  EXPECT_EQ(roller.cleaning.lip.hidden, 0u);
+  EXPECT_NO_THROW(gauge_point(roller.profile));
 }
 
 }  // namespace

@@ -79,6 +79,21 @@ struct CropReport {
   std::string summary() const;
 };
 
+/// What shadow_lip() did to a rail whose gauge face recedes under a lip.
+struct LipReport {
+  std::size_t hidden = 0;           ///< points removed under the lip
+  std::pair<int, int> lines{0, 0};  ///< their first and last source line, in file order
+  double edge_depth = 0.0;          ///< depth of the lip's edge below the top of rail [m]
+  double deepest = 0.0;             ///< depth of the deepest point removed [m]
+  std::size_t added = 0;            ///< points of the vertical face put below the edge
+  std::string reason;               ///< the error that made it necessary
+
+  /// One line, e.g. "shadowed 38 points under the head's lips (lines 504 ... 541) from 13.1 mm
+  /// below the top of rail, down to 31.4 mm: a face below its lip's edge is taken as vertical,
+  /// as a wheel's flange meets it"; "" when nothing was shadowed.
+  std::string summary() const;
+};
+
 /// A sharp turn of the polyline that was kept.
 struct Kink {
   int line = 0;          ///< source line (0 if unknown)
@@ -95,6 +110,7 @@ struct CleaningReport {
   std::vector<Kink> kinks;            ///< sharp turns kept, in file order
   std::vector<ReadRepair> reading;    ///< departures from the strict format the reader accepted
   CropReport crop;                    ///< rails: what was cropped before the cleaning
+  LipReport lip;                      ///< rails: the undercut of a lip shadowed, if needed
   std::vector<std::string> warnings;  ///< what the user should check (a point count off by one,
                                       ///< a rail without a gauge point or that looks mirrored),
                                       ///< each naming the file
@@ -110,6 +126,16 @@ struct CleaningReport {
   /// "; cropped 12 below 25 mm" and "; read: trailing_comments 3" when those happened.
   std::string summary() const;
 };
+
+/// Shadows the underside of the head's lips (a rail whose gauge face recedes towards the field
+/// side below a plastically flowed edge, as worn low rails do, and the same on the field side):
+/// walking down each face from the top of rail (the points oriented, z down, the gauge side at
+/// -y), every point that lies behind the outermost point above it is hidden from a wheel and
+/// removed, and where a face does not come out again it is continued vertically below its edge
+/// (points every 0.5 mm, line 0) to the depth of the deepest point removed there: a flange cannot
+/// reach into the undercut, and the gauge is measured on the edge. Used by the loader only for a
+/// rail refused otherwise (profile_loader.hpp).
+LipReport shadow_lip(RawProfile& raw);
 
 /// Runs the steps on `raw` in place (points already oriented, orientation.hpp). Throws
 /// InputError naming the source when more than max_drop_fraction of the points was discarded

@@ -76,12 +76,14 @@ struct LoadOptions {
   std::optional<double> taping_line_distance{};
   /// Rails: depth below the top of rail [m] to which a rail is cropped (crop_rail) when it is
   /// refused whole: validate_order, clean and validate_geometry run on the whole rail first and,
-  /// if one of them throws, again on the cropped rail (the report says why it was cropped). 0
-  /// never crops. 25 mm lies between the gauge point (14 mm below the top) and the shallowest
-  /// gauge-face undercut of real rails (about 30 mm), which fails validate_order. Nothing a wheel
-  /// can touch is lost: no accepted wheel/rail contact lies deeper than the flange tip's reach,
-  /// 28 mm below the taping line for S1002 when the wheel sits at its gauge point, and S1002 on
-  /// 60E1 (upright, 1:40, 1:20) touches no deeper than 12 mm.
+  /// if one of them throws, again on the cropped rail (the report says why it was cropped), and
+  /// if that is refused too, once more with the undercuts of the head's lips shadowed
+  /// (shadow_lip; CleaningReport::lip). 0 never crops nor shadows: the rail is taken as it is. 25
+  /// mm lies between the gauge point (14 mm below the top) and the shallowest gauge-face undercut
+  /// of real rails (about 30 mm), which fails validate_order. Nothing a wheel can touch is lost: no
+  /// accepted wheel/rail contact lies deeper than the flange tip's reach, 28 mm below the taping
+  /// line for S1002 when the wheel sits at its gauge point, and S1002 on 60E1 (upright, 1:40, 1:20)
+  /// touches no deeper than 12 mm.
   double crop_depth = 0.025;
   /// Crop every rail to crop_depth, not only those refused whole. Off by default: cropping
   /// changes nothing a wheel can touch, but it moves the start of the fitted curve and with it

@@ -55,8 +55,8 @@ struct ReadOptions {
 /// A departure from the strict format that a reader accepted in a real file; the loader reports it
 /// with the cleaning (CleaningReport::reading).
 struct ReadRepair {
-  std::string name;  ///< "trailing_comments", "trailing_text", "point_count" or "no_blank_line"
-  std::string message;     ///< what was accepted, naming the file and the first line concerned
+  std::string name;     ///< "trailing_comments", "trailing_text", "point_count" or "no_blank_line"
+  std::string message;  ///< what was accepted, naming the file and the first line concerned
   std::vector<int> lines;  ///< lines concerned, in file order (at most 20)
   std::size_t count = 0;   ///< how many lines are concerned
   bool warning = false;    ///< the data may be incomplete: worth checking the file
