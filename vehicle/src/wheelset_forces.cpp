@@ -100,6 +100,9 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
           "must be positive (N)");
   const std::array<double, 2> loads{load_left, load_right};
   std::array<double, 2> solved_for = loads;  // the vertical force the contact is solved for
+  // The previous iterate per wheel, for secant steps: Q grows with the solved-for force at a
+  // rate near 1 (less the creep forces' share), which the secant finds in one step.
+  std::array<double, 2> previous_for{0.0, 0.0}, previous_Q{0.0, 0.0};
   WheelsetForces out;
   for (int iteration = 0; iteration < kMaxLoadIterations; ++iteration) {
     contactgeom::WheelsetState geometry;
@@ -120,10 +123,18 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
           wheel_forces(model, c, pose, wheel_motion(state, running, side, model.lateral_arm),
                        pair.wheel_radius, running.friction);
       if (!carries_load(c.status)) continue;
-      const double miss = loads[k] - out.wheels[k].Q;
+      const double Q = out.wheels[k].Q;
+      const double miss = loads[k] - Q;
       if (std::abs(miss) > kLoadTolerance * loads[k]) {
         met = false;
-        solved_for[k] = std::max(0.01 * loads[k], solved_for[k] + miss);
+        double rate = 1.0;
+        if (iteration > 0 && solved_for[k] != previous_for[k]) {
+          rate = (Q - previous_Q[k]) / (solved_for[k] - previous_for[k]);
+          if (!(rate > 0.5 && rate < 2.0)) rate = 1.0;  // a jump of the contact: plain step
+        }
+        previous_for[k] = solved_for[k];
+        previous_Q[k] = Q;
+        solved_for[k] = std::max(0.01 * loads[k], solved_for[k] + miss / rate);
       }
     }
     if (met) break;

@@ -1,0 +1,82 @@
+#include "wheelwear/vehicle/free_wheelset_motion.hpp"
+
+#include <array>
+#include <boost/numeric/odeint/integrate/integrate_const.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
+#include <cmath>
+
+#include "wheelwear/core/input_error.hpp"
+
+namespace wheelwear::vehicle {
+
+namespace {
+
+using State = std::array<double, 4>;  // dy, yaw, lateral velocity, yaw rate
+
+bool in_contact(const WheelForces& w) {
+  return w.status == contactgeom::WheelRailStatus::ok ||
+         w.status == contactgeom::WheelRailStatus::load_jump;
+}
+
+}  // namespace
+
+std::vector<WheelsetSample> simulate_free_wheelset(const WheelsetModel& model,
+                                                   const FreeWheelsetBody& body,
+                                                   const RunningConditions& running,
+                                                   const WheelsetMotionState& start,
+                                                   const MotionOptions& options) {
+  require(running.curve_radius == 0.0, "curve radius", running.curve_radius,
+          "the free wheelset's motion is integrated on tangent track (0)");
+  require(std::isfinite(body.mass) && body.mass > 0.0, "mass", body.mass, "must be positive");
+  require(std::isfinite(body.yaw_inertia) && body.yaw_inertia > 0.0, "yaw inertia",
+          body.yaw_inertia, "must be positive");
+  require(std::isfinite(options.duration) && options.duration > 0.0, "duration", options.duration,
+          "must be positive (s)");
+  require(std::isfinite(options.time_step) && options.time_step > 0.0 &&
+              options.time_step <= options.duration,
+          "time step", options.time_step, "must lie in (0, duration] (s)");
+  require(options.sample_every >= 1, "sample_every", options.sample_every, "must be >= 1");
+
+  // Free rolling on the centred wheelset's radius.
+  WheelsetMotionState centred;
+  centred.spin = 1.0;
+  const WheelsetForces at_centre =
+      wheelset_forces(model, centred, body.wheel_load, body.wheel_load, running);
+  require(in_contact(at_centre.wheels[0]) && !at_centre.wheels[0].patches.empty(),
+          "centred wheelset", 0.0, "has no contact on its rails");
+  const double spin = running.speed / at_centre.wheels[0].patches.front().rolling_radius;
+
+  const auto system = [&](const State& x, State& dxdt, double /*t*/) {
+    WheelsetMotionState s;
+    s.dy = x[0];
+    s.yaw = x[1];
+    s.lateral_velocity = x[2];
+    s.yaw_rate = x[3];
+    s.spin = spin;
+    const WheelsetForces f = wheelset_forces(model, s, body.wheel_load, body.wheel_load, running);
+    for (const WheelForces& w : f.wheels)
+      if (!in_contact(w))
+        throw InputError("free wheelset: a wheel lost its contact at dy = " + std::to_string(s.dy) +
+                         " m (" + contactgeom::status_name(w.status) +
+                         "): the motion has grown past the profiles");
+    dxdt = {x[2], x[3], f.lateral / body.mass, f.yaw_moment / body.yaw_inertia};
+  };
+
+  std::vector<WheelsetSample> samples;
+  int step = 0;
+  const auto observe = [&](const State& x, double t) {
+    if (step++ % options.sample_every != 0) return;
+    WheelsetSample s;
+    s.time = t;
+    s.distance = running.speed * t;
+    s.state = {x[0], x[1], spin, x[2], x[3]};
+    samples.push_back(s);
+  };
+  State x = {start.dy, start.yaw, start.lateral_velocity, start.yaw_rate};
+  boost::numeric::odeint::runge_kutta4<State> stepper;
+  boost::numeric::odeint::integrate_const(stepper, system, x, 0.0, options.duration,
+                                          options.time_step, observe);
+  return samples;
+}
+
+}  // namespace wheelwear::vehicle
