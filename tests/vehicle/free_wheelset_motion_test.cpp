@@ -35,20 +35,10 @@ TEST(FreeWheelsetMotion, KlingelWavelength) {
   for (double conicity : {0.1, 0.2}) {
     const WheelsetModel model = conical_wheelset(conicity);
     const RunningConditions running{10.0, 0.0, 0.3};
-    // The wheelset's own r0 and lambda (free_wheelset_test.cpp says why lambda_e differs from
-    // the cone's slope): from the centred and a 1 mm shifted geometry.
-    double r0 = 0.0, lambda = 0.0;
-    for (double shift : {0.0, 1e-3}) {
-      contactgeom::WheelsetState g;
-      g.dy = shift;
-      g.vertical_force_left = g.vertical_force_right = 55e3;
-      const contactgeom::WheelsetContact c = contactgeom::solve_wheelset(model.track, g);
-      if (shift == 0.0)
-        r0 = c.left.patches.at(0).rolling_radius;
-      else
-        lambda = (c.left.patches.at(0).rolling_radius - c.right.patches.at(0).rolling_radius) /
-                 (2.0 * shift);
-    }
+    // The wheelset's own r0 and lambda (conical_wheelset.hpp says why lambda_e differs from
+    // the cone's slope).
+    const testing::ConeGeometry g = testing::cone_geometry(model, 1e-3);
+    const double r0 = g.centred_radius, lambda = g.conicity;
     const double wavelength = 2.0 * std::numbers::pi * std::sqrt(r0 * model.lateral_arm / lambda);
     WheelsetMotionState start;
     start.dy = 1e-3;
