@@ -81,6 +81,7 @@ std::vector<std::string> check_plausibility(const ContactInputs& in) {
 
 SolvedContact solve_contact(const ContactInputs& in) {
   std::vector<std::string> warnings = check_plausibility(in);
+  in.files.refuse_for_standard(in.wheel == "S1002", in.rail == "60E1" || in.rail == "UIC60");
   const profiles::ProfileFileOptions files = in.files.options();
   // The loaders' warnings (an origin the rule contradicts, a rail without a gauge point or
   // probably mirrored) belong to this contact: a user sees them here or not at all.

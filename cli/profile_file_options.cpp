@@ -20,8 +20,18 @@ profiles::ProfileFileOptions ProfileFileArgs::options() const {
   return out;
 }
 
-bool ProfileFileArgs::wheel_file_option_given() const {
-  return origin_option->count() > 0 || taping_line_distance_option->count() > 0;
+void ProfileFileArgs::refuse_for_standard(bool standard_wheel, bool standard_rail) const {
+  const auto refuse = [](const CLI::Option* option, const char* what) {
+    if (option && option->count() > 0)
+      throw InputError(option->get_name() + " applies to " + what +
+                       " files only; the standard profile is generated, not read");
+  };
+  if (standard_wheel) {
+    refuse(origin_option, "wheel");
+    refuse(taping_line_distance_option, "wheel");
+  }
+  if (standard_rail) refuse(gauge_side_option, "rail");
+  if (standard_wheel && standard_rail) refuse(max_drop_option, "profile");
 }
 
 void add_profile_file_options(CLI::App* cmd, ProfileFileArgs& args) {
@@ -39,16 +49,19 @@ void add_profile_file_options(CLI::App* cmd, ProfileFileArgs& args) {
       "--taping-line-distance", args.taping_line_distance,
       "wheel files: taping line distance from the internal face [m], 0.03 ... 0.11;\n"
       "default the file header's where it states one, else 0.070 (EN 13715)");
-  cmd->add_option("--max-drop", args.max_drop,
-                  "profile files: largest share of points the cleaning may discard (0 ... 1);\n"
-                  "merged near-duplicate points do not count")
-      ->capture_default_str();
-  cmd->add_option("--gauge-side", args.gauge_side,
-                  "rail files: where the file has the gauge face on its lateral axis as\n"
-                  "written: left = smaller values, right = larger (MiniProf rails: right),\n"
-                  "auto = the end measured deeper; set it when auto mirrors a rail")
-      ->check(CLI::IsMember({"auto", "left", "right"}))
-      ->capture_default_str();
+  args.max_drop_option =
+      cmd->add_option("--max-drop", args.max_drop,
+                      "profile files: largest share of points the cleaning may discard (0 ... 1);\n"
+                      "merged near-duplicate points do not count")
+          ->check(CLI::Range(0.0, 1.0))
+          ->capture_default_str();
+  args.gauge_side_option =
+      cmd->add_option("--gauge-side", args.gauge_side,
+                      "rail files: where the file has the gauge face on its lateral axis as\n"
+                      "written: left = smaller values, right = larger (MiniProf rails: right),\n"
+                      "auto = the end measured deeper; set it when auto mirrors a rail")
+          ->check(CLI::IsMember({"auto", "left", "right"}))
+          ->capture_default_str();
 }
 
 }  // namespace wheelwear::cli

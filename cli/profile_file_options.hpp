@@ -22,11 +22,15 @@ struct ProfileFileArgs {
   std::string gauge_side = "auto";
   CLI::Option* origin_option = nullptr;
   CLI::Option* taping_line_distance_option = nullptr;
+  CLI::Option* max_drop_option = nullptr;
+  CLI::Option* gauge_side_option = nullptr;
 
   /// The options as given; throws InputError on a bad value.
   profiles::ProfileFileOptions options() const;
-  /// Whether a wheel-file option (--origin, --taping-line-distance) was given.
-  bool wheel_file_option_given() const;
+  /// Refuses the file options given for a standard profile (S1002, 60E1), which has no file:
+  /// --origin, --taping-line-distance, --max-drop for the wheel, --gauge-side, --max-drop for
+  /// the rail.
+  void refuse_for_standard(bool standard_wheel, bool standard_rail) const;
 };
 
 /// Adds --origin, --taping-line-distance, --max-drop and --gauge-side to `cmd`.

@@ -45,8 +45,9 @@ std::string duration(double seconds) {
 
 // "  (12 % of the distance not worn: 3 climbing, 1 Nadal)" for the progress line.
 std::string dropped_note(const pipeline::DroppedStates& d) {
-  std::string note = "  (" + std::to_string(std::lround(100.0 * d.dropped_patches_weight)) +
-                     " % of the distance not worn:";
+  char share[32];
+  std::snprintf(share, sizeof share, "%.2g", 100.0 * d.dropped_patches_weight);
+  std::string note = "  (" + std::string(share) + " % of the distance not worn:";
   const std::pair<int, const char*> reasons[] = {{d.failed_contacts, "failed"},
                                                  {d.climbing_contacts, "climbing"},
                                                  {d.load_jump_contacts, "load jump"},

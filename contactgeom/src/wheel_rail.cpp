@@ -128,4 +128,9 @@ WheelRailTouch first_touch(const WheelRailPair& pair, const WheelsetPose& pose,
   return detail::first_touch_at(pair, pose, options, detail::rail_gauge_y(pair));
 }
 
+bool carries_load(WheelRailStatus status) {
+  return status == WheelRailStatus::ok || status == WheelRailStatus::load_jump ||
+         status == WheelRailStatus::flange_climb || status == WheelRailStatus::past_flange;
+}
+
 }  // namespace wheelwear::contactgeom

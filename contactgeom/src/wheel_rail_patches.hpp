@@ -49,7 +49,7 @@ class SampleDirections {
     known_.assign(samples, 0);
     direction_.resize(samples);
   }
-  // contact_direction at sample j, rail-frame y = g.y[j].
+  // The rail's contact direction at sample j (rail-frame y = g.y[j]), from its arc length there.
   ContactDirection at(const WheelRailGap& geometry, const GapSamples& g, std::size_t j) {
     if (!known_[j]) {
       direction_[j] = geometry.rail_direction(g.s_rail[j]);

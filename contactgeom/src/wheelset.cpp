@@ -31,11 +31,6 @@ constexpr double kMaxRoll = 0.09;
 constexpr double kRollChange = 1e-9;
 
 // The flange statuses carry the load too: the lateral search may pass through them.
-bool carries_load(const WheelRailContact& c) {
-  return c.status == WheelRailStatus::ok || c.status == WheelRailStatus::load_jump ||
-         c.status == WheelRailStatus::flange_climb || c.status == WheelRailStatus::past_flange;
-}
-
 bool flange_loaded(const WheelRailContact& c, double flange_angle) {
   return std::any_of(c.patches.begin(), c.patches.end(), [&](const WheelRailPatch& p) {
     return p.contact_angle > flange_angle && p.normal_force > 0.0;
@@ -74,7 +69,7 @@ WheelRailLateral lateral_at(const WheelRailPair& pair, const WheelsetPose& pose,
   bool warm = false;
   if (guess != 0.0 && std::abs(guess) < kLateralReach) {
     WheelRailContact cg = contact_at(guess);
-    if (carries_load(cg) && flange_loaded(cg, options.flange_angle)) {
+    if (carries_load(cg.status) && flange_loaded(cg, options.flange_angle)) {
       const double fg = cg.lateral_force - Fy;
       if (std::abs(fg) <= tol) return finish(guess, std::move(cg), LateralFit::matched);
       e_in = guess;
@@ -86,7 +81,7 @@ WheelRailLateral lateral_at(const WheelRailPair& pair, const WheelsetPose& pose,
   }
   if (!warm) {
     WheelRailContact c0 = contact_at(0.0);
-    if (!carries_load(c0)) {
+    if (!carries_load(c0.status)) {
       out.message = "no contact to adjust at the given position: " + c0.message;
       return finish(0.0, std::move(c0), LateralFit::not_matched);
     }
@@ -106,7 +101,7 @@ WheelRailLateral lateral_at(const WheelRailPair& pair, const WheelsetPose& pose,
   for (double step = first_step; std::abs(e_in) < kLateralReach; step *= 1.5) {
     const double e = e_in + direction * std::min(step, kLateralReach - std::abs(e_in) + 1e-12);
     WheelRailContact c = contact_at(e);
-    if (!carries_load(c)) {
+    if (!carries_load(c.status)) {
       out.message = "the lateral force " + std::to_string(Fy) + " N is not reached before " +
                     std::string(status_name(c.status)) + " at a shift of " + std::to_string(e) +
                     " m";
@@ -121,7 +116,7 @@ WheelRailLateral lateral_at(const WheelRailPair& pair, const WheelsetPose& pose,
       while (std::abs(loaded - unloaded) > kUnloadResolution) {
         const double mid = 0.5 * (loaded + unloaded);
         WheelRailContact cm = contact_at(mid);
-        if (carries_load(cm) && !flange_loaded(cm, options.flange_angle)) {
+        if (carries_load(cm.status) && !flange_loaded(cm, options.flange_angle)) {
           unloaded = mid;
           c_unloaded = std::move(cm);
         } else {

@@ -230,7 +230,7 @@ PointList vertical_face(const Point& edge, double bottom) {
 
 }  // namespace
 
-LipReport shadow_lip(RawProfile& raw) {
+LipReport shadow_lip(RawProfile& raw, double max_depth) {
   LipReport report;
   auto& pts = raw.points;
   if (pts.size() < 3) return report;
@@ -262,6 +262,10 @@ LipReport shadow_lip(RawProfile& raw) {
   raw.erase_if(hidden);
   // Where a side ends under its lip, its face continues vertically below the edge (deepest
   // first at the gauge end, which runs towards index 0).
+  // The faces reach no deeper than a wheel can touch (the crop depth): a damaged file's stray
+  // point metres down must not become a face of thousands of points.
+  gauge_deepest = std::min(gauge_deepest, max_depth);
+  field_deepest = std::min(field_deepest, max_depth);
   if (gauge_ends_hidden) {
     PointList face = vertical_face(gauge_edge, top_z + gauge_deepest);
     std::reverse(face.begin(), face.end());

@@ -151,8 +151,9 @@ OriginReport place_wheel_origin(RawProfile& raw, const LoadOptions& options,
                          "--origin auto or " +
                          std::string(to_string(*verdict.origin)));
   }
-  warn_if_header_differs(raw, "taping line distance", options.taping_line_distance,
-                         raw.taping_line_distance, "--taping-line-distance", warnings);
+  warn_if_header_differs(
+      raw, "taping line distance", options.taping_line_distance, raw.taping_line_distance,
+      "--taping-line-distance, the scene's [wheel] taping_line_distance_m", warnings);
   if (report.origin == WheelOrigin::internal_face) {
     report.shift = -distance;
     report.reason += std::string("; taping line ") + core::format_mm(distance, 3) +
@@ -228,7 +229,7 @@ LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options) {
         }
         if (!error.empty()) {
           RawProfile shadowed = raw;
-          LipReport lip = shadow_lip(shadowed);
+          LipReport lip = shadow_lip(shadowed, options.crop_depth);
           lip.reason = error;
           if (lip.hidden == 0) throw InputError(error);
           try {
@@ -259,7 +260,8 @@ LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options) {
     const std::optional<double> header_radius =
         raw.wheel_diameter ? std::optional<double>(0.5 * *raw.wheel_diameter) : std::nullopt;
     warn_if_header_differs(raw, "nominal rolling radius", options.nominal_radius, header_radius,
-                           "--wheel-radius, the scene's wheel radius_m", cleaning.warnings);
+                           "--wheel-radius or profile --radius, the scene's [wheel] radius_m",
+                           cleaning.warnings);
     info.nominal_radius =
         options.nominal_radius.value_or(header_radius.value_or(options.fallback_nominal_radius));
     info.taping_line_distance = taping_line_distance(raw, options);

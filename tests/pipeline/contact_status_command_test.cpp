@@ -80,5 +80,24 @@ TEST(ContactStatusCommand, TheLoadersWarningsReachTheContactAndGaugeSideFixesThe
   EXPECT_NE(set.out.find("\"warnings\": []"), std::string::npos) << set.out;
 }
 
+// The profile-file options name a file's properties: given for a generated profile they are
+// refused with the reason, and --max-drop out of 0 ... 1 is refused by the parser.
+TEST(ContactStatusCommand, FileOptionsAreRefusedForGeneratedProfiles) {
+  int compared = 0;
+  for (const std::string& args :
+       {std::string("--origin taping-line"), std::string("--taping-line-distance 0.07"),
+        std::string("--gauge-side right")}) {
+    const auto r = run_wheelwear("contact --dy 0 --load 55000 " + args);
+    EXPECT_NE(r.exit_code, 0) << args;
+    EXPECT_NE(r.err.find(args.substr(0, args.find(' '))), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("the standard profile is generated"), std::string::npos) << r.err;
+    ++compared;
+  }
+  const auto range = run_wheelwear("contact --dy 0 --load 55000 --max-drop 3");
+  EXPECT_NE(range.exit_code, 0);
+  EXPECT_NE(range.err.find("--max-drop"), std::string::npos) << range.err;
+  EXPECT_EQ(compared, 3);
+}
+
 }  // namespace
 }  // namespace wheelwear

@@ -59,12 +59,8 @@ TEST(WheelsetForces, SumsThePatchesAsTheContractDefines) {
 // and spin creep) cancel.
 TEST(WheelsetForces, CentredFreeRollingWheelsetIsInBalance) {
   const WheelsetModel model = conical_wheelset(0.1);
+  const double r_c = testing::cone_geometry(model, 1e-3).centred_radius;
   WheelsetMotionState state;
-  state.spin = 1.0;
-  const double r_c = wheelset_forces(model, state, 55e3, 55e3, {30.0, 0.0, 0.3})
-                         .wheels[0]
-                         .patches.at(0)
-                         .rolling_radius;
   state.spin = 30.0 / r_c;
   const WheelsetForces f = wheelset_forces(model, state, 55e3, 55e3, {30.0, 0.0, 0.3});
   for (const WheelForces& w : f.wheels) {

@@ -79,7 +79,7 @@ FreeWheelsetCurving solve_free_wheelset_curving(const WheelsetModel& model, doub
   const Eigen::Vector3d steps(1e-7, 1e-8, 1e-7 * s.spin);
   for (; result.iterations < 40; ++result.iterations) {
     const Eigen::Vector3d size = scaled(res);
-    if (size.cwiseAbs().maxCoeff() <= 1.0) {
+    if (size.cwiseAbs().maxCoeff() <= 1.0 && res.forces.loads_met) {
       result.converged = true;
       break;
     }

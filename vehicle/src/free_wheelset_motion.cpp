@@ -4,6 +4,7 @@
 #include <boost/numeric/odeint/integrate/integrate_const.hpp>
 #include <boost/numeric/odeint/stepper/runge_kutta4.hpp>
 #include <cmath>
+#include <string>
 
 #include "wheelwear/core/input_error.hpp"
 
@@ -13,18 +14,28 @@ namespace {
 
 using State = std::array<double, 4>;  // dy, yaw, lateral velocity, yaw rate
 
-bool in_contact(const WheelForces& w) {
-  return w.status == contactgeom::WheelRailStatus::ok ||
-         w.status == contactgeom::WheelRailStatus::load_jump;
+// Thrown from the right-hand side to stop the integration where the wheelset left its rails.
+struct LeftTheRails {
+  std::string why;
+};
+
+// The rolling radius of the wheel's most loaded patch.
+double loaded_radius(const WheelForces& w) {
+  double radius = 0.0, largest = -1.0;
+  for (const PatchForces& p : w.patches)
+    if (p.normal_force > largest) {
+      largest = p.normal_force;
+      radius = p.rolling_radius;
+    }
+  return radius;
 }
 
 }  // namespace
 
-std::vector<WheelsetSample> simulate_free_wheelset(const WheelsetModel& model,
-                                                   const FreeWheelsetBody& body,
-                                                   const RunningConditions& running,
-                                                   const WheelsetMotionState& start,
-                                                   const MotionOptions& options) {
+WheelsetMotion simulate_free_wheelset(const WheelsetModel& model, const FreeWheelsetBody& body,
+                                      const RunningConditions& running,
+                                      const WheelsetMotionState& start,
+                                      const MotionOptions& options) {
   require(running.curve_radius == 0.0, "curve radius", running.curve_radius,
           "the free wheelset's motion is integrated on tangent track (0)");
   require(std::isfinite(body.mass) && body.mass > 0.0, "mass", body.mass, "must be positive");
@@ -42,9 +53,10 @@ std::vector<WheelsetSample> simulate_free_wheelset(const WheelsetModel& model,
   centred.spin = 1.0;
   const WheelsetForces at_centre =
       wheelset_forces(model, centred, body.wheel_load, body.wheel_load, running);
-  require(in_contact(at_centre.wheels[0]) && !at_centre.wheels[0].patches.empty(),
-          "centred wheelset", 0.0, "has no contact on its rails");
-  const double spin = running.speed / at_centre.wheels[0].patches.front().rolling_radius;
+  require(
+      contactgeom::carries_load(at_centre.wheels[0].status) && !at_centre.wheels[0].patches.empty(),
+      "centred wheelset", 0.0, "has no contact on its rails");
+  const double spin = running.speed / loaded_radius(at_centre.wheels[0]);
 
   const auto system = [&](const State& x, State& dxdt, double /*t*/) {
     WheelsetMotionState s;
@@ -55,14 +67,16 @@ std::vector<WheelsetSample> simulate_free_wheelset(const WheelsetModel& model,
     s.spin = spin;
     const WheelsetForces f = wheelset_forces(model, s, body.wheel_load, body.wheel_load, running);
     for (const WheelForces& w : f.wheels)
-      if (!in_contact(w))
-        throw InputError("free wheelset: a wheel lost its contact at dy = " + std::to_string(s.dy) +
-                         " m (" + contactgeom::status_name(w.status) +
-                         "): the motion has grown past the profiles");
+      if (!contactgeom::carries_load(w.status))
+        throw LeftTheRails{"a wheel left its rail at dy = " + std::to_string(s.dy) + " m (" +
+                           contactgeom::status_name(w.status) +
+                           "): the motion has grown past the profiles"};
+    if (!f.loads_met) throw LeftTheRails{f.message};
     dxdt = {x[2], x[3], f.lateral / body.mass, f.yaw_moment / body.yaw_inertia};
   };
 
-  std::vector<WheelsetSample> samples;
+  WheelsetMotion motion;
+  std::vector<WheelsetSample>& samples = motion.samples;
   int step = 0;
   const auto observe = [&](const State& x, double t) {
     if (step++ % options.sample_every != 0) return;
@@ -74,9 +88,14 @@ std::vector<WheelsetSample> simulate_free_wheelset(const WheelsetModel& model,
   };
   State x = {start.dy, start.yaw, start.lateral_velocity, start.yaw_rate};
   boost::numeric::odeint::runge_kutta4<State> stepper;
-  boost::numeric::odeint::integrate_const(stepper, system, x, 0.0, options.duration,
-                                          options.time_step, observe);
-  return samples;
+  try {
+    boost::numeric::odeint::integrate_const(stepper, system, x, 0.0, options.duration,
+                                            options.time_step, observe);
+    motion.completed = true;
+  } catch (const LeftTheRails& stop) {
+    motion.message = stop.why;
+  }
+  return motion;
 }
 
 }  // namespace wheelwear::vehicle

@@ -63,12 +63,6 @@ WheelForces wheel_forces(const WheelsetModel& model, const contactgeom::WheelRai
   return w;
 }
 
-bool carries_load(contactgeom::WheelRailStatus status) {
-  using contactgeom::WheelRailStatus;
-  return status == WheelRailStatus::ok || status == WheelRailStatus::load_jump ||
-         status == WheelRailStatus::flange_climb || status == WheelRailStatus::past_flange;
-}
-
 }  // namespace
 
 contactgeom::WheelsetMotion wheel_motion(const WheelsetMotionState& state,
@@ -122,7 +116,7 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
       out.wheels[k] =
           wheel_forces(model, c, pose, wheel_motion(state, running, side, model.lateral_arm),
                        pair.wheel_radius, running.friction);
-      if (!carries_load(c.status)) continue;
+      if (!contactgeom::carries_load(c.status)) continue;
       const double Q = out.wheels[k].Q;
       const double miss = loads[k] - Q;
       if (std::abs(miss) > kLoadTolerance * loads[k]) {
@@ -137,8 +131,14 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
         solved_for[k] = std::max(0.01 * loads[k], solved_for[k] + miss / rate);
       }
     }
-    if (met) break;
+    if (met) {
+      out.loads_met = true;
+      break;
+    }
   }
+  if (!out.loads_met)
+    out.message = "the wheels' loads were not met in " + std::to_string(kMaxLoadIterations) +
+                  " contact solves (a jump of the contact with the load?)";
   const WheelForces& left = out.wheels[0];
   const WheelForces& right = out.wheels[1];
   out.lateral = right.Y - left.Y;

@@ -156,4 +156,8 @@ WheelRailTouch first_touch(const WheelRailPair& pair, const WheelsetPose& pose,
 /// The name of a status ("ok", "no contact", ...).
 const char* status_name(WheelRailStatus status);
 
+/// Whether a contact of this status has patches carrying the load: ok, load_jump, flange_climb
+/// and past_flange (the wheel touches its rail); not no_contact, not_converged, profile_end.
+bool carries_load(WheelRailStatus status);
+
 }  // namespace wheelwear::contactgeom

@@ -132,10 +132,11 @@ struct CleaningReport {
 /// walking down each face from the top of rail (the points oriented, z down, the gauge side at
 /// -y), every point that lies behind the outermost point above it is hidden from a wheel and
 /// removed, and where a face does not come out again it is continued vertically below its edge
-/// (points every 0.5 mm, line 0) to the depth of the deepest point removed there: a flange cannot
-/// reach into the undercut, and the gauge is measured on the edge. Used by the loader only for a
-/// rail refused otherwise (profile_loader.hpp).
-LipReport shadow_lip(RawProfile& raw);
+/// (points every 0.5 mm, line 0) to the depth of the deepest point removed there, at most
+/// `max_depth` [m] below the top: a flange cannot reach into the undercut, and the gauge is
+/// measured on the edge. Used by the loader only for a rail refused otherwise, with the crop
+/// depth as max_depth (profile_loader.hpp).
+LipReport shadow_lip(RawProfile& raw, double max_depth);
 
 /// Runs the steps on `raw` in place (points already oriented, orientation.hpp). Throws
 /// InputError naming the source when more than max_drop_fraction of the points was discarded

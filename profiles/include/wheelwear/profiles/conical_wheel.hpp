@@ -1,7 +1,8 @@
 #pragma once
 /// A conical wheel profile: the textbook wheel of linear wheelset dynamics (Klingel's kinematic
-/// oscillation, the pure-rolling line in curves), whose rolling radius changes by exactly its
-/// conicity lambda per metre of lateral shift on any convex rail head.
+/// oscillation, the pure-rolling line in curves): its rolling radius changes by its conicity
+/// lambda per metre along the wheel. (Per metre of wheelset shift the change is a little larger
+/// on a real rail head: the wheelset's roll moves the contacts along the wheels.)
 
 #include "wheelwear/profiles/profile.hpp"
 

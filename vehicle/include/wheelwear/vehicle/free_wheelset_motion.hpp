@@ -5,6 +5,7 @@
 /// as in Klingel's kinematic oscillation (a wheelset driven at constant speed). The textbook
 /// check of the time-domain machinery: a conical wheelset's wavelength 2 pi sqrt(r0 e0 / lambda).
 
+#include <string>
 #include <vector>
 
 #include "wheelwear/vehicle/wheelset_forces.hpp"
@@ -33,14 +34,22 @@ struct MotionOptions {
   int sample_every = 1;     ///< keep every n-th step
 };
 
+/// The integrated motion.
+struct WheelsetMotion {
+  std::vector<WheelsetSample> samples;
+  /// False when the integration stopped early: a wheel left its rail (no contact, not converged,
+  /// profile end) or its loads were not met, as the amplitude of an unstable free wheelset
+  /// grows past the profiles; the samples run up to there.
+  bool completed = false;
+  std::string message;  ///< why, when not completed
+};
+
 /// Integrates the wheelset from `start` (its dy, yaw, lateral velocity and yaw rate; the spin is
-/// set to running.speed / r_c, r_c the rolling radius of the centred wheelset) on tangent track
-/// (running.curve_radius must be 0). Throws InputError on bad input or when a wheel loses its
-/// contact (the amplitude of an unstable wheelset has grown past the profiles).
-std::vector<WheelsetSample> simulate_free_wheelset(const WheelsetModel& model,
-                                                   const FreeWheelsetBody& body,
-                                                   const RunningConditions& running,
-                                                   const WheelsetMotionState& start,
-                                                   const MotionOptions& options = {});
+/// set to running.speed / r_c, r_c the rolling radius of the centred wheelset's most loaded
+/// patch) on tangent track (running.curve_radius must be 0). Throws InputError on bad input.
+WheelsetMotion simulate_free_wheelset(const WheelsetModel& model, const FreeWheelsetBody& body,
+                                      const RunningConditions& running,
+                                      const WheelsetMotionState& start,
+                                      const MotionOptions& options = {});
 
 }  // namespace wheelwear::vehicle

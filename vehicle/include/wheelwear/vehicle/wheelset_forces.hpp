@@ -10,6 +10,7 @@
 /// the gauge side, the track centre.
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "wheelwear/contactgeom/kinematics.hpp"
@@ -87,10 +88,15 @@ struct WheelsetForces {
   contactgeom::WheelsetContact contact;  ///< the geometry: roll, per-wheel poses and patches
   std::array<WheelForces, 2> wheels;     ///< left, right
   double lateral = 0.0;                  ///< along the track's y [N], + left: Y_right - Y_left
-  double yaw_moment = 0.0;   ///< about the vertical through the centre [N m], + counter-clockwise
+  /// About the vertical through the centre [N m], + counter-clockwise: the longitudinal creep
+  /// forces at +-lateral_arm (the spin moments' vertical parts, Mz cos(gamma), below 1 % of it in
+  /// curving, are left out).
+  double yaw_moment = 0.0;
   double Fx_axle = 0.0;      ///< Fx of both wheels [N], + forward
   double axle_torque = 0.0;  ///< torque of both wheels [N m]; 0 for a free-rolling axle
   int load_iterations = 0;   ///< contact solves made to meet the wheels' loads Q
+  bool loads_met = false;    ///< every wheel carrying load meets its Q to 1e-9
+  std::string message;       ///< why, when the loads were not met
 };
 
 /// The forces of the rails on the wheelset at `state`, each wheel carrying `load_left`,
