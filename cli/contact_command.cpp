@@ -56,8 +56,30 @@ void check_exact_options(const ContactArgs& args) {
   }
 }
 
+// One patch's creepages at O and its FASTSIM-SDEC creep forces (--creep).
+struct PatchCreep {
+  tangential::Creepages creepages;
+  tangential::CreepForces forces;
+};
+
+// Every patch's creep forces, solved once for the report and Nadal's criterion; empty without
+// --creep.
+std::vector<PatchCreep> creep_of(const SolvedContact& solved, const ContactArgs& args) {
+  std::vector<PatchCreep> out;
+  if (!args.creep) return out;
+  for (const auto& p : solved.contact.patches) {
+    PatchCreep c;
+    c.creepages = args.in.creepages_at(solved.pair, p);
+    c.forces = tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, c.creepages,
+                                   {p.normal_force, args.in.mu}, args.in.material())
+                   .forces;
+    out.push_back(c);
+  }
+  return out;
+}
+
 std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom::WheelRailPatch& p,
-                       const ContactArgs& args) {
+                       const PatchCreep* creep, const ContactArgs& args) {
   JsonObject o;
   o.add("area", p.measures.area)
       .add("length", p.measures.length)
@@ -76,13 +98,11 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
   if (p.hertz) {
     o.add("hertz_a", p.hertz->a).add("hertz_b", p.hertz->b).add("hertz_p0", p.hertz->p0);
   }
-  if (args.creep) {
-    const tangential::TangentialSolution s =
-        tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, args.in.creepages_at(pair, p),
-                            {p.normal_force, args.in.mu}, args.in.material());
-    const tangential::Creepages c = args.in.creepages_at(pair, p);
+  if (creep) {
+    const tangential::Creepages& c = creep->creepages;
+    const tangential::CreepForces& f = creep->forces;
     o.add("vx", c.vx).add("vy", c.vy).add("phi", c.phi);
-    o.add("Fx", s.forces.Fx).add("Fy", s.forces.Fy).add("Mz", s.forces.Mz.value_or(0.0));
+    o.add("Fx", f.Fx).add("Fy", f.Fy).add("Mz", f.Mz.value_or(0.0));
     if (args.tangential == "exact") {
       const tangential::WheelRailExactSolution e = exact_patch(pair, p, args);
       const tangential::ExactSolution& r = e.rolling;
@@ -103,17 +123,14 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
   return o.str();
 }
 
-// Nadal's criterion for the contact, with each patch's FASTSIM-SDEC lateral creep force where
-// --creep gives creepages (the forces patch_json reports), else with the normal forces only.
-contactgeom::NadalCheck nadal_of(const SolvedContact& solved, const ContactArgs& args) {
+// Nadal's criterion for the contact, with each patch's lateral creep force where --creep gives
+// them (the forces the report shows), else with the normal forces only.
+contactgeom::NadalCheck nadal_of(const SolvedContact& solved, const std::vector<PatchCreep>& creep,
+                                 const ContactArgs& args) {
   contactgeom::PatchLateralCreep creep_Fy;
   if (args.creep) {
     creep_Fy.emplace();
-    for (const auto& p : solved.contact.patches)
-      creep_Fy->push_back(tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec,
-                                              args.in.creepages_at(solved.pair, p),
-                                              {p.normal_force, args.in.mu}, args.in.material())
-                              .forces.Fy);
+    for (const PatchCreep& c : creep) creep_Fy->push_back(c.forces.Fy);
   }
   return contactgeom::nadal_check(solved.contact, args.in.mu, creep_Fy);
 }
@@ -130,10 +147,13 @@ void run_contact(const ContactArgs& args) {
   const contactgeom::WheelRailContact& contact = solved.contact;
   for (const std::string& w : solved.warnings) std::cerr << "wheelwear: warning: " << w << '\n';
 
-  const contactgeom::NadalCheck nadal = nadal_of(solved, args);
+  const std::vector<PatchCreep> creep = creep_of(solved, args);
+  const contactgeom::NadalCheck nadal = nadal_of(solved, creep, args);
   if (args.json) {
     std::vector<std::string> patches;
-    for (const auto& p : contact.patches) patches.push_back(patch_json(solved.pair, p, args));
+    for (std::size_t k = 0; k < contact.patches.size(); ++k)
+      patches.push_back(
+          patch_json(solved.pair, contact.patches[k], args.creep ? &creep[k] : nullptr, args));
     JsonObject out;
     out.add("status", contactgeom::status_name(contact.status))
         .add("message", contact.message)
@@ -173,11 +193,8 @@ void run_contact(const ContactArgs& args) {
           p.measures.W1 * 1e3, p.measures.W2 * 1e3, p.pmax * 1e-6, p.sdec.a * 1e3, p.sdec.b * 1e3,
           p.sdec.psi);
       if (args.creep) {
-        const tangential::Creepages c = args.in.creepages_at(solved.pair, p);
-        const tangential::CreepForces f =
-            tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, c,
-                                {p.normal_force, args.in.mu}, args.in.material())
-                .forces;
+        const tangential::Creepages& c = creep[static_cast<std::size_t>(k - 1)].creepages;
+        const tangential::CreepForces& f = creep[static_cast<std::size_t>(k - 1)].forces;
         std::printf("  creepages vx %.4g, vy %.4g, phi %.4g 1/m: Fx %.6g N, Fy %.6g N\n", c.vx,
                     c.vy, c.phi, f.Fx, f.Fy);
         if (args.tangential == "exact") {
@@ -194,9 +211,7 @@ void run_contact(const ContactArgs& args) {
       }
     }
   }
-  if (contact.status == contactgeom::WheelRailStatus::no_contact ||
-      contact.status == contactgeom::WheelRailStatus::not_converged ||
-      contact.status == contactgeom::WheelRailStatus::profile_end) {
+  if (!contactgeom::carries_load(contact.status)) {
     throw std::runtime_error(std::string("contact ") + contactgeom::status_name(contact.status) +
                              (contact.message.empty() ? "" : ": " + contact.message));
   }

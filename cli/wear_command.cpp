@@ -149,9 +149,7 @@ void run_wear(const WearArgs& args) {
   const auto& contact = solved.contact;
   std::vector<std::string> warnings = solved.warnings;
   for (const std::string& w : warnings) std::cerr << "wheelwear: warning: " << w << '\n';
-  if (contact.status == contactgeom::WheelRailStatus::no_contact ||
-      contact.status == contactgeom::WheelRailStatus::not_converged ||
-      contact.status == contactgeom::WheelRailStatus::profile_end) {
+  if (!contactgeom::carries_load(contact.status)) {
     throw std::runtime_error(std::string("contact ") + contactgeom::status_name(contact.status) +
                              ": " + contact.message);
   }

@@ -56,13 +56,19 @@ GeometryIndex index_geometries(const std::vector<WheelsetStateSpec>& states, boo
 
 }  // namespace
 
-std::vector<double> wheel_weights(const Scene& scene) {
+std::vector<double> state_shares(const Scene& scene) {
   double total = 0.0;
   for (const auto& s : scene.states) total += s.weight;
-  std::vector<double> weights(2 * scene.states.size());
-  for (std::size_t i = 0; i < scene.states.size(); ++i)
-    weights[2 * i] = weights[2 * i + 1] =
-        scene.states[i].weight / total * (scene.separate_wheels ? 1.0 : 0.5);
+  std::vector<double> shares;
+  for (const auto& s : scene.states) shares.push_back(s.weight / total);
+  return shares;
+}
+
+std::vector<double> wheel_weights(const Scene& scene) {
+  const std::vector<double> shares = state_shares(scene);
+  std::vector<double> weights(2 * shares.size());
+  for (std::size_t i = 0; i < shares.size(); ++i)
+    weights[2 * i] = weights[2 * i + 1] = shares[i] * (scene.separate_wheels ? 1.0 : 0.5);
   return weights;
 }
 
@@ -119,12 +125,11 @@ void count_dropped(const StateOutcome& state, double share, DroppedStates& d) {
 
 void reduce_states(const Scene& scene, const std::vector<StateOutcome>& states,
                    CollectiveWear& out) {
+  const std::vector<double> shares = state_shares(scene);
   const std::vector<double> weights = wheel_weights(scene);
-  double total = 0.0;
-  for (const auto& s : scene.states) total += s.weight;
   for (std::size_t i = 0; i < states.size(); ++i) {
     if (states[i].dropped()) {
-      count_dropped(states[i], scene.states[i].weight / total, out.dropped);
+      count_dropped(states[i], shares[i], out.dropped);
       continue;
     }
     for (int side = 0; side < 2; ++side) {

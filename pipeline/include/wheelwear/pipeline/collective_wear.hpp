@@ -55,6 +55,10 @@ struct CollectiveWear {
   std::size_t hertz_dropped = 0;
 };
 
+/// The share of the running distance each state of the collective stands for (its weight over
+/// the collective's total).
+std::vector<double> state_shares(const Scene& scene);
+
 /// The share of the running distance each wheel case stands for: state i's left (2i) and right
 /// (2i + 1) wheel, of the profile it wears (half a state each when the wheels share one).
 std::vector<double> wheel_weights(const Scene& scene);
