@@ -24,6 +24,9 @@ void add_wear_command(CLI::App& app);
 /// `wheelwear profile`: generate, read, clean, resample and summarise wheel/rail profiles.
 void add_profile_command(CLI::App& app);
 
+/// `wheelwear curving`: quasi-static curving of a vehicle in a constant curve.
+void add_curving_command(CLI::App& app);
+
 /// `wheelwear run`: the wear-evolution run of a scene, written to an HDF5 results file.
 void add_run_command(CLI::App& app);
 

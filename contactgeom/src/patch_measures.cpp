@@ -71,26 +71,50 @@ PatchMeasures measure_polygons(const std::vector<PatchRing>& rings, double y_O) 
   return m;
 }
 
+namespace {
+
+// How far the patch reaches beyond the centre of its outermost strip in contact `edge`, towards
+// the next one [m]: where x_lead^2 (the strip's penetration over its curvature), extrapolated
+// linearly from `inner` (the strip next to it inside), falls to zero, between 0 and one strip
+// width. The patch's edges then move continuously as a strip comes into contact instead of
+// jumping by half a strip, so the patch's width and its SDEC are continuous in the wheelset's
+// position (a quasi-static solver converges on them). Half a strip, as a staircase outline
+// gives, when there is no inner strip in contact or x_lead^2 does not fall towards the edge.
+double edge_reach(const KpStrip& edge, const KpStrip* inner, double ds) {
+  if (inner == nullptr || !(inner->x_lead > 0.0)) return 0.5 * ds;
+  const double outer2 = edge.x_lead * edge.x_lead;
+  const double fall = inner->x_lead * inner->x_lead - outer2;
+  if (!(fall > 0.0)) return 0.5 * ds;
+  return std::min(ds, ds * outer2 / fall);
+}
+
+}  // namespace
+
 PatchMeasures measure_patch(const KpPatch& patch) {
   // Direct sums over the strips: the same numbers as Boost.Geometry on the staircase outline,
   // without building it (this runs once per patch and position in the wear loop).
   double area_over_2ds = 0.0;
   double moment_y = 0.0;
   double max_xl = 0.0;
-  double y_min = 0.0;
-  double y_max = 0.0;
-  bool any = false;
-  for (const KpStrip& strip : patch.strips) {
+  std::size_t first = patch.strips.size(), last = 0;
+  for (std::size_t k = 0; k < patch.strips.size(); ++k) {
+    const KpStrip& strip = patch.strips[k];
     if (!(strip.x_lead > 0.0)) continue;
     area_over_2ds += strip.x_lead;
     moment_y += strip.x_lead * strip.s;
     max_xl = std::max(max_xl, strip.x_lead);
-    if (!any) y_min = strip.s - 0.5 * patch.ds;
-    y_max = strip.s + 0.5 * patch.ds;
-    any = true;
+    first = std::min(first, k);
+    last = k;
   }
-  require(any, "patch.strips", static_cast<double>(patch.strips.size()),
+  require(first < patch.strips.size(), "patch.strips", static_cast<double>(patch.strips.size()),
           "no strip of the patch is in contact");
+  const std::vector<KpStrip>& strips = patch.strips;
+  const double y_min =
+      strips[first].s -
+      edge_reach(strips[first], first + 1 <= last ? &strips[first + 1] : nullptr, patch.ds);
+  const double y_max =
+      strips[last].s +
+      edge_reach(strips[last], last >= first + 1 ? &strips[last - 1] : nullptr, patch.ds);
   PatchMeasures m;
   m.area = 2.0 * patch.ds * area_over_2ds;
   m.centroid_x = 0.0;

@@ -1,40 +1,40 @@
 #pragma once
-// Readers of a scene's TOML keys: numbers with their range, whole numbers, strings, booleans,
-// and tables whose unknown keys are refused with the allowed ones and a unit hint. Every
-// message starts with the scene line and the key's full name.
+// The scene's key readers: core::TomlKeys with "scene" in every message.
 
-#include <toml++/toml.h>
-
-#include <functional>
-#include <map>
-#include <string>
-#include <string_view>
+#include "wheelwear/core/toml_keys.hpp"
 
 namespace wheelwear::pipeline::detail {
 
-// "scene line N: key".
-std::string where(const toml::source_region& source, std::string_view key);
+using KeyHandler = core::TomlKeyHandler;
 
-// A number as messages print it.
-std::string format(double v);
+inline const core::TomlKeys& scene_keys() {
+  static const core::TomlKeys keys("scene");
+  return keys;
+}
 
-// One key's reader: it receives the node and the key's full name for messages.
-using KeyHandler = std::function<void(const toml::node&, const std::string&)>;
-
-// A number in [lo, hi] (integers convert); InputError naming the key, the value and `meaning`.
-double number(const toml::node& node, const std::string& key, double lo, double hi,
-              std::string_view meaning);
-// A whole number in [lo, hi].
-int integer(const toml::node& node, const std::string& key, int lo, int hi,
-            std::string_view meaning);
-// A quoted string.
-std::string text(const toml::node& node, const std::string& key);
-// true or false.
-bool boolean(const toml::node& node, const std::string& key);
-
-// Calls each key's handler; an unknown key is refused with the allowed ones (and "did you mean
-// radius_m" when only its unit suffix is wrong).
-void read_table(const toml::table& table, const std::string& section,
-                const std::map<std::string, KeyHandler>& handlers);
+inline std::string where(const toml::source_region& source, std::string_view key) {
+  return scene_keys().where(source, key);
+}
+inline std::string format(double v) {
+  return core::TomlKeys::format(v);
+}
+inline double number(const toml::node& node, const std::string& key, double lo, double hi,
+                     std::string_view meaning) {
+  return scene_keys().number(node, key, lo, hi, meaning);
+}
+inline int integer(const toml::node& node, const std::string& key, int lo, int hi,
+                   std::string_view meaning) {
+  return scene_keys().integer(node, key, lo, hi, meaning);
+}
+inline std::string text(const toml::node& node, const std::string& key) {
+  return scene_keys().text(node, key);
+}
+inline bool boolean(const toml::node& node, const std::string& key) {
+  return scene_keys().boolean(node, key);
+}
+inline void read_table(const toml::table& table, const std::string& section,
+                       const std::map<std::string, KeyHandler>& handlers) {
+  scene_keys().read_table(table, section, handlers);
+}
 
 }  // namespace wheelwear::pipeline::detail

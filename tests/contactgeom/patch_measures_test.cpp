@@ -96,14 +96,48 @@ TEST(PatchMeasures, StripPathEqualsBoostGeometryOnTheOutline) {
   EXPECT_NEAR(fast.area, ref.area, 1e-20);
   EXPECT_NEAR(fast.area, 2e-4 * (1 + 2 + 3 + 3 + 2.5 + 1 + 0.5) * 1e-3, 1e-20);
   EXPECT_NEAR(fast.length, ref.length, 1e-16);
-  EXPECT_NEAR(fast.width, ref.width, 1e-16);
-  EXPECT_NEAR(fast.width, 8e-4, 1e-16);
   EXPECT_NEAR(fast.centroid_x, ref.centroid_x, 1e-16);
   EXPECT_NEAR(fast.centroid_y, ref.centroid_y, 1e-16);
-  EXPECT_NEAR(fast.W1, ref.W1, 1e-16);
-  EXPECT_NEAR(fast.W2, ref.W2, 1e-16);
-  EXPECT_NEAR(fast.W1, 7.5e-4 - 2.2e-4, 1e-16);
-  EXPECT_NEAR(fast.W2, 2.2e-4 + 0.5e-4, 1e-16);
+  // The edges: the staircase ends half a strip beyond the outer strips' centres (8e-4 wide);
+  // measure_patch extrapolates x_lead^2 to zero from the two outer strips on each side:
+  // (1e-3)^2 / ((2e-3)^2 - (1e-3)^2) = 1/3 of a strip below the first, and
+  // (0.5e-3)^2 / ((1e-3)^2 - (0.5e-3)^2) = 1/3 of a strip beyond the last.
+  const double third = 1e-4 / 3.0;
+  EXPECT_NEAR(ref.width, 8e-4, 1e-16);
+  EXPECT_NEAR(fast.width, 7e-4 + 2.0 * third, 1e-16);
+  EXPECT_NEAR(fast.W1, 7e-4 + third - 2.2e-4, 1e-16);
+  EXPECT_NEAR(fast.W2, 2.2e-4 + third, 1e-16);
+}
+
+// A parabolic gap (x_lead^2 = c (L^2 - s^2)) on strips 0.1 mm wide, its half-width L growing
+// across three strips: the measured width follows 2 L continuously, where the staircase jumps
+// by a strip each time one comes into contact.
+TEST(PatchMeasures, WidthIsContinuousAsStripsComeIntoContact) {
+  const double ds = 1e-4;
+  double previous = 0.0;
+  int compared = 0;
+  for (int step = 0; step <= 300; ++step) {
+    const double L = 0.21e-3 + step * 1e-6;  // 0.21 ... 0.51 mm: strips at 0.3, 0.4, 0.5 mm enter
+    KpPatch p;
+    p.ds = ds;
+    p.s_O = 0.0;
+    for (int k = -6; k <= 6; ++k) {
+      const double s = k * ds;
+      const double x = L * L > s * s ? 3.0 * std::sqrt(L * L - s * s) : 0.0;
+      p.strips.push_back({s, x, 1e9 * x});
+    }
+    const PatchMeasures m = measure_patch(p);
+    // The chord of a parabola through its two outer strips reaches beyond its root, most just
+    // after a strip has come into contact: 0.343 ds each side at worst over this sweep; 0.375 ds
+    // each side bounds it (the staircase's error reaches a whole strip).
+    EXPECT_NEAR(m.width, 2.0 * L, 0.75 * ds) << "L " << L;
+    // Continuous: a 1 um step of L moves the width by about 2 um; a strip entering would jump
+    // it by 0.1 mm (the staircase) — 10 um bounds the slope of the extrapolation's root.
+    if (step > 0) EXPECT_LT(std::abs(m.width - previous), 10e-6) << "L " << L;
+    previous = m.width;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 301);
 }
 
 TEST(PatchMeasures, RejectsDegenerateInput) {

@@ -37,9 +37,13 @@ using PatchRing = std::vector<Eigen::Vector2d>;
 PatchMeasures measure_polygons(const std::vector<PatchRing>& rings, double y_O);
 
 /// Measures of a Kik-Piotrowski patch computed directly from its strips (the fast path):
-/// area = sum 2 x_lead ds, length = 2 max x_lead, width from the outer edges of the first and
-/// last strips in contact, centroid_x = 0 (strips are symmetric in x), O = patch.s_O.
-/// Equal to measure_polygons(patch_outline(patch), patch.s_O) to rounding (tested).
+/// area = sum 2 x_lead ds, length = 2 max x_lead, centroid_x = 0 (strips are symmetric in x),
+/// O = patch.s_O: equal to measure_polygons(patch_outline(patch), patch.s_O) to rounding
+/// (tested). The width ends where x_lead^2, extrapolated linearly from the two outermost strips
+/// in contact on each side, falls to zero (within one strip beyond the outer strip's centre;
+/// half a strip, as the staircase outline, for a one-strip side): it moves continuously as a
+/// strip comes into contact, so the SDEC and the creep forces are continuous in the wheelset's
+/// position, which Newton's method on a vehicle's balance needs.
 /// Throws InputError when no strip of the patch is in contact.
 PatchMeasures measure_patch(const KpPatch& patch);
 

@@ -1,16 +1,16 @@
-#include "scene_keys.hpp"
+#include "wheelwear/core/toml_keys.hpp"
 
 #include <cmath>
 #include <sstream>
 
 #include "wheelwear/core/input_error.hpp"
 
-namespace wheelwear::pipeline::detail {
+namespace wheelwear::core {
 
 namespace {
 
 // A hint for a key that is unknown only by its unit suffix (radius_mm for radius_m).
-std::string unit_hint(std::string_view key, const std::map<std::string, KeyHandler>& known) {
+std::string unit_hint(std::string_view key, const std::map<std::string, TomlKeyHandler>& known) {
   const std::size_t cut = key.rfind('_');
   if (cut == std::string_view::npos) return {};
   const std::string_view stem = key.substr(0, cut);
@@ -25,20 +25,20 @@ std::string unit_hint(std::string_view key, const std::map<std::string, KeyHandl
 
 }  // namespace
 
-std::string where(const toml::source_region& source, std::string_view key) {
-  std::ostringstream out;
-  out << "scene line " << source.begin.line << ": " << key;
-  return out.str();
-}
-
-std::string format(double v) {
+std::string TomlKeys::format(double v) {
   std::ostringstream out;
   out << v;
   return out.str();
 }
 
-double number(const toml::node& node, const std::string& key, double lo, double hi,
-              std::string_view meaning) {
+std::string TomlKeys::where(const toml::source_region& source, std::string_view key) const {
+  std::ostringstream out;
+  out << document_ << " line " << source.begin.line << ": " << key;
+  return out.str();
+}
+
+double TomlKeys::number(const toml::node& node, const std::string& key, double lo, double hi,
+                        std::string_view meaning) const {
   const auto value = node.value<double>();  // integers convert too
   if (!value || node.is_boolean()) {
     throw InputError(where(node.source(), key) + ": expected a number (" + std::string(meaning) +
@@ -46,14 +46,14 @@ double number(const toml::node& node, const std::string& key, double lo, double 
   }
   if (!std::isfinite(*value) || *value < lo || *value > hi) {
     throw InputError(where(node.source(), key) + " = " + format(*value) + ": " +
-                     std::string(meaning) + " must lie in [" + format(lo) + ", " + format(hi) +
-                     "]");
+                     std::string(meaning) + " must lie in [" + format(lo) + ", " +
+                     format(hi) + "]");
   }
   return *value;
 }
 
-int integer(const toml::node& node, const std::string& key, int lo, int hi,
-            std::string_view meaning) {
+int TomlKeys::integer(const toml::node& node, const std::string& key, int lo, int hi,
+                      std::string_view meaning) const {
   const auto value = node.value_exact<int64_t>();
   if (!value || *value < lo || *value > hi) {
     throw InputError(where(node.source(), key) + ": expected a whole number in [" +
@@ -63,20 +63,20 @@ int integer(const toml::node& node, const std::string& key, int lo, int hi,
   return static_cast<int>(*value);
 }
 
-std::string text(const toml::node& node, const std::string& key) {
+std::string TomlKeys::text(const toml::node& node, const std::string& key) const {
   const auto value = node.value_exact<std::string>();
   if (!value) throw InputError(where(node.source(), key) + ": expected a quoted string");
   return *value;
 }
 
-bool boolean(const toml::node& node, const std::string& key) {
+bool TomlKeys::boolean(const toml::node& node, const std::string& key) const {
   const auto value = node.value_exact<bool>();
   if (!value) throw InputError(where(node.source(), key) + ": expected true or false");
   return *value;
 }
 
-void read_table(const toml::table& table, const std::string& section,
-                const std::map<std::string, KeyHandler>& handlers) {
+void TomlKeys::read_table(const toml::table& table, const std::string& section,
+                          const std::map<std::string, TomlKeyHandler>& handlers) const {
   for (auto&& [key, node] : table) {
     const std::string name(key.str());
     const auto handler = handlers.find(name);
@@ -91,4 +91,4 @@ void read_table(const toml::table& table, const std::string& section,
   }
 }
 
-}  // namespace wheelwear::pipeline::detail
+}  // namespace wheelwear::core

@@ -1,0 +1,210 @@
+// `wheelwear curving`: the quasi-static curving of the scene's vehicle in a constant curve.
+
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "json_writer.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
+#include "wheelwear/pipeline/scene.hpp"
+#include "wheelwear/pipeline/state_kernel.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
+#include "wheelwear/vehicle/quasi_static_curving.hpp"
+#include "wheelwear/vehicle/vehicle_file.hpp"
+
+namespace wheelwear::cli {
+
+namespace {
+
+struct CurvingArgs {
+  std::string scene;
+  std::string vehicle;
+  double radius = 0.0;
+  double cant = 0.0;
+  double speed = 0.0;
+  std::optional<double> friction;
+  bool json = false;
+  std::string export_vehicle;
+  bool overwrite = false;
+};
+
+// One wheelset's contact model from the scene: its wheel on its rail in its track, the scene's
+// normal-problem options and tangential method.
+vehicle::WheelsetModel wheelset_model(const pipeline::Scene& scene) {
+  const pipeline::StateKernel kernel(scene);
+  const profiles::Profile wheel =
+      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
+  const contactgeom::WheelRailPair pair = kernel.pair(wheel);
+  vehicle::WheelsetModel model{{pair, pair}};
+  model.contact.strip_width = scene.strip_width;
+  model.contact.kp.epsilon = scene.virtual_penetration;
+  model.contact.validate();
+  model.method = kernel.method();
+  model.solve.fastsim.nx = scene.grid_nx;
+  model.solve.fastsim.ny = scene.grid_ny;
+  model.solve.fastsim.scheme = scene.scheme;
+  model.solve.exact_grid.nx = scene.grid_nx;
+  model.solve.exact_grid.ny = scene.grid_ny;
+  model.solve.validate();
+  const double shear = scene.youngs_modulus / (2.0 * (1.0 + scene.poisson));
+  model.material = {shear, scene.poisson};
+  model.lateral_arm = scene.lateral_arm;
+  return model;
+}
+
+std::string wheel_json(const vehicle::WheelForces& w, const char* side) {
+  JsonObject o;
+  o.add("side", side)
+      .add("Q", w.Q)
+      .add("Y", w.Y)
+      .add("contact_angle", w.contact_angle)
+      .add("Fx", w.Fx)
+      .add("Fy", w.Fy)
+      .add("N", w.N)
+      .add("status", contactgeom::status_name(w.status))
+      .add("patches", static_cast<int>(w.patches.size()));
+  return o.str();
+}
+
+// A wheelset's status: ok when both wheels are, else the first wheel's that is not.
+const char* wheelset_status(const vehicle::WheelsetForces& f) {
+  for (const vehicle::WheelForces& w : f.wheels)
+    if (w.status != contactgeom::WheelRailStatus::ok) return contactgeom::status_name(w.status);
+  return "ok";
+}
+
+void print_json(const vehicle::VehicleCurving& c) {
+  std::vector<std::string> wheelsets;
+  for (const vehicle::CurvingWheelset& w : c.wheelsets) {
+    JsonObject o;
+    o.add("x", w.x)
+        .add("dy", w.state.dy)
+        .add("angle_of_attack", w.state.yaw)
+        .add("spin", w.state.spin)
+        .add("roll", w.forces.contact.roll)
+        .add("Fx_axle", w.forces.Fx_axle)
+        .add("axle_torque", w.forces.axle_torque)
+        .add("sum_Y", w.forces.wheels[0].Y + w.forces.wheels[1].Y)
+        .add("status", wheelset_status(w.forces))
+        .add_raw("wheels", json_array({wheel_json(w.forces.wheels[0], "left"),
+                                       wheel_json(w.forces.wheels[1], "right")}));
+    wheelsets.push_back(o.str());
+  }
+  JsonObject body;
+  body.add("y", c.car_body.y).add("yaw", c.car_body.yaw);
+  std::vector<std::string> bogies;
+  for (const vehicle::BodyPlacement& b : c.bogies)
+    bogies.push_back(JsonObject().add("y", b.y).add("yaw", b.yaw).str());
+  JsonObject out;
+  out.add("converged", c.converged)
+      .add("message", c.message)
+      .add("cant_deficiency", c.cant_deficiency)
+      .add("iterations", c.iterations)
+      .add("wheelset_evaluations", c.wheelset_evaluations)
+      .add_raw("car_body", body.str())
+      .add_raw("bogies", json_array(bogies))
+      .add_raw("wheelsets", json_array(wheelsets));
+  std::cout << out.str() << "\n";
+}
+
+void print_text(const vehicle::VehicleCurving& c, const vehicle::SteadyCurve& curve) {
+  std::printf("quasi-static curving: R %.0f m, cant %.0f mm, %.1f m/s, friction %.2f: %s\n",
+              curve.running.curve_radius, curve.cant * 1e3, curve.running.speed,
+              curve.running.friction,
+              c.converged ? "converged" : ("NOT converged: " + c.message).c_str());
+  std::printf("cant deficiency %.0f mm; car body %+.1f mm, bogies %+.2f / %+.2f mm\n",
+              c.cant_deficiency * 1e3, c.car_body.y * 1e3, c.bogies[0].y * 1e3,
+              c.bogies[1].y * 1e3);
+  std::printf("%7s %9s %9s %9s | %-27s | %-27s\n", "x [m]", "dy [mm]", "aoa[mrad]", "Fx [N]",
+              "left  Q / Y [kN], angle[deg]", "right Q / Y [kN], angle[deg]");
+  for (const vehicle::CurvingWheelset& w : c.wheelsets) {
+    const vehicle::WheelForces& l = w.forces.wheels[0];
+    const vehicle::WheelForces& r = w.forces.wheels[1];
+    std::printf("%7.2f %9.3f %9.3f %9.1f | %7.2f %7.2f %6.1f %-5s| %7.2f %7.2f %6.1f %-5s\n", w.x,
+                w.state.dy * 1e3, w.state.yaw * 1e3, w.forces.Fx_axle, l.Q * 1e-3, l.Y * 1e-3,
+                l.contact_angle * 180.0 / M_PI, contactgeom::status_name(l.status), r.Q * 1e-3,
+                r.Y * 1e-3, r.contact_angle * 180.0 / M_PI, contactgeom::status_name(r.status));
+  }
+}
+
+void export_vehicle(const CurvingArgs& args) {
+  const std::filesystem::path dir(args.export_vehicle);
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path file = dir / "vehicle.toml";
+  if (std::filesystem::exists(file) && !args.overwrite)
+    throw InputError("--export-default-vehicle: " + file.string() +
+                     " exists; pass --overwrite to replace it");
+  core::write_file_atomically(file, std::string(vehicle::default_vehicle_text()));
+  std::cout << "wrote " << file.string() << "; use it with: wheelwear curving --vehicle "
+            << file.string() << " --radius 500 --cant 0.1 --speed 20\n";
+}
+
+void curving(const CurvingArgs& args) {
+  if (!args.export_vehicle.empty()) {
+    export_vehicle(args);
+    return;
+  }
+  const pipeline::Scene scene =
+      args.scene.empty() ? pipeline::default_scene() : pipeline::load_scene(args.scene);
+  const vehicle::Vehicle v =
+      args.vehicle.empty() ? vehicle::default_vehicle() : vehicle::read_vehicle(args.vehicle);
+  vehicle::SteadyCurve curve;
+  curve.running = {args.speed, args.radius, args.friction.value_or(scene.friction)};
+  curve.cant = args.cant;
+  require(std::isfinite(args.speed) && args.speed > 0.0, "--speed", args.speed,
+          "the speed must be positive (m/s)");
+  require(std::isfinite(args.radius) && (args.radius == 0.0 || std::abs(args.radius) >= 50.0),
+          "--radius", args.radius, "give 0 for tangent track or |R| >= 50 m (+ right-hand)");
+  require(args.radius != 0.0 || args.cant == 0.0, "--cant", args.cant,
+          "tangent track (--radius 0) has no cant");
+  curve.validate();
+  const vehicle::WheelsetModel model = wheelset_model(scene);
+  const vehicle::VehicleCurving c =
+      vehicle::solve_vehicle_curving(v, {model, model, model, model}, curve);
+  if (args.json)
+    print_json(c);
+  else
+    print_text(c, curve);
+  if (!c.converged) throw InputError("curving did not converge: " + c.message);
+}
+
+}  // namespace
+
+void add_curving_command(CLI::App& app) {
+  auto args = std::make_shared<CurvingArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "curving",
+      "Quasi-static curving of a vehicle (car body, two bogies, four wheelsets) in a constant\n"
+      "curve: the steady state where every body is in balance and every axle rolls freely,\n"
+      "with the rails' forces from the scene's contact chain. Frames: docs/architecture.md;\n"
+      "the model: docs/vehicle.md. Without SCENE the built-in scene's profiles (S1002 on 60E1\n"
+      "1:40); without --vehicle the built-in Manchester benchmark coach.\n"
+      "Example: wheelwear curving --radius 500 --cant 0.1 --speed 20 --json");
+  cmd->add_option("scene", args->scene, "scene file (TOML) for profiles, track and contact model")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--vehicle", args->vehicle, "vehicle file (TOML); the built-in when omitted")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--radius", args->radius,
+                  "curve radius [m]: > 0 right-hand (left rail outer), < 0 left-hand, 0 tangent");
+  cmd->add_option("--cant", args->cant, "cant: height of the outer rail above the inner [m], >= 0");
+  cmd->add_option("--speed", args->speed, "vehicle speed [m/s], > 0");
+  cmd->add_option("--friction", args->friction,
+                  "friction coefficient, top of rail and flange alike (default: the scene's)")
+      ->check(CLI::Range(0.01, 1.0));
+  cmd->add_flag("--json", args->json, "print the result as JSON");
+  cmd->add_option("--export-default-vehicle", args->export_vehicle,
+                  "write the built-in vehicle (vehicle.toml) into this directory and exit");
+  cmd->add_flag("--overwrite", args->overwrite, "replace an existing exported file");
+  cmd->callback([args] {
+    if (args->export_vehicle.empty() && args->speed == 0.0)
+      throw InputError("--speed: give the vehicle's speed in m/s (e.g. --speed 20)");
+    curving(*args);
+  });
+}
+
+}  // namespace wheelwear::cli
