@@ -133,7 +133,9 @@ TEST(PatchMeasures, WidthIsContinuousAsStripsComeIntoContact) {
     EXPECT_NEAR(m.width, 2.0 * L, 0.75 * ds) << "L " << L;
     // Continuous: a 1 um step of L moves the width by about 2 um; a strip entering would jump
     // it by 0.1 mm (the staircase) — 10 um bounds the slope of the extrapolation's root.
-    if (step > 0) EXPECT_LT(std::abs(m.width - previous), 10e-6) << "L " << L;
+    if (step > 0) {
+      EXPECT_LT(std::abs(m.width - previous), 10e-6) << "L " << L;
+    }
     previous = m.width;
     ++compared;
   }
