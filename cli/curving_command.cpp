@@ -41,18 +41,11 @@ vehicle::WheelsetModel wheelset_model(const pipeline::Scene& scene) {
       profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
   const contactgeom::WheelRailPair pair = kernel.pair(wheel);
   vehicle::WheelsetModel model{{pair, pair}};
-  model.contact.strip_width = scene.strip_width;
-  model.contact.kp.epsilon = scene.virtual_penetration;
-  model.contact.validate();
+  model.contact = kernel.contact_options();
   model.method = kernel.method();
-  model.solve.fastsim.nx = scene.grid_nx;
-  model.solve.fastsim.ny = scene.grid_ny;
-  model.solve.fastsim.scheme = scene.scheme;
-  model.solve.exact_grid.nx = scene.grid_nx;
-  model.solve.exact_grid.ny = scene.grid_ny;
-  model.solve.validate();
-  const double shear = scene.youngs_modulus / (2.0 * (1.0 + scene.poisson));
-  model.material = {shear, scene.poisson};
+  model.solve = kernel.solve_options();
+  model.solve.fastsim.cell_fields = false;  // the vehicle needs the forces only
+  model.material = kernel.material();
   model.lateral_arm = scene.lateral_arm;
   return model;
 }

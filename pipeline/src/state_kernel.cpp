@@ -119,6 +119,10 @@ StateKernel::StateKernel(const Scene& scene)
   solve_options_.validate();
 }
 
+tangential::Material StateKernel::material() const {
+  return {scene_.youngs_modulus / (2.0 * (1.0 + scene_.poisson)), scene_.poisson};
+}
+
 contactgeom::WheelRailPair StateKernel::pair(const profiles::Profile& wheel) const {
   contactgeom::WheelRailPair p(wheel, *rail_);
   p.gauge = scene_.gauge;
@@ -160,8 +164,7 @@ WheelOutcome StateKernel::wheel(const contactgeom::WheelsetContact& both, int si
   const contactgeom::WheelsetMotion motion = wheel_motion(s, side, scene_.lateral_arm);
   const std::optional<tangential::Creepages>& given =
       side == 0 ? s.creepages_left : s.creepages_right;
-  const tangential::Material material{scene_.youngs_modulus / (2.0 * (1.0 + scene_.poisson)),
-                                      scene_.poisson};
+  const tangential::Material material = this->material();
   tangential::SolveOptions options = solve_options_;
   // Only the fields the wear needs, unless the cells are kept for T gamma maps.
   options.fastsim.field_set =

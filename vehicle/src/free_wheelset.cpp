@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/vehicle/route.hpp"
 
 namespace wheelwear::vehicle {
 
@@ -18,10 +19,17 @@ double SteadyCurve::centripetal_force(double mass) const {
                  kGravity * std::sin(phi));
 }
 
+double SteadyCurve::normal_force(double mass) const {
+  const double phi = cant_angle();
+  const double centrifugal = running.curve_radius == 0.0
+                                 ? 0.0
+                                 : running.speed * running.speed / std::abs(running.curve_radius);
+  return mass * (kGravity * std::cos(phi) + centrifugal * std::sin(phi));
+}
+
 double SteadyCurve::cant_deficiency() const {
   if (running.curve_radius == 0.0) return 0.0;
-  return cant_base * running.speed * running.speed / (kGravity * std::abs(running.curve_radius)) -
-         cant;
+  return vehicle::cant_deficiency(running.speed, 1.0 / running.curve_radius, cant, cant_base);
 }
 
 void SteadyCurve::validate() const {

@@ -34,15 +34,6 @@ double applied_force(const SteadyCurve& curve, double mass) {
   return outward(curve) * curve.centripetal_force(mass);
 }
 
-// Its weight normal to the track plane [N].
-double normal_weight(const SteadyCurve& curve, double mass) {
-  const double phi = curve.cant_angle();
-  const double r = curve.running.curve_radius;
-  const double centrifugal =
-      r == 0.0 ? 0.0 : curve.running.speed * curve.running.speed / std::abs(r);
-  return mass * (kGravity * std::cos(phi) + centrifugal * std::sin(phi));
-}
-
 // A suspension joint's relative displacement and yaw of a child body at distance d ahead of its
 // parent, in the parent's frame (see the header).
 struct JointDeflection {
@@ -216,11 +207,14 @@ class CurvingProblem {
           (forces_vector(contact(k, ws.state, ws.load_left + dQ, ws.load_right)) - f0) / dQ;
       const Eigen::Vector3d by_right =
           (forces_vector(contact(k, ws.state, ws.load_left, ws.load_right + dQ)) - f0) / dQ;
+      // The unknowns of the car body's, the bogie's and the wheelset's shift, in wheel_loads'
+      // order of arguments.
       const std::array<int, 3> shifts{0, bogie_index(k / 2), w};
-      for (int column : shifts) {
+      for (int j = 0; j < 3; ++j) {
         std::array<double, 3> y{p.car_body.y, p.bogies[k / 2].y, p.wheelsets[k].dy};
         const double h = 1e-4;
-        y[column == 0 ? 0 : (column == w ? 2 : 1)] += h;
+        y[j] += h;
+        const int column = shifts[j];
         const auto moved = wheel_loads(v_, curve_, models_[k].lateral_arm, y[0], y[1], y[2]);
         J.block<3, 1>(w, column) +=
             by_left * (moved[0] - ws.load_left) / h + by_right * (moved[1] - ws.load_right) / h;
@@ -354,7 +348,7 @@ std::array<double, 2> wheel_loads(const Vehicle& v, const SteadyCurve& curve, do
       Share{v.wheelset.body.mass, v.wheelset.body.cg_height, wheelset_y}};
   double weight = 0.0, moment = 0.0;  // e (Q_left - Q_right) = moment
   for (const Share& s : shares) {
-    const double w = normal_weight(curve, s.mass);
+    const double w = curve.normal_force(s.mass);
     weight += w;
     moment += w * s.y + s.height * applied_force(curve, s.mass);
   }

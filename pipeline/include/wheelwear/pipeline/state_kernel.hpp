@@ -118,6 +118,12 @@ class StateKernel {
   const profiles::Profile& rail() const { return *rail_; }
   /// The tangential method the scene's model and tangential_method name.
   tangential::Method method() const { return method_; }
+  /// The normal problem's options from the scene (strip width, virtual penetration).
+  const contactgeom::WheelRailOptions& contact_options() const { return options_; }
+  /// The tangential solve's options from the scene (grid, scheme; every cell's fields kept).
+  const tangential::SolveOptions& solve_options() const { return solve_options_; }
+  /// The combined material of wheel and rail: shear modulus E / (2 (1 + nu)) and nu.
+  tangential::Material material() const;
 
  private:
   Scene scene_;

@@ -23,6 +23,9 @@ struct SteadyCurve {
   /// The in-plane force towards the curve centre that a body of mass m needs [N]:
   /// m (V^2/|R| cos(cant angle) - g sin(cant angle)); 0 on tangent track.
   double centripetal_force(double mass) const;
+  /// The force normal to the track plane that carries a body of mass m [N]:
+  /// m (g cos(cant angle) + V^2/|R| sin(cant angle)).
+  double normal_force(double mass) const;
   /// Cant deficiency [m]: cant_base V^2 / (g |R|) - cant (EN 13803's approximation).
   double cant_deficiency() const;
   void validate() const;  ///< throws InputError naming the bad field
