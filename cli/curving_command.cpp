@@ -13,6 +13,7 @@
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/scene.hpp"
 #include "wheelwear/pipeline/state_kernel.hpp"
+#include "wheelwear/pipeline/vehicle_run.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/vehicle/quasi_static_curving.hpp"
 #include "wheelwear/vehicle/vehicle_file.hpp"
@@ -32,23 +33,6 @@ struct CurvingArgs {
   std::string export_vehicle;
   bool overwrite = false;
 };
-
-// One wheelset's contact model from the scene: its wheel on its rail in its track, the scene's
-// normal-problem options and tangential method.
-vehicle::WheelsetModel wheelset_model(const pipeline::Scene& scene) {
-  const pipeline::StateKernel kernel(scene);
-  const profiles::Profile wheel =
-      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
-  const contactgeom::WheelRailPair pair = kernel.pair(wheel);
-  vehicle::WheelsetModel model{{pair, pair}};
-  model.contact = kernel.contact_options();
-  model.method = kernel.method();
-  model.solve = kernel.solve_options();
-  model.solve.fastsim.cell_fields = false;  // the vehicle needs the forces only
-  model.material = kernel.material();
-  model.lateral_arm = scene.lateral_arm;
-  return model;
-}
 
 std::string wheel_json(const vehicle::WheelForces& w, const char* side) {
   JsonObject o;
@@ -106,10 +90,11 @@ void print_json(const vehicle::VehicleCurving& c) {
 }
 
 void print_text(const vehicle::VehicleCurving& c, const vehicle::SteadyCurve& curve) {
-  std::printf("quasi-static curving: R %.0f m, cant %.0f mm, %.1f m/s, friction %.2f: %s\n",
-              curve.running.curve_radius, curve.cant * 1e3, curve.running.speed,
-              curve.running.friction,
-              c.converged ? "converged" : ("NOT converged: " + c.message).c_str());
+  std::printf(
+      "quasi-static curving: R %.0f m, cant %.0f mm, %.1f m/s, friction %.2f (flange %.2f): %s\n",
+      curve.running.curve_radius, curve.cant * 1e3, curve.running.speed, curve.running.friction,
+      curve.running.rail_friction().flange,
+      c.converged ? "converged" : ("NOT converged: " + c.message).c_str());
   std::printf("cant deficiency %.0f mm; car body %+.1f mm, bogies %+.2f / %+.2f mm\n",
               c.cant_deficiency * 1e3, c.car_body.y * 1e3, c.bogies[0].y * 1e3,
               c.bogies[1].y * 1e3);
@@ -148,6 +133,7 @@ void curving(const CurvingArgs& args) {
       args.vehicle.empty() ? vehicle::default_vehicle() : vehicle::read_vehicle(args.vehicle);
   vehicle::SteadyCurve curve;
   curve.running = {args.speed, args.radius, args.friction.value_or(scene.friction)};
+  if (!args.friction) curve.running.friction_flange = scene.friction_flange;
   curve.cant = args.cant;
   require(std::isfinite(args.speed) && args.speed > 0.0, "--speed", args.speed,
           "the speed must be positive (m/s)");
@@ -156,7 +142,10 @@ void curving(const CurvingArgs& args) {
   require(args.radius != 0.0 || args.cant == 0.0, "--cant", args.cant,
           "tangent track (--radius 0) has no cant");
   curve.validate();
-  const vehicle::WheelsetModel model = wheelset_model(scene);
+  const pipeline::StateKernel kernel(scene);
+  const profiles::Profile wheel =
+      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
+  const vehicle::WheelsetModel model = pipeline::wheelset_model(kernel, wheel, wheel);
   const vehicle::VehicleCurving c =
       vehicle::solve_vehicle_curving(v, {model, model, model, model}, curve);
   if (args.json)

@@ -71,9 +71,16 @@ void show_progress(const pipeline::RunProgress& p) {
                           std::string(static_cast<std::size_t>(width - filled), '.');
   // ETA from the distance rate so far; the step lengths vary, the distance is what remains.
   const double eta = done > 0.0 ? p.elapsed * (1.0 - done) / done : 0.0;
-  std::fprintf(stderr, "%s[%s] step %d  %.1f / %.1f km  %.0f states/s  ETA %s%s%s", tty ? "\r" : "",
-               bar.c_str(), p.step, p.distance / 1e3, p.total_distance / 1e3,
+  std::string vehicle;
+  if (p.vehicle_solved)
+    vehicle = "  vehicle solved" + (p.unconverged_cases > 0
+                                        ? " (" + std::to_string(p.unconverged_cases) +
+                                              " conditions not converged, last iterate used)"
+                                        : std::string());
+  std::fprintf(stderr, "%s[%s] step %d  %.1f / %.1f km  %.0f states/s  ETA %s%s%s%s",
+               tty ? "\r" : "", bar.c_str(), p.step, p.distance / 1e3, p.total_distance / 1e3,
                p.evaluations_per_second, done >= 1.0 ? "0 s" : duration(eta).c_str(),
+               vehicle.c_str(),
                p.dropped.dropped_patches_weight > 0.0 ? dropped_note(p.dropped).c_str() : "",
                tty ? "   " : "\n");
   if (tty && done >= 1.0) std::fputc('\n', stderr);

@@ -4,6 +4,8 @@ add_library(wheelwear_compile_options INTERFACE)
 add_library(wheelwear::compile_options ALIAS wheelwear_compile_options)
 target_compile_options(wheelwear_compile_options INTERFACE
   -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-sign-conversion
+  # Value types are built from their leading members, the rest keeping their defaults.
+  -Wno-missing-field-initializers
   # errno is never read; without it sqrt can be vectorised.
   -fno-math-errno)
 if(WHEELWEAR_NATIVE)

@@ -56,20 +56,29 @@ GeometryIndex index_geometries(const std::vector<WheelsetStateSpec>& states, boo
 
 }  // namespace
 
-std::vector<double> state_shares(const Scene& scene) {
+std::vector<double> state_shares(const std::vector<WheelsetStateSpec>& states) {
   double total = 0.0;
-  for (const auto& s : scene.states) total += s.weight;
+  for (const auto& s : states) total += s.weight;
   std::vector<double> shares;
-  for (const auto& s : scene.states) shares.push_back(s.weight / total);
+  for (const auto& s : states) shares.push_back(s.weight / total);
   return shares;
 }
 
-std::vector<double> wheel_weights(const Scene& scene) {
-  const std::vector<double> shares = state_shares(scene);
+std::vector<double> state_shares(const Scene& scene) {
+  return state_shares(scene.states);
+}
+
+std::vector<double> wheel_weights(const std::vector<WheelsetStateSpec>& states,
+                                  bool separate_wheels) {
+  const std::vector<double> shares = state_shares(states);
   std::vector<double> weights(2 * shares.size());
   for (std::size_t i = 0; i < shares.size(); ++i)
-    weights[2 * i] = weights[2 * i + 1] = shares[i] * (scene.separate_wheels ? 1.0 : 0.5);
+    weights[2 * i] = weights[2 * i + 1] = shares[i] * (separate_wheels ? 1.0 : 0.5);
   return weights;
+}
+
+std::vector<double> wheel_weights(const Scene& scene) {
+  return wheel_weights(scene.states, scene.separate_wheels);
 }
 
 std::vector<std::pair<std::string, double>> DroppedStates::named() const {
@@ -125,8 +134,13 @@ void count_dropped(const StateOutcome& state, double share, DroppedStates& d) {
 
 void reduce_states(const Scene& scene, const std::vector<StateOutcome>& states,
                    CollectiveWear& out) {
-  const std::vector<double> shares = state_shares(scene);
-  const std::vector<double> weights = wheel_weights(scene);
+  reduce_states(scene, scene.states, states, out);
+}
+
+void reduce_states(const Scene& scene, const std::vector<WheelsetStateSpec>& specs,
+                   const std::vector<StateOutcome>& states, CollectiveWear& out) {
+  const std::vector<double> shares = state_shares(specs);
+  const std::vector<double> weights = wheel_weights(specs, scene.separate_wheels);
   for (std::size_t i = 0; i < states.size(); ++i) {
     if (states[i].dropped()) {
       count_dropped(states[i], shares[i], out.dropped);
@@ -155,6 +169,11 @@ CollectiveEvaluator::CollectiveEvaluator(const Scene& scene, bool reuse_geometry
 
 CollectiveWear CollectiveEvaluator::evaluate(
     const std::vector<const profiles::Profile*>& wheels) const {
+  return evaluate(wheels, kernel_.scene().states);
+}
+
+CollectiveWear CollectiveEvaluator::evaluate(const std::vector<const profiles::Profile*>& wheels,
+                                             const std::vector<WheelsetStateSpec>& specs) const {
   const Scene& scene = kernel_.scene();
   const std::size_t profiles_worn = scene.separate_wheels ? 2 : 1;
   require(wheels.size() == profiles_worn, "worn wheel profiles", static_cast<double>(wheels.size()),
@@ -163,13 +182,13 @@ CollectiveWear CollectiveEvaluator::evaluate(
   const contactgeom::WheelsetOnTrack track{kernel_.pair(*wheels.front()),
                                            kernel_.pair(*wheels.back())};
 
-  const GeometryIndex index = index_geometries(scene.states, reuse_geometry_);
+  const GeometryIndex index = index_geometries(specs, reuse_geometry_);
   std::vector<contactgeom::WheelsetContact> contacts(index.first_state.size());
   tbb::parallel_for(std::size_t{0}, contacts.size(), [&](std::size_t g) {
-    contacts[g] = kernel_.contact(track, scene.states[index.first_state[g]]);
+    contacts[g] = kernel_.contact(track, specs[index.first_state[g]]);
   });
 
-  const std::size_t n_states = scene.states.size();
+  const std::size_t n_states = specs.size();
   std::vector<StateOutcome> states(n_states);
   // Wheel by wheel: a state's two wheels are independent work.
   tbb::parallel_for(std::size_t{0}, 2 * n_states, [&](std::size_t k) {
@@ -177,9 +196,8 @@ CollectiveWear CollectiveEvaluator::evaluate(
     const int side = static_cast<int>(k % 2);
     const contactgeom::WheelsetContact& both = contacts[index.geometry_of[i]];
     if (side == 0) states[i].roll = both.roll;  // one writer per state
-    states[i].wheels[static_cast<std::size_t>(side)] =
-        kernel_.wheel(both, side, scene.states[i], side == 0 ? track.left.wheel : track.right.wheel,
-                      scene.tgamma_maps);
+    states[i].wheels[static_cast<std::size_t>(side)] = kernel_.wheel(
+        both, side, specs[i], side == 0 ? track.left.wheel : track.right.wheel, scene.tgamma_maps);
   });
 
   CollectiveWear out;
@@ -188,7 +206,7 @@ CollectiveWear CollectiveEvaluator::evaluate(
     const auto bins = static_cast<std::size_t>(std::ceil(wheel->length() / kWearBin)) + 1;
     out.rate.push_back(wear::WearDistribution::zeros(0.0, kWearBin, bins));
   }
-  reduce_states(scene, states, out);
+  reduce_states(scene, specs, states, out);
   if (scene.state_summaries || scene.tgamma_maps) out.states = std::move(states);
   return out;
 }

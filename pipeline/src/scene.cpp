@@ -13,6 +13,7 @@
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/tangential/tangential.hpp"
+#include "wheelwear/vehicle/vehicle_file.hpp"
 #include "wheelwear/wear/wear_law.hpp"
 
 namespace wheelwear::pipeline {
@@ -150,6 +151,12 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   bool model_given = false;
   std::optional<tangential::ContactModel> method_model;  // named by tangential_method
   std::string law_table;
+  std::optional<int> vehicle_line, route_line;
+  // [vehicle] and [route] fill one VehicleRun, made on first use.
+  auto vehicle_run = [&]() -> VehicleRun& {
+    if (!s.vehicle_run) s.vehicle_run.emplace();
+    return *s.vehicle_run;
+  };
 
   auto section = [&](const std::string& name, std::map<std::string, KeyHandler> handlers) {
     return [name, handlers](const toml::node& node, const std::string& key) {
@@ -251,6 +258,12 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
              [&](const auto& n, const auto& k) {
                s.friction = number(n, k, 1e-6, 2.0, "the coefficient of friction (> 0)");
              }},
+            {"friction_flange",
+             [&](const auto& n, const auto& k) {
+               s.friction_flange = number(n, k, 1e-6, 2.0,
+                                          "the gauge face's coefficient of friction (> 0; "
+                                          "lubricated about 0.1)");
+             }},
             {"grid_nx",
              [&](const auto& n, const auto& k) {
                s.grid_nx = integer(n, k, 2, 1000, "FASTSIM cells along x");
@@ -341,6 +354,65 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                  [&](const auto& n, const auto& k) { s.state_summaries = boolean(n, k); }},
                 {"tgamma_maps",
                  [&](const auto& n, const auto& k) { s.tgamma_maps = boolean(n, k); }}})},
+      {"vehicle",
+       section("vehicle",
+               {{"file",
+                 [&](const auto& n, const auto& k) {
+                   VehicleRun& run = vehicle_run();
+                   vehicle_line = static_cast<int>(n.source().begin.line);
+                   const std::string name = text(n, k);
+                   if (name == "default") {
+                     run.vehicle = vehicle::default_vehicle();
+                     run.vehicle_file.clear();
+                     return;
+                   }
+                   const fs::path file = resolve(base_directory, name);
+                   if (!fs::is_regular_file(file))
+                     throw InputError(where(n.source(), k) + " = \"" + name +
+                                      "\": no such file (looked for " + file.string() +
+                                      "); give \"default\" (the built-in coach) or a vehicle "
+                                      "file (wheelwear curving --export-default-vehicle DIR "
+                                      "writes one to start from)");
+                   run.vehicle = vehicle::read_vehicle(file);
+                   run.vehicle_file = file.string();
+                 }},
+                {"wheelsets",
+                 [&](const auto& n, const auto& k) {
+                   const std::string name = text(n, k);
+                   if (name != "all" && name != "leading")
+                     throw InputError(where(n.source(), k) + " = \"" + name +
+                                      "\": use all (the four wheelsets) or leading (the "
+                                      "leading wheelset of each bogie)");
+                   vehicle_run().wheelsets = name == "all" ? WheelsetSelection::all
+                                                           : WheelsetSelection::leading;
+                 }},
+                {"resolve_depth_m",
+                 [&](const auto& n, const auto& k) {
+                   vehicle_run().resolve_depth =
+                       number(n, k, 0.0, 1e-3,
+                              "the wear depth between two solves of the vehicle in m (0: "
+                              "every step)");
+                 }}})},
+      {"route", section("route",
+                        {{"file",
+                          [&](const auto& n, const auto& k) {
+                            VehicleRun& run = vehicle_run();
+                            route_line = static_cast<int>(n.source().begin.line);
+                            const std::string name = text(n, k);
+                            if (name == "default") {
+                              run.route = vehicle::default_route();
+                              run.route_file.clear();
+                              return;
+                            }
+                            const fs::path file = resolve(base_directory, name);
+                            if (!fs::is_regular_file(file))
+                              throw InputError(where(n.source(), k) + " = \"" + name +
+                                               "\": no such file (looked for " + file.string() +
+                                               "); give \"default\" (the built-in mixed line) "
+                                               "or a route file (docs/routes.md)");
+                            run.route = vehicle::read_route(file);
+                            run.route_file = file.string();
+                          }}})},
       {"load_collective",
        section("load_collective",
                {{"file",
@@ -401,17 +473,32 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                      " is beyond 400 x 400 (seconds and gigabytes per patch): use at most 400");
   }
   s.wear_law_table = law_table;
+  s.step_distance = std::min(s.step_distance, s.distance);  // one step need not exceed the run
+  if (s.vehicle_run) {
+    if (!vehicle_line || !route_line) {
+      throw InputError(std::string("scene: a vehicle run needs both [vehicle] file and [route] "
+                                   "file (\"default\" for the built-in ones); ") +
+                       (vehicle_line ? "[route] file" : "[vehicle] file") + " is missing");
+    }
+    if (collective_line) {
+      throw InputError("scene line " + std::to_string(*collective_line) +
+                       ": [load_collective] and [vehicle] both give the run's states; give one: "
+                       "the vehicle on its route makes the collective of every step itself");
+    }
+    return s;
+  }
   if (s.states.empty()) {
     throw InputError(collective_line ? "scene line " + std::to_string(*collective_line) +
                                            ": load_collective: no states"
-                                     : "scene: no [load_collective]; give file = \"states.csv\" "
-                                       "or [[load_collective.state]] tables");
+                                     : "scene: no [load_collective] and no [vehicle]; give "
+                                       "[load_collective] file = \"states.csv\" (or "
+                                       "[[load_collective.state]] tables), or [vehicle] file and "
+                                       "[route] file (\"default\" for the built-in ones)");
   }
   double total = 0.0;
   for (const auto& state : s.states) total += state.weight;
   if (!(total > 0.0))
     throw InputError("scene: load_collective: the weights sum to 0; give some state a weight > 0");
-  s.step_distance = std::min(s.step_distance, s.distance);  // one step need not exceed the run
   return s;
 }
 

@@ -20,8 +20,10 @@ contactgeom::WheelsetMotion wheel_motion(const WheelsetStateSpec& s, int side, d
   contactgeom::WheelsetMotion motion;
   motion.speed = s.speed;
   motion.lateral_velocity = sign * s.lateral_velocity;
-  // A right-hand curve (R > 0) puts the left wheel on the outer rail, ahead.
-  motion.yaw_rate = s.curve_radius == 0.0 ? 0.0 : sign * s.speed / s.curve_radius;
+  // A right-hand curve (R > 0) turns the wheelset clockwise at V/R, which puts the left wheel
+  // on the outer rail, ahead; its own yaw rate (+ counter-clockwise) takes from that.
+  motion.yaw_rate = sign * ((s.curve_radius == 0.0 ? 0.0 : s.speed / s.curve_radius) - s.yaw_rate);
+  motion.angular_velocity = s.angular_velocity.value_or(0.0);  // 0: on the nominal radius
   motion.lateral_arm = lateral_arm;
   return motion;
 }
@@ -119,6 +121,14 @@ StateKernel::StateKernel(const Scene& scene)
   solve_options_.validate();
 }
 
+contactgeom::RailFriction StateKernel::rail_friction(const WheelsetStateSpec& state) const {
+  const double top = state.friction.value_or(scene_.friction);
+  const double flange = state.friction_flange ? *state.friction_flange
+                        : state.friction      ? *state.friction
+                                              : scene_.friction_flange.value_or(top);
+  return {top, flange};
+}
+
 tangential::Material StateKernel::material() const {
   return {scene_.youngs_modulus / (2.0 * (1.0 + scene_.poisson)), scene_.poisson};
 }
@@ -165,6 +175,7 @@ WheelOutcome StateKernel::wheel(const contactgeom::WheelsetContact& both, int si
   const std::optional<tangential::Creepages>& given =
       side == 0 ? s.creepages_left : s.creepages_right;
   const tangential::Material material = this->material();
+  const contactgeom::RailFriction friction = rail_friction(s);
   tangential::SolveOptions options = solve_options_;
   // Only the fields the wear needs, unless the cells are kept for T gamma maps.
   options.fastsim.field_set =
@@ -189,7 +200,7 @@ WheelOutcome StateKernel::wheel(const contactgeom::WheelsetContact& both, int si
     p.creepages = given ? *given
                         : contactgeom::kinematic_creepages(patch, pose, motion,
                                                            wheel_profile.info().nominal_radius);
-    const tangential::ContactLoad load{patch.normal_force, scene_.friction};
+    const tangential::ContactLoad load{patch.normal_force, friction.at(patch.contact_angle)};
     tangential::solve_patch(method_, region, p.creepages, load, material, options, solution);
     p.wear = wear_window(patch, region.b, wheel_profile.length());
     wear::WearDistribution part = wear::WearDistribution::zeros(
@@ -218,7 +229,7 @@ WheelOutcome StateKernel::wheel(const contactgeom::WheelsetContact& both, int si
   std::vector<double> creep_Fy;
   for (const PatchOutcome& p : out.patches)
     creep_Fy.push_back(p.solved ? p.solution.forces.Fy : 0.0);
-  out.nadal = contactgeom::nadal_check(contact, scene_.friction, creep_Fy);
+  out.nadal = contactgeom::nadal_check(contact, friction.flange, creep_Fy);
   return out;
 }
 

@@ -8,6 +8,8 @@
 #include <ctime>
 #include <limits>
 
+#include "vehicle_record.hpp"
+
 namespace wheelwear::pipeline::detail {
 
 namespace fs = std::filesystem;
@@ -179,40 +181,8 @@ void add_tgamma_maps(GroupRecord& g, const std::vector<StateOutcome>& states, in
 }
 
 GroupRecord collective_record(const Scene& scene) {
-  const std::size_t n = scene.states.size();
-  std::vector<double> dy(n), yaw(n), ql(n), qr(n), yl(n), yr(n), v(n), radius(n), vlat(n), w(n),
-      line(n);
-  std::string labels;
-  for (std::size_t i = 0; i < n; ++i) {
-    const WheelsetStateSpec& s = scene.states[i];
-    dy[i] = s.dy;
-    yaw[i] = s.yaw;
-    ql[i] = s.load_left;
-    qr[i] = s.load_right;
-    yl[i] = s.lateral_force_left.value_or(kNaN);
-    yr[i] = s.lateral_force_right.value_or(kNaN);
-    v[i] = s.speed;
-    radius[i] = s.curve_radius;
-    vlat[i] = s.lateral_velocity;
-    w[i] = s.weight;
-    line[i] = s.line;
-    labels += s.label + '\n';
-  }
   GroupRecord g;
-  g.arrays.push_back(vector("dy_m", dy, "m", "wheelset lateral shift, + to the left"));
-  g.arrays.push_back(vector("yaw_rad", yaw, "rad", "yaw angle"));
-  g.arrays.push_back(vector("load_left_N", ql, "N", "vertical force on the left wheel"));
-  g.arrays.push_back(vector("load_right_N", qr, "N", "vertical force on the right wheel"));
-  g.arrays.push_back(vector("lateral_force_left_N", yl, "N",
-                            "prescribed lateral force of the left wheel (NaN: not given)"));
-  g.arrays.push_back(vector("lateral_force_right_N", yr, "N",
-                            "prescribed lateral force of the right wheel (NaN: not given)"));
-  g.arrays.push_back(vector("speed_m_s", v, "m/s", "forward speed"));
-  g.arrays.push_back(vector("curve_radius_m", radius, "m", "0 tangent, + right-hand curve"));
-  g.arrays.push_back(vector("lateral_velocity_m_s", vlat, "m/s", "dy/dt, + to the left"));
-  g.arrays.push_back(vector("weight", w, "1", "share of the running distance (unnormalised)"));
-  g.arrays.push_back(vector("line", line, "1", "line of the state in its scene or file"));
-  g.texts.push_back({"label", labels, "the states' labels, one per line"});
+  add_collective(g, "", scene.states);
   return g;
 }
 

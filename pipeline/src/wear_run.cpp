@@ -9,10 +9,12 @@
 #include <ctime>
 
 #include "step_record.hpp"
+#include "vehicle_record.hpp"
 #include "wheelwear/contactgeom/equivalent_conicity.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
+#include "wheelwear/pipeline/vehicle_run.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/profiles/wear_update.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
@@ -45,12 +47,32 @@ struct WornProfile {
   profiles::Profile build() const { return profiles::Profile(points, info, curve); }
 };
 
+// What a vehicle run carries from step to step: its last solve (the collective, and where each
+// case's bodies were, to start the next solve from).
+struct VehicleCarry {
+  bool solved = false;  // a solve has been made (or read back on resume)
+  VehicleCollective last;
+  double depth_since_solve = 0.0;  // deepest wear since the last solve [m], an upper bound
+};
+
 // Where the loop starts: a new run at step 0 or a resumed one.
 struct LoopStart {
   int step = 0;
   double distance = 0.0;
   std::vector<WornProfile> worn;
+  VehicleCarry vehicle;
 };
+
+// Solves the vehicle again when the wear since its last solve reaches the scene's depth (at
+// every step for depth 0). Returns whether it solved.
+bool update_vehicle(const VehicleRun& run, const StateKernel& kernel,
+                    const std::vector<const profiles::Profile*>& wheels, VehicleCarry& carry) {
+  if (carry.solved && carry.depth_since_solve < run.resolve_depth) return false;
+  carry.last = solve_vehicle_collective(run, kernel, wheels, carry.solved ? &carry.last : nullptr);
+  carry.depth_since_solve = 0.0;
+  carry.solved = true;
+  return true;
+}
 
 // What each counter of DroppedStates means, for the results file.
 std::string dropped_description(const std::string& name) {
@@ -135,6 +157,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   int step = start.step;
   double distance = start.distance;
   std::vector<WornProfile> worn = std::move(start.worn);
+  VehicleCarry carry = std::move(start.vehicle);
   // The depth arrives smoothed (smoothed() above): the update adds no smoothing of its own.
   const profiles::WearUpdateOptions update{0.0};
   while (true) {
@@ -142,8 +165,15 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     for (const WornProfile& w : worn) wheels.push_back(w.build());
     std::vector<const profiles::Profile*> pointers;
     for (const auto& w : wheels) pointers.push_back(&w);
-    const CollectiveWear cw = evaluator.evaluate(pointers);
-    summary.evaluations += scene.states.size();
+    bool vehicle_solved = false;
+    if (scene.vehicle_run) {
+      vehicle_solved = update_vehicle(*scene.vehicle_run, evaluator.kernel(), pointers, carry);
+      if (vehicle_solved) ++summary.vehicle_solves;
+    }
+    const std::vector<WheelsetStateSpec>& specs =
+        scene.vehicle_run ? carry.last.states : scene.states;
+    const CollectiveWear cw = evaluator.evaluate(pointers, specs);
+    summary.evaluations += specs.size();
     summary.geometry_solves += cw.geometry_solves;
 
     std::vector<wear::WearDistribution> smooth_rate;
@@ -228,6 +258,21 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
                               "tan(gamma_e) at 3 mm amplitude (EN 15302, Annex C)"));
     g.arrays.push_back(vector("delta_r/dy", dr.dy, "m", "wheelset shift, + to the left"));
     g.arrays.push_back(vector("delta_r/value", dr.delta_r, "m", "r_left - r_right"));
+    if (scene.vehicle_run) {
+      const double depth_after = carry.depth_since_solve + peak * step_distance;
+      g.arrays.push_back(scalar("vehicle/solved", vehicle_solved ? 1.0 : 0.0, "1",
+                                "1 when the vehicle was solved on this step's profiles"));
+      g.arrays.push_back(scalar("vehicle/unconverged_cases",
+                                static_cast<double>(carry.last.unconverged), "1",
+                                "running conditions whose quasi-static solve did not converge "
+                                "(their last iterate is used)"));
+      g.arrays.push_back(scalar("vehicle/depth_since_solve", depth_after, "m",
+                                "deepest wear since the vehicle's last solve, this step's "
+                                "included (an upper bound: the steps' deepest increments summed)"));
+      detail::add_collective(g, "collective/", carry.last.states);
+      detail::add_vehicle_cases(g, carry.last);
+      carry.depth_since_solve = depth_after;
+    }
     if (scene.state_summaries) detail::add_state_summaries(g, cw.states);
     if (scene.tgamma_maps) detail::add_tgamma_maps(g, cw.states, scene.grid_nx, scene.grid_ny);
     file.append_step(g);
@@ -241,7 +286,9 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       p.step = step;
       p.distance = distance;
       p.total_distance = scene.distance;
-      p.states = scene.states.size();
+      p.states = specs.size();
+      p.vehicle_solved = vehicle_solved;
+      p.unconverged_cases = scene.vehicle_run ? carry.last.unconverged : 0;
       p.elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
       p.evaluations_per_second = static_cast<double>(summary.evaluations) / p.elapsed;
       p.dropped = cw.dropped;
@@ -337,6 +384,18 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
     depth.y = file.read_step_array(last, w.name + "/wear_step/y");
     depth.depth = file.read_step_array(last, w.name + "/wear_step/depth");
     w.points = profiles::apply_wear(w.build(), depth, update).knot_points();
+  }
+  if (scene.vehicle_run) {
+    VehicleCarry& carry = start.vehicle;
+    carry.solved = true;
+    carry.last.cases = route_cases(scene.vehicle_run->route);
+    carry.last.states = detail::read_collective(file, last, "collective/");
+    // The cases' solved states as recorded: the records of the steps until the next solve,
+    // and where that solve starts.
+    carry.last.curving = detail::read_vehicle_cases(file, last, carry.last.cases.size());
+    carry.last.unconverged =
+        static_cast<int>(file.read_step_array(last, "vehicle/unconverged_cases").at(0));
+    carry.depth_since_solve = file.read_step_array(last, "vehicle/depth_since_solve").at(0);
   }
   return loop(scene, evaluator, file, std::move(start), *directory, builtin, options);
 }

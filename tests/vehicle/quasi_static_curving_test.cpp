@@ -120,6 +120,37 @@ TEST(QuasiStaticCurving, EveryBodyIsInEquilibrium) {
 
 // A symmetric vehicle on straight track without irregularities: every body on the centre line,
 // every yaw zero, no longitudinal creep force.
+TEST(QuasiStaticCurving, StartsFromAnEarlierSolution) {
+  const Vehicle v = default_vehicle();
+  const auto models = four(standard_wheelset());
+  const SteadyCurve r1500 = curve_of(1500.0, 0.08, 38.89);
+  const VehicleCurving cold = solve_vehicle_curving(v, models, r1500);
+  ASSERT_TRUE(cold.converged) << cold.message;
+  EXPECT_FALSE(cold.from_start);
+  EXPECT_GT(cold.iterations, 0);
+  // Started from its own solution (a run's next solve on profiles that have not changed): every
+  // unknown is carried over, so it is converged before any Newton step, at the same state.
+  CurvingOptions options;
+  options.start = placement_of(cold);
+  const VehicleCurving warm = solve_vehicle_curving(v, models, r1500, options);
+  ASSERT_TRUE(warm.converged) << warm.message;
+  EXPECT_TRUE(warm.from_start);
+  EXPECT_EQ(warm.iterations, 0);
+  EXPECT_EQ(warm.car_body.y, cold.car_body.y);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(warm.wheelsets[k].state.dy, cold.wheelsets[k].state.dy) << k;
+    EXPECT_EQ(warm.wheelsets[k].state.spin, cold.wheelsets[k].state.spin) << k;
+  }
+  // A start it cannot use (axles at a standstill) is left for a fresh solve, which converges;
+  // told not to restart, the solve reports the failure.
+  for (auto& w : options.start->wheelsets) w.spin = 0.0;
+  const VehicleCurving restarted = solve_vehicle_curving(v, models, r1500, options);
+  EXPECT_TRUE(restarted.converged) << restarted.message;
+  EXPECT_FALSE(restarted.from_start);
+  options.restart_on_failure = false;
+  EXPECT_FALSE(solve_vehicle_curving(v, models, r1500, options).converged);
+}
+
 TEST(QuasiStaticCurving, TangentTrackKeepsTheVehicleCentred) {
   const Vehicle v = default_vehicle();
   const VehicleCurving c =

@@ -318,6 +318,22 @@ class CurvingProblem {
   int& evaluations_;
 };
 
+Vector unknowns(const VehiclePlacement& p) {
+  Vector u;
+  u[0] = p.car_body.y;
+  u[1] = p.car_body.yaw;
+  for (int i = 0; i < kBogies; ++i) {
+    u[bogie_index(i)] = p.bogies[i].y;
+    u[bogie_index(i) + 1] = p.bogies[i].yaw;
+  }
+  for (int k = 0; k < kWheelsets; ++k) {
+    u[wheelset_index(k)] = p.wheelsets[k].dy;
+    u[wheelset_index(k) + 1] = p.wheelsets[k].yaw;
+    u[wheelset_index(k) + 2] = p.wheelsets[k].spin;
+  }
+  return u;
+}
+
 // The start: every body centred and radial, each axle at the spin of its nominal radius.
 Vector initial_guess(const Vehicle& v, const SteadyCurve& curve) {
   Vector u = Vector::Zero();
@@ -356,6 +372,14 @@ std::array<double, 2> wheel_loads(const Vehicle& v, const SteadyCurve& curve, do
   return {0.5 * (weight + difference), 0.5 * (weight - difference)};
 }
 
+VehiclePlacement placement_of(const VehicleCurving& curving) {
+  VehiclePlacement p;
+  p.car_body = curving.car_body;
+  p.bogies = curving.bogies;
+  for (int k = 0; k < kWheelsets; ++k) p.wheelsets[k] = curving.wheelsets[k].state;
+  return p;
+}
+
 VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
                                      const std::array<WheelsetModel, kWheelsets>& wheelsets,
                                      const SteadyCurve& curve, const CurvingOptions& options) {
@@ -371,9 +395,25 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
   Evaluation e;
   bool converged = false;
   std::string message;
+  if (options.start) {
+    u = unknowns(*options.start);
+    bool valid = u.allFinite();
+    for (int k = 0; k < kWheelsets; ++k) valid = valid && u[wheelset_index(k) + 2] > 0.0;
+    if (valid) {
+      const CurvingProblem problem(vehicle, wheelsets, curve, options, result.wheelset_evaluations);
+      try {
+        converged = problem.solve(u, e, result.iterations, message);
+        result.from_start = converged;
+      } catch (const InputError&) {
+        converged = false;  // the start lies beyond the profiles now: start afresh
+      }
+    }
+  }
   // Straight to the curve first; where that fails (a flange contact Newton overshoots), in
   // steps of curvature and cant from tangent track, each from the last one's state.
+  const bool fresh = !options.start || options.restart_on_failure;
   for (int steps : {1, 4, 16}) {
+    if (converged || !fresh) break;
     u = initial_guess(vehicle, curve);
     converged = true;
     for (int s = 1; s <= steps && converged; ++s) {

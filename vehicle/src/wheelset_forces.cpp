@@ -22,13 +22,16 @@ void validate(const RunningConditions& running) {
           "curve radius", running.curve_radius, "must be 0 (tangent track) or |R| >= 10 m");
   require(std::isfinite(running.friction) && running.friction > 0.0, "friction", running.friction,
           "must be positive");
+  if (running.friction_flange)
+    require(std::isfinite(*running.friction_flange) && *running.friction_flange > 0.0,
+            "flange friction", *running.friction_flange, "must be positive");
 }
 
 // The patches of one wheel solved at the wheel's motion, summed into the wheel's forces.
 WheelForces wheel_forces(const WheelsetModel& model, const contactgeom::WheelRailContact& contact,
                          const contactgeom::WheelsetPose& pose,
                          const contactgeom::WheelsetMotion& motion, double nominal_radius,
-                         double friction) {
+                         const contactgeom::RailFriction& friction) {
   WheelForces w;
   w.status = contact.status;
   if (contact.patches.empty()) return w;
@@ -41,9 +44,9 @@ WheelForces wheel_forces(const WheelsetModel& model, const contactgeom::WheelRai
     p.creepages = contactgeom::kinematic_creepages(patch, pose, motion, nominal_radius);
     const contactgeom::Sdec region =
         model.ellipse_at_O ? contactgeom::Sdec{patch.sdec.a, patch.sdec.b, 0.0} : patch.sdec;
-    const tangential::TangentialSolution s =
-        tangential::solve_patch(model.method, region, p.creepages, {patch.normal_force, friction},
-                                model.material, model.solve);
+    const tangential::TangentialSolution s = tangential::solve_patch(
+        model.method, region, p.creepages, {patch.normal_force, friction.at(patch.contact_angle)},
+        model.material, model.solve);
     p.Fx = s.forces.Fx;
     p.Fy = s.forces.Fy;
     p.Mz = s.forces.Mz.value_or(0.0);
@@ -115,7 +118,7 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
       const contactgeom::WheelRailPair& pair = side == 0 ? model.track.left : model.track.right;
       out.wheels[k] =
           wheel_forces(model, c, pose, wheel_motion(state, running, side, model.lateral_arm),
-                       pair.wheel_radius, running.friction);
+                       pair.wheel_radius, running.rail_friction());
       if (!contactgeom::carries_load(c.status)) continue;
       const double Q = out.wheels[k].Q;
       const double miss = loads[k] - Q;

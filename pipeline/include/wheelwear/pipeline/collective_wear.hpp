@@ -55,17 +55,24 @@ struct CollectiveWear {
   std::size_t hertz_dropped = 0;
 };
 
-/// The share of the running distance each state of the collective stands for (its weight over
-/// the collective's total).
+/// The share of the running distance each state stands for (its weight over the total).
+std::vector<double> state_shares(const std::vector<WheelsetStateSpec>& states);
+/// state_shares of the scene's collective.
 std::vector<double> state_shares(const Scene& scene);
 
 /// The share of the running distance each wheel case stands for: state i's left (2i) and right
 /// (2i + 1) wheel, of the profile it wears (half a state each when the wheels share one).
+std::vector<double> wheel_weights(const std::vector<WheelsetStateSpec>& states,
+                                  bool separate_wheels);
+/// wheel_weights of the scene's collective.
 std::vector<double> wheel_weights(const Scene& scene);
 
 /// Adds the outcomes of `states` (in order, whatever order they were computed in) into `out`:
 /// the rates of the worn profiles and the counts. The order of the sums is fixed, so results
 /// are bit-identical for any number of threads or executors.
+void reduce_states(const Scene& scene, const std::vector<WheelsetStateSpec>& specs,
+                   const std::vector<StateOutcome>& states, CollectiveWear& out);
+/// reduce_states of the scene's collective.
 void reduce_states(const Scene& scene, const std::vector<StateOutcome>& states,
                    CollectiveWear& out);
 
@@ -83,6 +90,9 @@ class CollectiveEvaluator {
   /// Every worn profile must have the taping line at y = 0 (as profiles from
   /// profiles::wheel_profile do). TBB-parallel over contacts and states.
   CollectiveWear evaluate(const std::vector<const profiles::Profile*>& wheels) const;
+  /// Evaluates `specs` instead of the scene's collective (a vehicle run's states of the step).
+  CollectiveWear evaluate(const std::vector<const profiles::Profile*>& wheels,
+                          const std::vector<WheelsetStateSpec>& specs) const;
 
   const Scene& scene() const { return kernel_.scene(); }
   const StateKernel& kernel() const { return kernel_; }

@@ -13,6 +13,8 @@
 #include "wheelwear/tangential/contact_model.hpp"
 #include "wheelwear/tangential/creep_types.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
+#include "wheelwear/vehicle/route.hpp"
+#include "wheelwear/vehicle/vehicle.hpp"
 
 namespace wheelwear::pipeline {
 
@@ -33,6 +35,17 @@ struct WheelsetStateSpec {
   double speed = 0.0;                         ///< forward speed [m/s], > 0
   double curve_radius = 0.0;      ///< [m]; 0 on tangent track, > 0 right-hand, < 0 left-hand
   double lateral_velocity = 0.0;  ///< dy/dt [m/s], + to the left
+  /// Axle angular velocity [rad/s], > 0; unset: rolling on the nominal radius, V / r0. A
+  /// vehicle model's states give the free-rolling spin it solved for.
+  std::optional<double> angular_velocity;
+  double yaw_rate = 0.0;  ///< d(yaw)/dt relative to the track [rad/s], + counter-clockwise
+  /// Wheelset roll [rad], + when the left wheel goes down, as the state's source computed it.
+  /// Recorded only: the contact is a constraint, so the kernel's roll follows from the
+  /// geometry of both wheels (its value is in the state summaries).
+  std::optional<double> roll;
+  /// Coefficients of friction on the rail top and on the gauge face (contactgeom::RailFriction);
+  /// unset: the scene's.
+  std::optional<double> friction, friction_flange;
   /// Creepages given directly (each wheel in its own frame, + y towards the gauge side); when
   /// absent they follow from the kinematics at every patch's O.
   std::optional<tangential::Creepages> creepages_left, creepages_right;
@@ -54,6 +67,28 @@ enum class TangentialMethod {
   exact,
 };
 
+/// Which wheelsets of the vehicle wear the profile(s).
+enum class WheelsetSelection {
+  all,      ///< all four
+  leading,  ///< the leading wheelset of each bogie (the first and third in order of travel)
+};
+
+/// A vehicle on a route, whose own steady states make each step's collective
+/// (vehicle_run.hpp).
+struct VehicleRun {
+  vehicle::Vehicle vehicle;
+  std::string vehicle_file;  ///< resolved path; empty: the built-in vehicle
+  vehicle::Route route;
+  std::string route_file;  ///< resolved path; empty: the built-in route
+  WheelsetSelection wheelsets = WheelsetSelection::all;
+  /// The vehicle is solved again once the deepest wear since its last solve reaches this [m];
+  /// 0: at every step.
+  double resolve_depth = 0.05e-3;
+
+  /// The wheelsets (0..3, in order of travel) that wear the profile(s).
+  std::vector<int> worn_wheelsets() const;
+};
+
 /// Everything a run needs. Defaults are those of the built-in scene.
 struct Scene {
   std::string title;
@@ -71,7 +106,10 @@ struct Scene {
   double youngs_modulus = 200e9;           ///< [Pa]
   double poisson = 0.25;                   ///< [-]
   tangential::ContactModel model = tangential::ContactModel::sdec;
-  double friction = 0.3;  ///< [-], > 0
+  double friction = 0.3;  ///< on the rail top [-], > 0
+  /// On the gauge face (patches at contact angles from contactgeom::kFlangeContactAngle) [-];
+  /// unset: the rail top's.
+  std::optional<double> friction_flange;
   int grid_nx = 30;
   int grid_ny = 30;
   tangential::FastsimScheme scheme = tangential::FastsimScheme::kalker;
@@ -87,7 +125,10 @@ struct Scene {
   bool separate_wheels = false;       ///< evolve left and right profiles separately
   bool state_summaries = true;        ///< write per-state summaries
   bool tgamma_maps = false;           ///< write per-cell T gamma maps of every contact
+  /// The hand-written collective; empty when the vehicle makes it (vehicle_run).
   std::vector<WheelsetStateSpec> states;
+  /// The vehicle and its route ([vehicle] and [route]), instead of a hand-written collective.
+  std::optional<VehicleRun> vehicle_run;
 };
 
 /// Reads a file named in a scene (a profile, the collective, a wear table) as text.

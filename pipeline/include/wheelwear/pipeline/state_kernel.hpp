@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "wheelwear/contactgeom/nadal.hpp"
+#include "wheelwear/contactgeom/rail_friction.hpp"
 #include "wheelwear/contactgeom/sdec.hpp"
 #include "wheelwear/contactgeom/wheelset.hpp"
 #include "wheelwear/pipeline/scene.hpp"
@@ -122,6 +123,9 @@ class StateKernel {
   const contactgeom::WheelRailOptions& contact_options() const { return options_; }
   /// The tangential solve's options from the scene (grid, scheme; every cell's fields kept).
   const tangential::SolveOptions& solve_options() const { return solve_options_; }
+  /// The friction on the rail top and the gauge face at `state`: the state's where it gives
+  /// them (a state's rail-top friction alone sets both), else the scene's.
+  contactgeom::RailFriction rail_friction(const WheelsetStateSpec& state) const;
   /// The combined material of wheel and rail: shear modulus E / (2 (1 + nu)) and nu.
   tangential::Material material() const;
 

@@ -20,6 +20,8 @@ struct RunProgress {
   double elapsed = 0.0;                 ///< wall time of this process so far [s]
   double evaluations_per_second = 0.0;  ///< wheelset states evaluated per second so far
   DroppedStates dropped;                ///< states of this step not worn, by reason
+  bool vehicle_solved = false;          ///< a vehicle run solved its vehicle on this step
+  int unconverged_cases = 0;            ///< of its last solve, cases that did not converge
 };
 
 /// How a run is driven.
@@ -38,6 +40,7 @@ struct RunSummary {
   std::size_t geometry_solves = 0;  ///< distinct wheel/rail contacts solved by this process
   std::size_t patches = 0;          ///< contact patches solved by this process
   std::size_t table_patches = 0;    ///< of them, with totals from the book of tables ("best")
+  int vehicle_solves = 0;           ///< a vehicle run's solves of its vehicle by this process
 };
 
 /// Runs `scene` from its new profile and writes `output` (see README, "Results file").

@@ -27,6 +27,7 @@
 ///   longitudinal force an axle's creep leaves.
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "wheelwear/vehicle/free_wheelset.hpp"
@@ -60,6 +61,13 @@ struct CurvingWheelset {
   double suspension_yaw = 0.0;      ///< the primary joint's yaw moment on the wheelset [N m]
 };
 
+/// Where every body is: the unknowns of the curving problem.
+struct VehiclePlacement {
+  BodyPlacement car_body;
+  std::array<BodyPlacement, kBogies> bogies;
+  std::array<WheelsetMotionState, kWheelsets> wheelsets;  ///< dy, yaw, spin; rates unused
+};
+
 /// How to solve.
 struct CurvingOptions {
   int max_iterations = 60;  ///< Newton iterations per attempt
@@ -67,6 +75,13 @@ struct CurvingOptions {
   /// moment within `force_tolerance` m g times 1 m, and every axle torque within 1e-7 of the
   /// sum of |Fx| r of its patches (at least 1e-9 of its wheel load times its radius).
   double force_tolerance = 1e-7;
+  /// Where Newton starts, e.g. the same curve's solution on the profiles before a wear step;
+  /// unset, or where Newton fails from there: every body centred and radial, the curve reached
+  /// by continuation. The solution converged from either meets the same tolerances.
+  std::optional<VehiclePlacement> start;
+  /// Where Newton fails from `start`: start afresh (true) or give up at once (false: a start
+  /// that did not converge before rarely converges afresh, and a fresh solve costs the most).
+  bool restart_on_failure = true;
 };
 
 /// The solved steady state.
@@ -74,6 +89,7 @@ struct VehicleCurving {
   bool converged = false;
   int iterations = 0;            ///< Newton iterations, over all continuation steps
   int continuation_steps = 1;    ///< the curve reached in this many steps of curvature
+  bool from_start = false;       ///< converged from CurvingOptions::start
   int wheelset_evaluations = 0;  ///< calls of wheelset_forces
   std::string message;           ///< why, when not converged
   double cant_deficiency = 0.0;  ///< [m]
@@ -82,6 +98,9 @@ struct VehicleCurving {
   std::array<BodyBalance, kBogies + 1> body_balances;  ///< car body, bogie 0, bogie 1
   std::array<CurvingWheelset, kWheelsets> wheelsets;   ///< in order of travel
 };
+
+/// The placement of every body in a solved (or attempted) curve, to start another solve from.
+VehiclePlacement placement_of(const VehicleCurving& curving);
 
 /// Solves the quasi-static curving of `vehicle` in `curve`, its wheelsets' contacts given by
 /// `wheelsets` (in order of travel; each with its own profiles, as a run that wears them

@@ -10,10 +10,12 @@
 /// the gauge side, the track centre.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "wheelwear/contactgeom/kinematics.hpp"
+#include "wheelwear/contactgeom/rail_friction.hpp"
 #include "wheelwear/contactgeom/wheelset.hpp"
 #include "wheelwear/tangential/tangential.hpp"
 
@@ -33,7 +35,15 @@ struct WheelsetMotionState {
 struct RunningConditions {
   double speed = 0.0;         ///< forward speed of the wheelset centre [m/s], > 0
   double curve_radius = 0.0;  ///< [m]; 0 tangent track, > 0 right-hand (left rail outer)
-  double friction = 0.3;      ///< [-], > 0 (top of rail and flange alike)
+  double friction = 0.3;      ///< on the rail top [-], > 0
+  /// On the gauge face, for patches at contact angles from contactgeom::kFlangeContactAngle
+  /// [-], > 0; unset: the rail top's.
+  std::optional<double> friction_flange;
+
+  /// Both coefficients, the flange's defaulting to the rail top's.
+  contactgeom::RailFriction rail_friction() const {
+    return {friction, friction_flange.value_or(friction)};
+  }
 };
 
 /// What the contact model of the wheelset is made of.

@@ -1,0 +1,301 @@
+#include "vehicle_record.hpp"
+
+#include <functional>
+#include <limits>
+#include <sstream>
+
+#include "load_collective.hpp"
+#include "wheelwear/core/input_error.hpp"
+
+namespace wheelwear::pipeline::detail {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// One column of the collective: its value in a state (NaN for an optional value not given).
+struct CollectiveColumn {
+  const char* name;  // the load collective's column name (load_collective.cpp)
+  const char* units;
+  const char* description;
+  std::function<double(const WheelsetStateSpec&)> get;
+};
+
+const std::vector<CollectiveColumn>& collective_columns() {
+  using S = WheelsetStateSpec;
+  static const std::vector<CollectiveColumn> columns = {
+      {"dy_m", "m", "wheelset lateral shift, + to the left", [](const S& s) { return s.dy; }},
+      {"yaw_rad", "rad", "yaw angle", [](const S& s) { return s.yaw; }},
+      {"load_left_N", "N", "vertical force on the left wheel",
+       [](const S& s) { return s.load_left; }},
+      {"load_right_N", "N", "vertical force on the right wheel",
+       [](const S& s) { return s.load_right; }},
+      {"lateral_force_left_N", "N", "prescribed lateral force of the left wheel (NaN: not given)",
+       [](const S& s) { return s.lateral_force_left.value_or(kNaN); }},
+      {"lateral_force_right_N", "N", "prescribed lateral force of the right wheel (NaN: not given)",
+       [](const S& s) { return s.lateral_force_right.value_or(kNaN); }},
+      {"speed_m_s", "m/s", "forward speed", [](const S& s) { return s.speed; }},
+      {"curve_radius_m", "m", "0 tangent, + right-hand curve",
+       [](const S& s) { return s.curve_radius; }},
+      {"lateral_velocity_m_s", "m/s", "dy/dt, + to the left",
+       [](const S& s) { return s.lateral_velocity; }},
+      {"angular_velocity_rad_s", "rad/s",
+       "axle angular velocity (NaN: rolling on the nominal radius)",
+       [](const S& s) { return s.angular_velocity.value_or(kNaN); }},
+      {"yaw_rate_rad_s", "rad/s", "d(yaw)/dt relative to the track",
+       [](const S& s) { return s.yaw_rate; }},
+      {"roll_rad", "rad", "wheelset roll as given (NaN: not given)",
+       [](const S& s) { return s.roll.value_or(kNaN); }},
+      {"friction", "1", "friction on the rail top (NaN: the scene's)",
+       [](const S& s) { return s.friction.value_or(kNaN); }},
+      {"friction_flange", "1", "friction on the gauge face (NaN: the state's rail top's)",
+       [](const S& s) { return s.friction_flange.value_or(kNaN); }},
+      {"weight", "1", "share of the running distance (unnormalised)",
+       [](const S& s) { return s.weight; }},
+  };
+  return columns;
+}
+
+// Per case, one value of each wheelset (shape [cases, 4]).
+template <class Value>
+std::vector<double> per_wheelset(const VehicleCollective& v, Value value) {
+  std::vector<double> out;
+  for (const vehicle::VehicleCurving& c : v.curving)
+    for (const vehicle::CurvingWheelset& w : c.wheelsets) out.push_back(value(w));
+  return out;
+}
+
+// Per case, one value of each wheel of each wheelset (shape [cases, 4, 2]: left, right).
+template <class Value>
+std::vector<double> per_wheel(const VehicleCollective& v, Value value) {
+  std::vector<double> out;
+  for (const vehicle::VehicleCurving& c : v.curving)
+    for (const vehicle::CurvingWheelset& w : c.wheelsets)
+      for (const vehicle::WheelForces& wheel : w.forces.wheels) out.push_back(value(wheel));
+  return out;
+}
+
+template <class Value>
+std::vector<double> per_case(const VehicleCollective& v, Value value) {
+  std::vector<double> out;
+  for (std::size_t i = 0; i < v.cases.size(); ++i) out.push_back(value(v.cases[i], v.curving[i]));
+  return out;
+}
+
+ArrayRecord shaped(std::string name, std::vector<double> values, std::vector<std::size_t> shape,
+                   std::string units, std::string description) {
+  ArrayRecord a =
+      vector(std::move(name), std::move(values), std::move(units), std::move(description));
+  a.shape = std::move(shape);
+  return a;
+}
+
+}  // namespace
+
+void add_collective(GroupRecord& g, const std::string& prefix,
+                    const std::vector<WheelsetStateSpec>& states) {
+  for (const CollectiveColumn& c : collective_columns()) {
+    std::vector<double> values;
+    for (const WheelsetStateSpec& s : states) values.push_back(c.get(s));
+    g.arrays.push_back(vector(prefix + c.name, std::move(values), c.units, c.description));
+  }
+  std::vector<double> line;
+  std::string labels;
+  for (const WheelsetStateSpec& s : states) {
+    line.push_back(s.line);
+    labels += s.label + '\n';
+  }
+  g.arrays.push_back(vector(prefix + "line", line, "1", "line of the state in its scene or file"));
+  g.texts.push_back({prefix + "label", labels, "the states' labels, one per line"});
+}
+
+std::vector<WheelsetStateSpec> read_collective(const ResultsFile& file, int step,
+                                               const std::string& prefix) {
+  std::vector<WheelsetStateSpec> states;
+  const std::string where =
+      "results file " + file.path().string() + ", step " + std::to_string(step) + ", " + prefix;
+  for (const CollectiveColumn& c : collective_columns()) {
+    const std::vector<double> values = file.read_step_array(step, prefix + c.name);
+    if (states.empty()) states.resize(values.size());
+    if (values.size() != states.size())
+      throw InputError(where + c.name + ": " + std::to_string(values.size()) + " rows, " +
+                       std::to_string(states.size()) + " expected");
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (!std::isnan(values[i])) set_state_field(states[i], {c.name, values[i], {}}, where);
+  }
+  const std::vector<double> line = file.read_step_array(step, prefix + "line");
+  std::istringstream labels(
+      file.read_text(ResultsFile::step_group(step) + "/" + prefix + "label").value_or(""));
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    states[i].line = i < line.size() ? static_cast<int>(line[i]) : 0;
+    std::getline(labels, states[i].label);
+  }
+  return states;
+}
+
+void add_vehicle_cases(GroupRecord& g, const VehicleCollective& v) {
+  const std::size_t n = v.cases.size();
+  const std::string p = "vehicle/cases/";
+  std::string labels;
+  for (const RouteCase& c : v.cases) labels += c.label + '\n';
+  g.texts.push_back({p + "label", labels, "running condition: the route section it stands for"});
+  using C = RouteCase;
+  using V = vehicle::VehicleCurving;
+  g.arrays.push_back(
+      vector(p + "curve_radius_m",
+             per_case(v, [](const C& c, const V&) { return c.curve.running.curve_radius; }), "m",
+             "0 tangent, + right-hand"));
+  g.arrays.push_back(vector(p + "cant_m",
+                            per_case(v, [](const C& c, const V&) { return c.curve.cant; }), "m",
+                            "outer rail above the inner"));
+  g.arrays.push_back(vector(p + "speed_m_s",
+                            per_case(v, [](const C& c, const V&) { return c.curve.running.speed; }),
+                            "m/s", "running speed"));
+  g.arrays.push_back(vector(
+      p + "friction", per_case(v, [](const C& c, const V&) { return c.curve.running.friction; }),
+      "1", "friction on the rail top"));
+  g.arrays.push_back(vector(
+      p + "friction_flange",
+      per_case(v, [](const C& c, const V&) { return c.curve.running.rail_friction().flange; }), "1",
+      "friction on the gauge face"));
+  g.arrays.push_back(vector(p + "share", per_case(v, [](const C& c, const V&) { return c.share; }),
+                            "1", "share of the route's length"));
+  g.arrays.push_back(vector(p + "cant_deficiency_m",
+                            per_case(v, [](const C&, const V& c) { return c.cant_deficiency; }),
+                            "m", "cant deficiency (EN 13803's approximation)"));
+  g.arrays.push_back(vector(
+      p + "converged", per_case(v, [](const C&, const V& c) { return c.converged ? 1.0 : 0.0; }),
+      "1", "1 when the quasi-static solve converged (else its last iterate)"));
+  g.arrays.push_back(
+      vector(p + "iterations",
+             per_case(v, [](const C&, const V& c) { return static_cast<double>(c.iterations); }),
+             "1", "Newton iterations of the solve"));
+  g.arrays.push_back(vector(p + "car_body_y",
+                            per_case(v, [](const C&, const V& c) { return c.car_body.y; }), "m",
+                            "car body's lateral shift, + left"));
+  g.arrays.push_back(vector(p + "car_body_yaw",
+                            per_case(v, [](const C&, const V& c) { return c.car_body.yaw; }), "rad",
+                            "car body's yaw relative to the track"));
+  std::vector<double> bogie_y, bogie_yaw;
+  for (const V& c : v.curving)
+    for (const vehicle::BodyPlacement& b : c.bogies) {
+      bogie_y.push_back(b.y);
+      bogie_yaw.push_back(b.yaw);
+    }
+  g.arrays.push_back(shaped(p + "bogie_y", bogie_y, {n, vehicle::kBogies}, "m",
+                            "bogies' lateral shift [case, bogie], + left"));
+  g.arrays.push_back(shaped(p + "bogie_yaw", bogie_yaw, {n, vehicle::kBogies}, "rad",
+                            "bogies' yaw relative to the track [case, bogie]"));
+  using W = vehicle::CurvingWheelset;
+  const std::vector<std::size_t> ws{n, vehicle::kWheelsets};
+  g.arrays.push_back(shaped(p + "dy", per_wheelset(v, [](const W& w) { return w.state.dy; }), ws,
+                            "m", "wheelset shift [case, wheelset in order of travel], + left"));
+  g.arrays.push_back(shaped(p + "angle_of_attack",
+                            per_wheelset(v, [](const W& w) { return w.state.yaw; }), ws, "rad",
+                            "wheelset yaw relative to the radial direction [case, wheelset]"));
+  g.arrays.push_back(shaped(p + "spin", per_wheelset(v, [](const W& w) { return w.state.spin; }),
+                            ws, "rad/s", "axle angular velocity, free rolling [case, wheelset]"));
+  g.arrays.push_back(shaped(p + "sum_Y",
+                            per_wheelset(v, [](const W& w) { return w.forces.lateral; }), ws, "N",
+                            "sum of the rails' lateral forces on the wheelset, + left "
+                            "[case, wheelset]"));
+  g.arrays.push_back(shaped(p + "Fx_axle",
+                            per_wheelset(v, [](const W& w) { return w.forces.Fx_axle; }), ws, "N",
+                            "longitudinal creep force of the axle, + forward [case, wheelset]"));
+  using F = vehicle::WheelForces;
+  const std::vector<std::size_t> wheels{n, vehicle::kWheelsets, 2};
+  g.arrays.push_back(shaped(p + "Q", per_wheel(v, [](const F& w) { return w.Q; }), wheels, "N",
+                            "wheel load, normal to the track plane [case, wheelset, left|right]"));
+  g.arrays.push_back(shaped(p + "Y", per_wheel(v, [](const F& w) { return w.Y; }), wheels, "N",
+                            "lateral force of the rail on the wheel, + towards the track centre "
+                            "[case, wheelset, left|right]"));
+  g.arrays.push_back(shaped(p + "contact_angle",
+                            per_wheel(v, [](const F& w) { return w.contact_angle; }), wheels, "rad",
+                            "contact angle of the most loaded patch [case, wheelset, left|right]"));
+}
+
+namespace {
+
+std::vector<std::optional<vehicle::VehiclePlacement>> read_vehicle_starts(const ResultsFile& file,
+                                                                          int step) {
+  const std::string p = "vehicle/cases/";
+  const auto body_y = file.read_step_array(step, p + "car_body_y");
+  const auto body_yaw = file.read_step_array(step, p + "car_body_yaw");
+  const auto bogie_y = file.read_step_array(step, p + "bogie_y");
+  const auto bogie_yaw = file.read_step_array(step, p + "bogie_yaw");
+  const auto dy = file.read_step_array(step, p + "dy");
+  const auto yaw = file.read_step_array(step, p + "angle_of_attack");
+  const auto spin = file.read_step_array(step, p + "spin");
+  const std::size_t n = body_y.size();
+  const std::size_t b = vehicle::kBogies, w = vehicle::kWheelsets;
+  if (body_yaw.size() != n || bogie_y.size() != n * b || bogie_yaw.size() != n * b ||
+      dy.size() != n * w || yaw.size() != n * w || spin.size() != n * w)
+    throw InputError("results file " + file.path().string() + ", step " + std::to_string(step) +
+                     ": the vehicle's case arrays do not match; the file is damaged");
+  std::vector<std::optional<vehicle::VehiclePlacement>> starts(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    vehicle::VehiclePlacement& s = starts[i].emplace();
+    s.car_body = {body_y[i], body_yaw[i]};
+    for (std::size_t k = 0; k < b; ++k) s.bogies[k] = {bogie_y[i * b + k], bogie_yaw[i * b + k]};
+    for (std::size_t k = 0; k < w; ++k) {
+      s.wheelsets[k].dy = dy[i * w + k];
+      s.wheelsets[k].yaw = yaw[i * w + k];
+      s.wheelsets[k].spin = spin[i * w + k];
+    }
+  }
+  return starts;
+}
+
+}  // namespace
+
+std::vector<vehicle::VehicleCurving> read_vehicle_cases(const ResultsFile& file, int step,
+                                                        std::size_t cases) {
+  const std::string p = "vehicle/cases/";
+  const auto starts = read_vehicle_starts(file, step);
+  const std::size_t w = vehicle::kWheelsets;
+  auto read = [&](const std::string& name, std::size_t per_case) {
+    std::vector<double> values = file.read_step_array(step, p + name);
+    if (values.size() != cases * per_case)
+      throw InputError("results file " + file.path().string() + ", step " + std::to_string(step) +
+                       ": " + p + name + " has " + std::to_string(values.size()) + " values, " +
+                       std::to_string(cases * per_case) + " expected; the file is damaged");
+    return values;
+  };
+  if (starts.size() != cases)
+    throw InputError("results file " + file.path().string() + ", step " + std::to_string(step) +
+                     " holds " + std::to_string(starts.size()) +
+                     " running conditions, the scene's route has " + std::to_string(cases) +
+                     "; its route file has changed: start a new run with -o");
+  const auto deficiency = read("cant_deficiency_m", 1);
+  const auto converged = read("converged", 1);
+  const auto iterations = read("iterations", 1);
+  const auto sum_Y = read("sum_Y", w);
+  const auto Fx_axle = read("Fx_axle", w);
+  const auto Q = read("Q", 2 * w);
+  const auto Y = read("Y", 2 * w);
+  const auto angle = read("contact_angle", 2 * w);
+  std::vector<vehicle::VehicleCurving> out(cases);
+  for (std::size_t i = 0; i < cases; ++i) {
+    vehicle::VehicleCurving& c = out[i];
+    c.cant_deficiency = deficiency[i];
+    c.converged = converged[i] != 0.0;
+    c.iterations = static_cast<int>(iterations[i]);
+    c.car_body = starts[i]->car_body;
+    c.bogies = starts[i]->bogies;
+    for (std::size_t k = 0; k < w; ++k) {
+      vehicle::CurvingWheelset& ws = c.wheelsets[k];
+      ws.state = starts[i]->wheelsets[k];
+      ws.forces.lateral = sum_Y[i * w + k];
+      ws.forces.Fx_axle = Fx_axle[i * w + k];
+      for (std::size_t side = 0; side < 2; ++side) {
+        const std::size_t at = (i * w + k) * 2 + side;
+        ws.forces.wheels[side].Q = Q[at];
+        ws.forces.wheels[side].Y = Y[at];
+        ws.forces.wheels[side].contact_angle = angle[at];
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace wheelwear::pipeline::detail

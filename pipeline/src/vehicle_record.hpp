@@ -1,0 +1,36 @@
+#pragma once
+// The results file's record of a vehicle run's step: the collective the vehicle made (the
+// columns of a load collective, so that a resumed run reads back exactly the states it wore
+// with) and per running condition of the route the vehicle's solved state (docs/results.md,
+// "Vehicle runs"). The readers rebuild what a resumed run carries on with.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "step_record.hpp"
+#include "wheelwear/pipeline/results_file.hpp"
+#include "wheelwear/pipeline/vehicle_run.hpp"
+
+namespace wheelwear::pipeline::detail {
+
+// The states as load-collective columns under `prefix` ("" or e.g. "collective/").
+void add_collective(GroupRecord& g, const std::string& prefix,
+                    const std::vector<WheelsetStateSpec>& states);
+
+// The states written by add_collective in step `step` under `prefix`.
+std::vector<WheelsetStateSpec> read_collective(const ResultsFile& file, int step,
+                                               const std::string& prefix);
+
+// vehicle/cases/...: per case of the route its conditions, whether its solve converged, the
+// bodies' placements and per wheelset its state and the wheels' forces.
+void add_vehicle_cases(GroupRecord& g, const VehicleCollective& vehicle);
+
+// The solved cases as add_vehicle_cases recorded them in step `step` (`cases` of them): the
+// fields it records, the rest left at their defaults. Throws InputError when the step holds
+// another number of cases. A resumed run records them again until the vehicle's next solve and
+// starts that solve from them.
+std::vector<vehicle::VehicleCurving> read_vehicle_cases(const ResultsFile& file, int step,
+                                                        std::size_t cases);
+
+}  // namespace wheelwear::pipeline::detail

@@ -1,0 +1,263 @@
+// A run driven by the vehicle on its route: the route's running conditions, the states the
+// vehicle makes (the kernel meets the vehicle's forces and free rolling), the scene's keys, the
+// results' records and a resume identical to an uninterrupted run.
+
+#include "wheelwear/pipeline/vehicle_run.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include "wear_run_support.hpp"
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/pipeline/collective_wear.hpp"
+#include "wheelwear/pipeline/results_file.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
+#include "wheelwear/vehicle/vehicle_file.hpp"
+
+namespace wheelwear::pipeline {
+namespace {
+
+// One km of R 3000 m (whose quasi-static solve converges on S1002/60E1) with a lubricated gauge
+// face, eased out to tangent track in 60 m, then 940 m of tangent.
+constexpr const char* kShortRoute = R"(
+[route]
+name = "short"
+speed_m_s = 40
+[[section]]
+kind = "curve"
+length_m = 1000
+radius_m = 3000
+cant_m = 0.03
+friction_flange = 0.1
+[[section]]
+kind = "transition"
+length_m = 60
+radius_m = 0
+cant_m = 0
+[[section]]
+kind = "tangent"
+length_m = 940
+)";
+
+std::string vehicle_scene(double distance, double step, double resolve_depth) {
+  return "[contact]\ngrid_nx = 12\ngrid_ny = 12\n[run]\ndistance_m = " + std::to_string(distance) +
+         "\nstep_distance_m = " + std::to_string(step) +
+         "\nmax_depth_step_m = 1e-3\n[vehicle]\nfile = \"default\"\nresolve_depth_m = " +
+         std::to_string(resolve_depth) + "\n[route]\nfile = \"route.toml\"\n";
+}
+
+TEST(RouteCases, DefaultRouteKeepsEverySectionsShare) {
+  const vehicle::Route route = vehicle::default_route();
+  const std::vector<RouteCase> cases = route_cases(route);
+  // data/routes/default.toml: one tangent case (its five tangents), ten curves (five radii,
+  // both hands) and fourteen transitions of distinct end values.
+  ASSERT_EQ(cases.size(), 25u);
+  double total = 0.0;
+  for (const RouteCase& c : cases) total += c.share;
+  EXPECT_NEAR(total, 1.0, 1e-12);  // the route's length, up to rounding
+  // The route file's table: 54320 m of tangent, 3000 m of the lubricated R 500 m of 100 km.
+  EXPECT_EQ(cases[0].curve.running.curve_radius, 0.0);
+  EXPECT_NEAR(cases[0].share, 0.5432, 1e-12);
+  int lubricated = 0;
+  for (const RouteCase& c : cases) {
+    if (c.curve.running.rail_friction().flange != 0.1) continue;
+    ++lubricated;
+    EXPECT_EQ(c.curve.running.curve_radius, 500.0);
+    EXPECT_NEAR(c.share, 0.03, 1e-12);
+    EXPECT_EQ(c.curve.running.friction, 0.3);
+  }
+  EXPECT_EQ(lubricated, 1);
+}
+
+TEST(VehicleCollective, KernelMeetsTheVehiclesForcesAndFreeRolling) {
+  Scene scene = parse_scene(
+      "[load_collective]\n[[load_collective.state]]\naxle_load_N = 1e5\n"
+      "speed_m_s = 40\n",
+      {});
+  VehicleRun run;
+  run.vehicle = vehicle::default_vehicle();
+  run.route = vehicle::parse_route(kShortRoute, "test route");
+  const StateKernel kernel(scene);
+  const profiles::Profile wheel = profiles::wheel_profile("S1002", 0.46, {});
+  const VehicleCollective v = solve_vehicle_collective(run, kernel, {&wheel});
+  ASSERT_EQ(v.cases.size(), 3u);
+  ASSERT_EQ(v.states.size(), 12u);
+  EXPECT_EQ(v.unconverged, 0);
+  const contactgeom::WheelsetOnTrack track{kernel.pair(wheel), kernel.pair(wheel)};
+  int compared = 0;
+  for (std::size_t i = 0; i < v.states.size(); ++i) {
+    const WheelsetStateSpec& s = v.states[i];
+    // A quarter of its case's share of the route per wheelset.
+    EXPECT_NEAR(s.weight, (std::array{0.5, 0.03, 0.47})[i / 4] / 4.0, 1e-15);
+    const vehicle::CurvingWheelset& w = v.curving[i / 4].wheelsets[i % 4];
+    const contactgeom::WheelsetContact contact = kernel.contact(track, s);
+    double torque = 0.0, scale = 0.0;
+    for (int side = 0; side < 2; ++side) {
+      const WheelOutcome out = kernel.wheel(contact, side, s, wheel);
+      ASSERT_TRUE(out.usable());
+      const contactgeom::WheelRailContact& c = side == 0 ? contact.left : contact.right;
+      ASSERT_EQ(out.patches.size(), c.patches.size());
+      double Fx = 0.0;
+      for (std::size_t p = 0; p < out.patches.size(); ++p) {
+        const tangential::CreepForces& f = out.patches[p].solution.forces;
+        Fx += f.Fx;
+        torque += f.Fx * c.patches[p].rolling_radius -
+                  f.Mz.value_or(0.0) * std::sin(c.patches[p].contact_angle);
+        scale += std::abs(f.Fx) * c.patches[p].rolling_radius;
+      }
+      // The same contact (solved for the vertical force the vehicle's contact carried) and the
+      // same creepages: the kernel's force is the vehicle's, up to the normal solve's load
+      // tolerance (1e-9) carried through the creep force.
+      EXPECT_NEAR(Fx, w.forces.wheels[static_cast<std::size_t>(side)].Fx, 1e-6 * 55e3 + 1e-3);
+      ++compared;
+    }
+    // Free rolling: the axle torque within the curving solver's tolerance of 1e-7 of the sum of
+    // |Fx| r (1e-6 as the equilibrium test states it), plus what the load tolerance carries.
+    EXPECT_LE(std::abs(torque), 1e-6 * scale + 1e-3 * 0.46) << s.label;
+  }
+  EXPECT_EQ(compared, 24);
+}
+
+TEST(VehicleCollective, LubricatedGaugeFaceBoundsFlangePatches) {
+  // A flange contact: the leading wheelset pushed to its flange (7.5 mm) with a large angle of
+  // attack saturates every patch; each patch's creep force is then bounded by mu N with the
+  // friction of its zone (Coulomb's law), the gauge face's 0.1 where the angle is steep.
+  const Scene scene = parse_scene(
+      "[load_collective]\n[[load_collective.state]]\naxle_load_N = 1e5\nspeed_m_s = 40\n", {});
+  const StateKernel kernel(scene);
+  const profiles::Profile wheel = profiles::wheel_profile("S1002", 0.46, {});
+  const vehicle::WheelsetModel model = wheelset_model(kernel, wheel, wheel);
+  vehicle::WheelsetMotionState state;
+  state.dy = 7.5e-3;
+  state.yaw = 10e-3;
+  state.spin = 40.0 / 0.46;
+  vehicle::RunningConditions running{40.0, 0.0, 0.4};
+  running.friction_flange = 0.1;
+  const vehicle::WheelsetForces f = vehicle::wheelset_forces(model, state, 55e3, 55e3, running);
+  int flange = 0, tread = 0;
+  for (const vehicle::WheelForces& wheel_forces : f.wheels)
+    for (const vehicle::PatchForces& p : wheel_forces.patches) {
+      const double mu = std::abs(p.contact_angle) >= contactgeom::kFlangeContactAngle ? 0.1 : 0.4;
+      const double F = std::hypot(p.Fx, p.Fy);
+      EXPECT_LE(F, mu * p.normal_force * (1.0 + 1e-9));
+      // Saturated (a 10 mrad angle of attack slides every patch nearly whole).
+      EXPECT_GT(F, 0.9 * mu * p.normal_force);
+      (mu == 0.1 ? flange : tread) += 1;
+    }
+  EXPECT_GE(flange, 1);
+  EXPECT_GE(tread, 1);
+}
+
+TEST(VehicleScene, KeysAndTheirErrors) {
+  const std::string route = "[route]\nfile = \"default\"\n";
+  const Scene s =
+      parse_scene("[vehicle]\nfile = \"default\"\nwheelsets = \"leading\"\n" + route, {});
+  ASSERT_TRUE(s.vehicle_run);
+  EXPECT_TRUE(s.states.empty());
+  EXPECT_EQ(s.vehicle_run->worn_wheelsets(), (std::vector<int>{0, 2}));
+  EXPECT_EQ(s.vehicle_run->resolve_depth, 0.05e-3);
+  EXPECT_EQ(s.vehicle_run->route.sections.size(), 29u);
+  const auto message = [](const std::string& text) {
+    try {
+      parse_scene(text, {});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message("[vehicle]\nfile = \"default\"\n").find("[route] file is missing"),
+            std::string::npos);
+  EXPECT_NE(message("[vehicle]\nfile = \"nope.toml\"\n" + route).find("no such file"),
+            std::string::npos);
+  EXPECT_NE(
+      message("[vehicle]\nfile = \"default\"\nwheelsets = \"first\"\n" + route).find("use all"),
+      std::string::npos);
+  EXPECT_NE(message("[vehicle]\nfile = \"default\"\nresolve_depth_m = -1\n" + route)
+                .find("resolve_depth_m"),
+            std::string::npos);
+  EXPECT_NE(message("[vehicle]\nfile = \"default\"\n" + route +
+                    "[[load_collective.state]]\naxle_load_N = 1e5\nspeed_m_s = 40\n")
+                .find("give one"),
+            std::string::npos);
+  EXPECT_NE(message("title = \"x\"\n").find("[vehicle] file"), std::string::npos);
+}
+
+class VehicleRunTest : public WearRunTest {};
+
+TEST_F(VehicleRunTest, RecordsTheVehicleAndResumesToIdenticalResults) {
+  write("route.toml", kShortRoute);
+  // Solved at every step (resolve depth 0), three steps of 1 km.
+  const std::string text = vehicle_scene(2e3, 1e3, 0.0);
+  const fs::path reference = dir_ / "reference.h5", killed = dir_ / "killed.h5";
+  run(text, reference);
+  const ResultsFile ref = ResultsFile::read(reference);
+  ASSERT_EQ(ref.completed_steps(), 3);
+  for (int step = 0; step < 3; ++step) {
+    EXPECT_EQ(ref.read_step_array(step, "vehicle/solved").at(0), 1.0);
+    EXPECT_EQ(ref.read_step_array(step, "vehicle/cases/dy").size(), 12u);  // 3 cases x 4
+    EXPECT_EQ(ref.read_step_array(step, "vehicle/cases/Q").size(), 24u);
+    const auto weight = ref.read_step_array(step, "collective/weight");
+    ASSERT_EQ(weight.size(), 12u);
+    double total = 0.0;
+    for (double w : weight) total += w;
+    EXPECT_NEAR(total, 1.0, 1e-12);
+  }
+
+  // Interrupted after its second step (step 1), then resumed.
+  RunOptions stop;
+  stop.progress = [](const RunProgress& p) {
+    if (p.step == 1) throw std::runtime_error("interrupted");
+  };
+  EXPECT_THROW(run_scene(parse_scene(text, dir_), text, dir_, false, killed, stop),
+               std::runtime_error);
+  ASSERT_EQ(ResultsFile::read(killed).completed_steps(), 2);
+  resume_run(killed, {});
+  const ResultsFile res = ResultsFile::read(killed);
+  ASSERT_EQ(res.completed_steps(), 3);
+  int compared = 0;
+  for (int step = 0; step < 3; ++step)
+    for (const std::string& name : ref.step_array_names(step)) {
+      const auto a = ref.read_step_array(step, name), b = res.read_step_array(step, name);
+      ASSERT_EQ(a.size(), b.size()) << name;
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        if (std::isnan(a[i]) && std::isnan(b[i])) continue;
+        ASSERT_EQ(a[i], b[i]) << "step " << step << ' ' << name << '[' << i << ']';
+        ++compared;
+      }
+    }
+  EXPECT_GT(compared, 1000);
+}
+
+TEST_F(VehicleRunTest, ResolvesOnlyOnceTheWearReachesTheDepth) {
+  write("route.toml", kShortRoute);
+  // 1e-3 m (the largest depth accepted) is not reached in 2 km: the vehicle is solved once.
+  const fs::path out = dir_ / "run.h5";
+  run(vehicle_scene(2e3, 1e3, 1e-3), out);
+  const ResultsFile file = ResultsFile::read(out);
+  ASSERT_EQ(file.completed_steps(), 3);
+  EXPECT_EQ(file.read_step_array(0, "vehicle/solved").at(0), 1.0);
+  double depth = 0.0;
+  for (int step = 1; step < 3; ++step) {
+    EXPECT_EQ(file.read_step_array(step, "vehicle/solved").at(0), 0.0);
+    // The same states as the solve of step 0.
+    EXPECT_EQ(file.read_step_array(step, "collective/dy_m"),
+              file.read_step_array(0, "collective/dy_m"));
+    const double d = file.read_step_array(step, "vehicle/depth_since_solve").at(0);
+    EXPECT_GE(d, depth);
+    depth = d;
+  }
+  EXPECT_LT(depth, 1e-3);
+
+  // A depth of 1 nm is reached by every step's wear: solved again at every step.
+  const fs::path often = dir_ / "often.h5";
+  run(vehicle_scene(2e3, 1e3, 1e-9), often);
+  const ResultsFile again = ResultsFile::read(often);
+  for (int step = 0; step < 3; ++step)
+    EXPECT_EQ(again.read_step_array(step, "vehicle/solved").at(0), 1.0) << step;
+}
+
+}  // namespace
+}  // namespace wheelwear::pipeline
