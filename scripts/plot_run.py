@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Plots of a wheelwear results file: profile evolution, wear depth per step, wheel parameters
-and conicity, and T gamma maps where the run recorded them.
+and conicity, T gamma maps where the run recorded them, and a vehicle run's curving states.
 
     scripts/plot_run.py RUN.h5 [--out DIR]
 
@@ -138,6 +138,77 @@ def plot_tgamma(f, out):
     return path
 
 
+def plot_vehicle(f, out):
+    """A vehicle run's quasi-static states against curvature, first and last step, and where
+    the wear of the first step comes from."""
+    groups = steps(f)
+    if "vehicle" not in groups[0]:
+        return None
+    fig, axes = plt.subplots(2, 2, figsize=(11, 8))
+    markers = ("o", "s", "^", "v")
+    for g, style, when in ((groups[0], "-", "first step"), (groups[-1], "--", "last step")):
+        c = g["vehicle"]["cases"]
+        radius = np.asarray(c["curve_radius_m"])
+        hand = np.sign(radius)  # + right-hand: the left rail outer
+        curvature = np.where(radius != 0.0, 1e3 / np.where(radius == 0.0, 1.0, np.abs(radius)), 0.0)
+        order = np.argsort(curvature)
+        converged = np.asarray(c["converged"]) > 0
+        dy = np.asarray(c["dy"]) * 1e3
+        aoa = np.asarray(c["angle_of_attack"]) * 1e3
+        Q = np.asarray(c["Q"])
+        Y = np.asarray(c["Y"])
+        for k in range(dy.shape[1]):
+            colour = plt.cm.tab10(k)
+            label = f"wheelset {k + 1}, {when}"
+            # Towards the outer rail (+) whatever the curve's hand.
+            axes[0, 0].plot(curvature[order], (hand * dy[:, k])[order], style, color=colour,
+                            marker=markers[k], ms=4, label=label)
+            axes[0, 1].plot(curvature[order], (hand * aoa[:, k])[order], style, color=colour,
+                            marker=markers[k], ms=4)
+            outer = np.where(hand >= 0, 0, 1)  # left wheel outer in right-hand curves
+            ratio = Y[np.arange(len(radius)), k, outer] / Q[np.arange(len(radius)), k, outer]
+            axes[1, 0].plot(curvature[order], ratio[order], style, color=colour,
+                            marker=markers[k], ms=4)
+        bad = ~converged
+        if bad.any():
+            axes[0, 0].plot(curvature[bad], (hand * dy[:, 0])[bad], "kx", ms=9,
+                            label=f"not converged ({when})")
+    axes[0, 0].set_ylabel("shift towards the outer rail [mm]")
+    axes[0, 1].set_ylabel("angle of attack, + towards the outer rail [mrad]")
+    axes[1, 0].set_ylabel("Y/Q of the outer wheel")
+    for ax in (axes[0, 0], axes[0, 1], axes[1, 0]):
+        ax.set_xlabel("curvature 1000/|R| [1/km]")
+        ax.grid(alpha=0.3)
+    axes[0, 0].legend(fontsize=7)
+    axes[0, 0].set_title("quasi-static curving on the current profiles")
+    # Where the first step's wear comes from: worn area per route condition.
+    first = groups[0]
+    ax = axes[1, 1]
+    if "states" in first and "worn_area" in first["states"] and "collective" in first:
+        area = np.nansum(np.asarray(first["states"]["worn_area"]), axis=(1, 2))
+        weight = np.asarray(first["collective"]["weight"])
+        weight = weight / weight.sum()
+        labels = first["collective"]["label"][()].decode().splitlines()
+        conditions = [label.rsplit(", wheelset", 1)[0] for label in labels]
+        totals = {}
+        for condition, a, w in zip(conditions, area, weight):
+            totals[condition] = totals.get(condition, 0.0) + a * w
+        names = sorted(totals, key=totals.get, reverse=True)[:12]
+        values = np.array([totals[n] for n in names])
+        ax.barh(range(len(names)), 100 * values / max(sum(totals.values()), 1e-300))
+        ax.set_yticks(range(len(names)), names, fontsize=7)
+        ax.invert_yaxis()
+        ax.set_xlabel("share of the worn area, first step [%]")
+        ax.set_title("where the wear comes from")
+    else:
+        ax.set_axis_off()
+    path = os.path.join(out, "vehicle.png")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("run", help="results file written by `wheelwear run`")
@@ -152,7 +223,7 @@ def main():
     with f:
         if "steps" not in f or len(f["steps"]) == 0:
             sys.exit(f"plot_run.py: {args.run} holds no steps")
-        for plot in (plot_profiles, plot_wear_depth, plot_parameters, plot_tgamma):
+        for plot in (plot_profiles, plot_wear_depth, plot_parameters, plot_tgamma, plot_vehicle):
             path = plot(f, out)
             if path:
                 print(path)

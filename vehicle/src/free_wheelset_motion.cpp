@@ -47,6 +47,10 @@ WheelsetMotion simulate_free_wheelset(const WheelsetModel& model, const FreeWhee
               options.time_step <= options.duration,
           "time step", options.time_step, "must lie in (0, duration] (s)");
   require(options.sample_every >= 1, "sample_every", options.sample_every, "must be >= 1");
+  require(std::isfinite(body.lateral_stiffness) && body.lateral_stiffness >= 0.0,
+          "lateral stiffness", body.lateral_stiffness, "must not be negative (N/m)");
+  require(std::isfinite(body.yaw_stiffness) && body.yaw_stiffness >= 0.0, "yaw stiffness",
+          body.yaw_stiffness, "must not be negative (N m/rad)");
 
   // Free rolling on the centred wheelset's radius.
   WheelsetMotionState centred;
@@ -72,7 +76,8 @@ WheelsetMotion simulate_free_wheelset(const WheelsetModel& model, const FreeWhee
                            contactgeom::status_name(w.status) +
                            "): the motion has grown past the profiles"};
     if (!f.loads_met) throw LeftTheRails{f.message};
-    dxdt = {x[2], x[3], f.lateral / body.mass, f.yaw_moment / body.yaw_inertia};
+    dxdt = {x[2], x[3], (f.lateral - body.lateral_stiffness * x[0]) / body.mass,
+            (f.yaw_moment - body.yaw_stiffness * x[1]) / body.yaw_inertia};
   };
 
   WheelsetMotion motion;

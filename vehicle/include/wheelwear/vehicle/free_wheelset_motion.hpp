@@ -1,9 +1,10 @@
 #pragma once
-/// The motion of a single wheelset without suspension on tangent track: its lateral shift and
-/// yaw under the rails' forces (wheelset_forces), integrated in time. The axle spin is not a
-/// degree of freedom here: it is held at free rolling on the centred wheelset's rolling radius,
-/// as in Klingel's kinematic oscillation (a wheelset driven at constant speed). The textbook
-/// check of the time-domain machinery: a conical wheelset's wavelength 2 pi sqrt(r0 e0 / lambda).
+/// The motion of a single wheelset on tangent track, free or held by springs to a frame: its
+/// lateral shift and yaw under the rails' forces (wheelset_forces), integrated in time. The axle
+/// spin is not a degree of freedom here: it is held at free rolling on the centred wheelset's
+/// rolling radius, as in Klingel's kinematic oscillation (a wheelset driven at constant speed). The
+/// textbook check of the time-domain machinery: a conical wheelset's wavelength 2 pi sqrt(r0 e0 /
+/// lambda).
 
 #include <string>
 #include <vector>
@@ -17,6 +18,10 @@ struct FreeWheelsetBody {
   double mass = 1813.0;         ///< [kg] (Manchester benchmark wheelset)
   double yaw_inertia = 1120.0;  ///< about the vertical axis [kg m^2]
   double wheel_load = 55e3;     ///< Q of each wheel [N]
+  /// Springs to a frame that runs along the track's centre line (a bogie frame held still):
+  /// lateral [N/m] and yaw [N m/rad]; 0: a free wheelset.
+  double lateral_stiffness = 0.0;
+  double yaw_stiffness = 0.0;
 };
 
 /// One sample of the motion.
