@@ -26,9 +26,10 @@ PER = 1e8  # 10^5 km in m
 
 
 def worn_area(y0, z0, y1, z1):
-    """Area between the new profile and a worn one [m^2] on the new one's lateral grid."""
+    """Area between the new profile and a worn one [m^2] on the new one's lateral grid (z is +
+    down: the worn surface lies above the new one, at smaller z)."""
     z1_on_0 = np.interp(y0, y1, z1)
-    return float(np.trapz(np.clip(z1_on_0 - z0, 0.0, None), y0))
+    return float(np.trapz(np.clip(z0 - z1_on_0, 0.0, None), y0))
 
 
 def history(path):
