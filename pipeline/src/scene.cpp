@@ -85,6 +85,22 @@ std::string profile_spec(const toml::node& node, const std::string& key, const f
   return file.string();
 }
 
+// A file named by `key`, or none for "default" (the built-in one, `builtin`); a file that does
+// not exist is refused, naming both choices (`file_kind`: what kind of file to give).
+std::optional<fs::path> builtin_or_file(const toml::node& node, const std::string& key,
+                                        const fs::path& base, std::string_view builtin,
+                                        std::string_view file_kind) {
+  const std::string name = text(node, key);
+  if (name == "default") return std::nullopt;
+  const fs::path file = resolve(base, name);
+  if (!fs::is_regular_file(file)) {
+    throw InputError(where(node.source(), key) + " = \"" + name + "\": no such file (looked for " +
+                     file.string() + "); give \"default\" (" + std::string(builtin) + ") or " +
+                     std::string(file_kind));
+  }
+  return file;
+}
+
 // [wheel] origin: "auto", "taping-line" or "internal-face" (profiles::WheelOrigin).
 profiles::WheelOrigin wheel_origin(const toml::node& node, const std::string& key) {
   const std::string name = text(node, key);
@@ -358,23 +374,15 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
        section("vehicle",
                {{"file",
                  [&](const auto& n, const auto& k) {
-                   VehicleRun& run = vehicle_run();
                    vehicle_line = static_cast<int>(n.source().begin.line);
-                   const std::string name = text(n, k);
-                   if (name == "default") {
-                     run.vehicle = vehicle::default_vehicle();
-                     run.vehicle_file.clear();
-                     return;
-                   }
-                   const fs::path file = resolve(base_directory, name);
-                   if (!fs::is_regular_file(file))
-                     throw InputError(where(n.source(), k) + " = \"" + name +
-                                      "\": no such file (looked for " + file.string() +
-                                      "); give \"default\" (the built-in coach) or a vehicle "
-                                      "file (wheelwear curving --export-default-vehicle DIR "
-                                      "writes one to start from)");
-                   run.vehicle = vehicle::read_vehicle(file);
-                   run.vehicle_file = file.string();
+                   const auto file = builtin_or_file(
+                       n, k, base_directory,
+                       "the built-in coach",
+                       "a vehicle file (wheelwear curving --export-default-vehicle DIR writes "
+                       "one to start from)");
+                   VehicleRun& run = vehicle_run();
+                   run.vehicle = file ? vehicle::read_vehicle(*file) : vehicle::default_vehicle();
+                   run.vehicle_file = file ? file->string() : std::string();
                  }},
                 {"wheelsets",
                  [&](const auto& n, const auto& k) {
@@ -396,22 +404,13 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
       {"route", section("route",
                         {{"file",
                           [&](const auto& n, const auto& k) {
-                            VehicleRun& run = vehicle_run();
                             route_line = static_cast<int>(n.source().begin.line);
-                            const std::string name = text(n, k);
-                            if (name == "default") {
-                              run.route = vehicle::default_route();
-                              run.route_file.clear();
-                              return;
-                            }
-                            const fs::path file = resolve(base_directory, name);
-                            if (!fs::is_regular_file(file))
-                              throw InputError(where(n.source(), k) + " = \"" + name +
-                                               "\": no such file (looked for " + file.string() +
-                                               "); give \"default\" (the built-in mixed line) "
-                                               "or a route file (docs/routes.md)");
-                            run.route = vehicle::read_route(file);
-                            run.route_file = file.string();
+                            const auto file = builtin_or_file(
+                                n, k, base_directory,
+                                "the built-in mixed line", "a route file (docs/routes.md)");
+                            VehicleRun& run = vehicle_run();
+                            run.route = file ? vehicle::read_route(*file) : vehicle::default_route();
+                            run.route_file = file ? file->string() : std::string();
                           }}})},
       {"load_collective",
        section("load_collective",

@@ -22,27 +22,8 @@ namespace {
 
 using testing::cone_geometry;
 using testing::conical_wheelset;
-
-// The creep coefficients f11, f22 [N] of a wheel of the centred wheelset at wheel load `load`:
-// Kalker's linear theory on its patch's ellipse, read off as force over a small creepage.
-struct CreepCoefficients {
-  double f11 = 0.0, f22 = 0.0;
-};
-
-CreepCoefficients creep_coefficients(const WheelsetModel& model, double load) {
-  contactgeom::WheelsetState s;
-  s.vertical_force_left = s.vertical_force_right = load;
-  const contactgeom::WheelsetContact c = contactgeom::solve_wheelset(model.track, s);
-  const contactgeom::WheelRailPatch& patch = c.left.patches.at(0);
-  const contactgeom::Sdec ellipse{patch.sdec.a, patch.sdec.b, 0.0};
-  const double creepage = 1e-6;
-  const tangential::ContactLoad contact_load{patch.normal_force, 0.3};
-  const auto fx = tangential::solve_patch(model.method, ellipse, {creepage, 0.0, 0.0}, contact_load,
-                                          model.material, model.solve);
-  const auto fy = tangential::solve_patch(model.method, ellipse, {0.0, creepage, 0.0}, contact_load,
-                                          model.material, model.solve);
-  return {-fx.forces.Fx / creepage, -fy.forces.Fy / creepage};
-}
+using testing::creep_coefficients;
+using testing::CreepCoefficients;
 
 // Unknowns: car body (y, yaw), bogies (y, yaw), wheelsets (y, yaw); yaws relative to the track's
 // tangent at each body (a wheelset's: its angle of attack).

@@ -25,23 +25,13 @@ using testing::conical_wheelset;
 
 constexpr double kWheelLoad = 55e3;  // [N]
 
-// The linear model of `model`'s wheelset: creep coefficients of its centred patch (Kalker's
-// linear theory on the ellipse, read off as force over a small creepage), its effective
-// conicity and rolling radius, the default vehicle's wheelset inertia and, with `springs`, a
-// soft primary suspension (1 MN/m, 1 MN m/rad) that puts the critical speed near 50 m/s; the
-// Manchester coach's own primary yaw stiffness holds a lone wheelset stable beyond 150 m/s.
+// The linear model of `model`'s wheelset: creep coefficients of its centred patch
+// (testing::creep_coefficients), its effective conicity and rolling radius, the default
+// vehicle's wheelset inertia and, with `springs`, a soft primary suspension (1 MN/m, 1 MN m/rad)
+// that puts the critical speed near 50 m/s; the Manchester coach's own primary yaw stiffness holds
+// a lone wheelset stable beyond 150 m/s.
 LinearWheelset linear_model(const WheelsetModel& model, bool springs) {
-  contactgeom::WheelsetState s;
-  s.vertical_force_left = s.vertical_force_right = kWheelLoad;
-  const contactgeom::WheelsetContact c = contactgeom::solve_wheelset(model.track, s);
-  const contactgeom::WheelRailPatch& patch = c.left.patches.at(0);
-  const contactgeom::Sdec ellipse{patch.sdec.a, patch.sdec.b, 0.0};
-  const double creepage = 1e-6;
-  const tangential::ContactLoad load{patch.normal_force, 0.3};
-  const auto fx = tangential::solve_patch(model.method, ellipse, {creepage, 0.0, 0.0}, load,
-                                          model.material, model.solve);
-  const auto fy = tangential::solve_patch(model.method, ellipse, {0.0, creepage, 0.0}, load,
-                                          model.material, model.solve);
+  const testing::CreepCoefficients f = testing::creep_coefficients(model, kWheelLoad);
   const testing::ConeGeometry cone = cone_geometry(model, 1e-3);
   const Vehicle v = default_vehicle();
   LinearWheelset w;
@@ -51,8 +41,8 @@ LinearWheelset linear_model(const WheelsetModel& model, bool springs) {
     w.lateral_stiffness = 1e6;
     w.yaw_stiffness = 1e6;
   }
-  w.f11 = -fx.forces.Fx / creepage;
-  w.f22 = -fy.forces.Fy / creepage;
+  w.f11 = f.f11;
+  w.f22 = f.f22;
   w.conicity = cone.conicity;
   w.rolling_radius = cone.centred_radius;
   w.lateral_arm = model.lateral_arm;
