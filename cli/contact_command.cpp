@@ -94,7 +94,8 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
       .add("contact_angle", p.contact_angle)
       .add("N", p.normal_force)
       .add("pmax", p.pmax)
-      .add("rolling_radius", p.rolling_radius);
+      .add("rolling_radius", p.rolling_radius)
+      .add("share", p.share);
   if (p.hertz) {
     o.add("hertz_a", p.hertz->a).add("hertz_b", p.hertz->b).add("hertz_p0", p.hertz->p0);
   }
@@ -192,6 +193,11 @@ void run_contact(const ContactArgs& args) {
           p.measures.area * 1e6, p.measures.length * 1e3, p.measures.width * 1e3,
           p.measures.W1 * 1e3, p.measures.W2 * 1e3, p.pmax * 1e-6, p.sdec.a * 1e3, p.sdec.b * 1e3,
           p.sdec.psi);
+      if (p.share < 1.0)
+        std::printf(
+            "  share %.3f of a blend of the one- and two-contact descriptions (forces "
+            "above scaled by it)\n",
+            p.share);
       if (args.creep) {
         const tangential::Creepages& c = creep[static_cast<std::size_t>(k - 1)].creepages;
         const tangential::CreepForces& f = creep[static_cast<std::size_t>(k - 1)].forces;

@@ -147,7 +147,7 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
     if (fast_path_approach(geometry, g, directions, Region{strips, last, c}, E_star, vertical_force,
                            options, kp, forces)) {
       const double candidate = kp.approach / c - g.h_min;
-      const auto runs = interpenetration_runs(g, g.h_min + candidate, options.kp.epsilon);
+      const auto runs = interpenetration_runs(g, g.h_min + candidate);
       if (runs.size() == 1 &&
           std::abs(geometry.contact_angle(runs[0].y_O) - angle) < 1e-3 * std::max(1.0, angle)) {
         d = candidate;
@@ -200,7 +200,7 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
   result.approach = d;
   result.status = WheelRailStatus::ok;
   bool at_profile_end = false;
-  for (const Run& run : interpenetration_runs(g, g.h_min + d, options.kp.epsilon))
+  for (const Run& run : interpenetration_runs(g, g.h_min + d))
     for (std::size_t k : g.end_samples) at_profile_end |= (k == run.first || k == run.last);
   const std::string past = past_flange_reason(geometry, result.patches);
   if (at_jump) {

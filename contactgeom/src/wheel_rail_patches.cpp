@@ -12,7 +12,71 @@ Run with_minimum(const GapSamples& g, std::size_t first, std::size_t last) {
   return Run{first, last, m.y, m.h};
 }
 
-std::vector<Run> interpenetration_runs(const GapSamples& g, double approach, double epsilon) {
+namespace {
+
+// A rise of the gap between two basins of one interpenetration run.
+struct Cut {
+  std::size_t at;     // the highest sample between the basins (the left piece keeps it)
+  double separation;  // Basin separation of the cut: 0 (one contact) ... 1 (two contacts)
+};
+
+double smoothstep(double t) {
+  t = std::clamp(t, 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// The rises of the gap in samples [first, last] by kBasinRipple or more between two minima:
+// a minimum is confirmed once the gap has risen that much after it, the rise once the gap has
+// fallen that much after it.
+std::vector<std::size_t> rises(const GapSamples& g, std::size_t first, std::size_t last) {
+  std::vector<std::size_t> at;
+  std::size_t lowest = first, highest = first;
+  bool rising = false;
+  for (std::size_t j = first + 1; j <= last; ++j) {
+    if (!rising) {
+      if (g.h[j] < g.h[lowest]) lowest = j;
+      if (g.h[j] > g.h[lowest] + kBasinRipple) {
+        rising = true;
+        highest = j;
+      }
+    } else {
+      if (g.h[j] > g.h[highest]) highest = j;
+      if (g.h[j] < g.h[highest] - kBasinRipple) {
+        at.push_back(highest);
+        lowest = j;
+        rising = false;
+      }
+    }
+  }
+  return at;
+}
+
+double lowest_gap(const GapSamples& g, std::size_t first, std::size_t last) {
+  return *std::min_element(g.h.begin() + static_cast<std::ptrdiff_t>(first),
+                           g.h.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+}
+
+// The cuts of run [first, last] at `approach` with their separations.
+std::vector<Cut> cuts_of(const GapSamples& g, std::size_t first, std::size_t last,
+                         double approach) {
+  const std::vector<std::size_t> at = rises(g, first, last);
+  std::vector<Cut> cuts;
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    const std::size_t left_first = k == 0 ? first : at[k - 1] + 1;
+    const std::size_t right_last = k + 1 == at.size() ? last : at[k + 1];
+    const double shallower =
+        std::max(lowest_gap(g, left_first, at[k]), lowest_gap(g, at[k] + 1, right_last));
+    const double prominence = g.h[at[k]] - shallower;
+    const double depth = approach - shallower;  // the shallower basin's local approach
+    const double r = prominence / depth;
+    cuts.push_back({at[k], smoothstep((r - kMergedBelow) / (kSeparateAbove - kMergedBelow))});
+  }
+  return cuts;
+}
+
+}  // namespace
+
+std::vector<Run> interpenetration_runs(const GapSamples& g, double approach) {
   std::vector<Run> runs;
   for (std::size_t i = 0; i < g.h.size();) {
     if (!(g.h[i] < approach)) {
@@ -22,25 +86,51 @@ std::vector<Run> interpenetration_runs(const GapSamples& g, double approach, dou
     std::size_t last = i;
     while (last + 1 < g.h.size() && g.window[last + 1] == g.window[i] && g.h[last + 1] < approach)
       ++last;
-    const Run whole = with_minimum(g, i, last);
-    const double virtual_level = whole.h_O + epsilon * (approach - whole.h_O);
-    std::size_t start = i;
-    bool in_piece = false, seen_piece = false;
-    std::size_t peak = i;  // highest sample since the last piece ended
-    for (std::size_t j = i; j <= last; ++j) {
-      const bool inside = g.h[j] < virtual_level;
-      if (inside && !in_piece && seen_piece) {
-        runs.push_back(with_minimum(g, start, peak));
-        start = peak + 1;
+    // Firm cuts separate contacts; between two firm cuts, the piece is blended from itself cut at
+    // its partial cuts (share: their least separation) and itself uncut (the rest).
+    const std::vector<Cut> cuts = cuts_of(g, i, last, approach);
+    std::size_t piece_first = i;
+    std::size_t k = 0;
+    while (piece_first <= last) {
+      std::vector<std::size_t> partial;
+      double split_share = 1.0;
+      std::size_t piece_last = last;
+      for (; k < cuts.size(); ++k) {
+        if (cuts[k].separation >= 1.0) {
+          piece_last = cuts[k++].at;
+          break;
+        }
+        if (cuts[k].separation > 0.0) {
+          partial.push_back(cuts[k].at);
+          split_share = std::min(split_share, cuts[k].separation);
+        }
       }
-      if (!inside && (in_piece || g.h[j] > g.h[peak])) peak = j;
-      if (inside) seen_piece = true;
-      in_piece = inside;
+      if (partial.empty()) {
+        runs.push_back(with_minimum(g, piece_first, piece_last));
+      } else {
+        std::size_t from = piece_first;
+        for (std::size_t at : partial) {
+          runs.push_back(with_minimum(g, from, at));
+          runs.back().share = split_share;
+          from = at + 1;
+        }
+        runs.push_back(with_minimum(g, from, piece_last));
+        runs.back().share = split_share;
+        runs.push_back(with_minimum(g, piece_first, piece_last));
+        runs.back().share = 1.0 - split_share;
+      }
+      piece_first = piece_last + 1;
     }
-    runs.push_back(with_minimum(g, start, last));
     i = last + 1;
   }
   return runs;
+}
+
+void scale_loads(KpPatch& patch, double share) {
+  for (KpStrip& strip : patch.strips) strip.p_peak *= share;
+  patch.normal_force *= share;
+  patch.p_O *= share;
+  patch.pmax *= share;
 }
 
 PatchForces strip_forces(const WheelRailGap& geometry, const GapSamples& g,
@@ -58,10 +148,11 @@ PatchForces strip_forces(const WheelRailGap& geometry, const GapSamples& g,
 }
 
 WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch, double y_O_run,
-                              double angle, PatchForces forces, double E_star) {
+                              double angle, PatchForces forces, double E_star, double share) {
   const double c = std::cos(angle);
   WheelRailPatch p;
   p.kp = patch;
+  p.share = share;
   p.contact_angle = angle;
   p.normal_force = patch.normal_force;
   p.vertical_force = forces.vertical;
@@ -113,19 +204,21 @@ PatchSet patches_at(const WheelRailGap& geometry, const GapSamples& g, SampleDir
   PatchSet out;
   thread_local std::vector<double> h, ax;
   thread_local KpResult kp;
-  for (const Run& run : interpenetration_runs(g, approach, options.kp.epsilon)) {
+  for (const Run& run : interpenetration_runs(g, approach)) {
     const double angle = geometry.contact_angle(run.y_O);
     const double c = std::cos(angle);
     const GapStrips strips = strips_of(geometry, g, run.first, run.last, run.y_O, c, h, ax);
     solve_kp_approach(strips, E_star, approach * c, options.kp, kp);
     if (kp.status != KpStatus::converged) continue;
-    for (const KpPatch& patch : kp.patches) {
+    for (KpPatch& patch : kp.patches) {
+      if (run.share < 1.0) scale_loads(patch, run.share);
       const PatchForces f = strip_forces(geometry, g, directions, strips, run.last, patch);
       out.vertical += f.vertical;
       out.lateral += f.lateral;
       out.steepest = std::max(out.steepest, std::abs(angle));
       if (describe)
-        out.patches.push_back(describe_patch(geometry, patch, run.y_O, angle, f, E_star));
+        out.patches.push_back(
+            describe_patch(geometry, patch, run.y_O, angle, f, E_star, run.share));
     }
   }
   return out;

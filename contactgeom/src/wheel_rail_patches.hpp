@@ -16,16 +16,33 @@ namespace wheelwear::contactgeom::detail {
 struct Run {
   std::size_t first = 0, last = 0;  // sample indices, inclusive
   double y_O = 0.0, h_O = 0.0;      // gap minimum (parabola through the lowest sample)
+  double share = 1.0;               // weight of this contact in a blend (interpenetration_runs)
 };
 
 // The run of samples [first, last] with its refined gap minimum.
 Run with_minimum(const GapSamples& g, std::size_t first, std::size_t last);
 
-// Runs of samples where the surfaces interpenetrate at the rigid approach. A run whose virtual
-// interpenetration (Kik-Piotrowski: the gap below h_O + eps (approach - h_O)) falls apart into
-// separate pieces is cut at the highest gap between them: each piece is a contact of its own,
-// with its own initial contact point and contact angle (two-point contact of tread and flange).
-std::vector<Run> interpenetration_runs(const GapSamples& g, double approach, double epsilon);
+// Rises of the gap smaller than this between two minima [m] are ripples of a sampled or
+// measured profile within one contact, never a cut.
+constexpr double kBasinRipple = 0.5e-6;
+// Where the gap rises between two minima, r is the rise above the shallower minimum over that
+// minimum's depth below the approach (r = 1: the two regions have just joined). Below
+// kMergedBelow the basins are one contact; above kSeparateAbove two; in between the contact is
+// blended from both descriptions with shares that follow r smoothly. On S1002/60E1, a shallow
+// dip within CONTACT's single tread patch has r = 0.05; two-point tread and flange-root contacts
+// have r = 0.6 or more.
+constexpr double kMergedBelow = 0.3;
+constexpr double kSeparateAbove = 0.6;
+
+// Runs of samples where the surfaces interpenetrate at the rigid approach, each cut into one
+// contact per basin of the gap where the rise between basins is deep enough (see r above): it is
+// cut at the highest gap between them, and each piece is a contact of its own with its own
+// initial contact point and contact angle (two-point contact of tread and flange). The cuts and
+// shares are continuous in the approach and the profiles' positions, so the loads stay
+// continuous where two regions join or a basin's minimum vanishes (Kik-Piotrowski's virtual
+// penetration alone would merge them and drop the shallower one's load at once). Each run's
+// share is 1 unless it belongs to a blend.
+std::vector<Run> interpenetration_runs(const GapSamples& g, double approach);
 
 // The strips of samples [first, last] for the Kik-Piotrowski solver, in increasing s (towards
 // the gauge side, -y in the profile frame), s measured from y_O along the contact plane, whose
@@ -74,9 +91,12 @@ PatchForces strip_forces(const WheelRailGap& geometry, const GapSamples& g,
 
 // The details of one Kik-Piotrowski patch of the region whose gap minimum lies at rail-frame
 // y_O, with contact angle `angle` and forces `forces` (strip_forces); its strips' s is measured
-// from y_O along the contact plane.
+// from y_O along the contact plane; `share` its weight in a blend (Run::share).
 WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch, double y_O_run,
-                              double angle, PatchForces forces, double E_star);
+                              double angle, PatchForces forces, double E_star, double share = 1.0);
+
+// Scales the patch's pressures and load by its share of a blend.
+void scale_loads(KpPatch& patch, double share);
 
 // Patches and their total forces at one rigid approach.
 struct PatchSet {

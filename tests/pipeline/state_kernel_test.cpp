@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 std::string two_point_scene(const std::string& extra = "") {
   return "[contact]\ngrid_nx = 10\ngrid_ny = 10\n" + extra +
          "[run]\ndistance_m = 1000\nstep_distance_m = 1000\n"
-         "[[load_collective.state]]\ndy_m = 0.005\naxle_load_N = 110e3\nspeed_m_s = 30\n"
+         "[[load_collective.state]]\ndy_m = 0.0048\naxle_load_N = 110e3\nspeed_m_s = 30\n"
          "yaw_rad = 1e-3\n";
 }
 

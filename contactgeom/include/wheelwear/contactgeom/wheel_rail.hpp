@@ -95,6 +95,11 @@ struct WheelRailPatch {
   /// the gauge side.
   double lateral_force = 0.0;
   double pmax = 0.0;  ///< [Pa]
+  /// 1 for a contact of its own. Where two basins of the gap are between one contact and two,
+  /// the contact is blended from both descriptions (the basins cut apart, and one patch over
+  /// both), each patch with its share of the blend, both shares summing to 1: its pressures and
+  /// forces above are already scaled by it, its shape is that of its description.
+  double share = 1.0;
 };
 
 /// Outcome of a wheel/rail contact evaluation. Where several apply, the first of load_jump,
