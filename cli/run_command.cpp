@@ -72,11 +72,15 @@ void show_progress(const pipeline::RunProgress& p) {
   // ETA from the distance rate so far; the step lengths vary, the distance is what remains.
   const double eta = done > 0.0 ? p.elapsed * (1.0 - done) / done : 0.0;
   std::string vehicle;
-  if (p.vehicle_solved)
-    vehicle = "  vehicle solved" + (p.unconverged_cases > 0
-                                        ? " (" + std::to_string(p.unconverged_cases) +
-                                              " conditions not converged, last iterate used)"
-                                        : std::string());
+  if (p.vehicle_solved) {
+    vehicle = "  vehicle solved";
+    if (p.unconverged_cases > 0)
+      vehicle += " (" + std::to_string(p.unconverged_cases) +
+                 " conditions not converged, last iterate used)";
+    if (p.kept_cases > 0)
+      vehicle +=
+          " (" + std::to_string(p.kept_cases) + " conditions kept their last converged solution)";
+  }
   std::fprintf(stderr, "%s[%s] step %d  %.1f / %.1f km  %.0f states/s  ETA %s%s%s%s",
                tty ? "\r" : "", bar.c_str(), p.step, p.distance / 1e3, p.total_distance / 1e3,
                p.evaluations_per_second, done >= 1.0 ? "0 s" : duration(eta).c_str(),

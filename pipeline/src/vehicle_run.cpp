@@ -115,20 +115,26 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
   const vehicle::WheelsetModel model = wheelset_model(kernel, *wheels.front(), *wheels.back());
   const std::array<vehicle::WheelsetModel, vehicle::kWheelsets> models{model, model, model, model};
   out.curving.resize(out.cases.size());
+  std::vector<int> kept(out.cases.size(), 0);
   tbb::parallel_for(std::size_t{0}, out.cases.size(), [&](std::size_t i) {
     vehicle::CurvingOptions options;
     if (previous) {
       options.start = vehicle::placement_of(previous->curving[i]);
-      // A case that did not converge before is taken on from where it stopped: a fresh solve
-      // costs the most and rarely succeeds where the last one failed.
-      options.restart_on_failure = previous->curving[i].converged;
+      // A fresh solve (continuation from tangent track) costs the most and rarely succeeds
+      // where the warm start fails on the slightly worn profiles.
+      options.restart_on_failure = false;
     }
     out.curving[i] =
         vehicle::solve_vehicle_curving(run.vehicle, models, out.cases[i].curve, options);
+    if (previous && !out.curving[i].converged && previous->curving[i].converged) {
+      out.curving[i] = previous->curving[i];
+      kept[i] = 1;
+    }
   });
   const std::vector<int> worn = run.worn_wheelsets();
   for (std::size_t i = 0; i < out.cases.size(); ++i) {
     if (!out.curving[i].converged) ++out.unconverged;
+    out.kept += kept[i];
     const double weight = out.cases[i].share / static_cast<double>(worn.size());
     for (int k : worn)
       out.states.push_back(wheelset_state(out.cases[i], out.curving[i], k, weight));

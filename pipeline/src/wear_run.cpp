@@ -266,6 +266,9 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
                                 static_cast<double>(carry.last.unconverged), "1",
                                 "running conditions whose quasi-static solve did not converge "
                                 "(their last iterate is used)"));
+      g.arrays.push_back(scalar("vehicle/kept_cases", static_cast<double>(carry.last.kept), "1",
+                                "running conditions whose solve on this solve's profiles did not "
+                                "converge from their last converged solution, which they keep"));
       g.arrays.push_back(scalar("vehicle/depth_since_solve", depth_after, "m",
                                 "deepest wear since the vehicle's last solve, this step's "
                                 "included (an upper bound: the steps' deepest increments summed)"));
@@ -289,6 +292,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       p.states = specs.size();
       p.vehicle_solved = vehicle_solved;
       p.unconverged_cases = scene.vehicle_run ? carry.last.unconverged : 0;
+      p.kept_cases = scene.vehicle_run ? carry.last.kept : 0;
       p.elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
       p.evaluations_per_second = static_cast<double>(summary.evaluations) / p.elapsed;
       p.dropped = cw.dropped;
@@ -395,6 +399,7 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
     carry.last.curving = detail::read_vehicle_cases(file, last, carry.last.cases.size());
     carry.last.unconverged =
         static_cast<int>(file.read_step_array(last, "vehicle/unconverged_cases").at(0));
+    carry.last.kept = static_cast<int>(file.read_step_array(last, "vehicle/kept_cases").at(0));
     carry.depth_since_solve = file.read_step_array(last, "vehicle/depth_since_solve").at(0);
   }
   return loop(scene, evaluator, file, std::move(start), *directory, builtin, options);

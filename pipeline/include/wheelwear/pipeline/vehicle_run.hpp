@@ -45,12 +45,16 @@ struct VehicleCollective {
   /// Per case, per wheelset the run wears (VehicleRun::wheelsets), in that order.
   std::vector<WheelsetStateSpec> states;
   int unconverged = 0;  ///< cases whose solve did not converge (their last iterate is used)
+  /// Cases whose solve on the current profiles did not converge from the last converged one,
+  /// which they keep (its states on the earlier profiles).
+  int kept = 0;
 };
 
 /// Solves `run`'s vehicle in every case of its route on `wheels` (one profile for both wheels
 /// of every wheelset, or left and right), TBB-parallel over the cases. With `previous` (the
-/// same route's solution on earlier profiles) each case starts where it was; a case that did
-/// not converge then is not solved afresh either. Deterministic for any number of threads.
+/// same route's solution on earlier profiles) each case starts where it was, and is not solved
+/// afresh where that fails: a case that converged then keeps that solution (counted in `kept`),
+/// one that did not goes on from its last iterate. Deterministic for any number of threads.
 /// Throws InputError on bad input.
 VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKernel& kernel,
                                            const std::vector<const profiles::Profile*>& wheels,

@@ -22,6 +22,7 @@ struct RunProgress {
   DroppedStates dropped;                ///< states of this step not worn, by reason
   bool vehicle_solved = false;          ///< a vehicle run solved its vehicle on this step
   int unconverged_cases = 0;            ///< of its last solve, cases that did not converge
+  int kept_cases = 0;  ///< of its last solve, cases that kept their last converged solution
 };
 
 /// How a run is driven.
