@@ -17,7 +17,7 @@ namespace {
 // A rise of the gap between two basins of one interpenetration run.
 struct Cut {
   std::size_t at;     // the highest sample between the basins (the left piece keeps it)
-  double separation;  // Basin separation of the cut: 0 (one contact) ... 1 (two contacts)
+  double separation;  // 0: the basins are one contact ... 1: two contacts
 };
 
 double smoothstep(double t) {
