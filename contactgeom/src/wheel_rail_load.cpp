@@ -184,9 +184,10 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
     const RootResult root = find_root_bracketed_until(residual, lo, f_lo, hi, f_hi, load_met,
                                                       kApproachResolution, kMaxLoadEvaluations);
     d = root.x;
-    // A bracket that collapsed without meeting the load: the force jumps across this approach,
-    // where a further contact region joins the patch it neighbours (Kik-Piotrowski's load is
-    // discontinuous where patches merge). root.x is then the side nearer the load.
+    // A bracket that collapsed without meeting the load: the force jumps across this approach.
+    // Regions that join keep their loads (interpenetration_runs); what can still jump is a cut
+    // between two contacts moving by a whole sample of the gap. root.x is then the side nearer
+    // the load.
     at_jump = !root.converged && std::abs(root.hi - root.lo) <= kApproachResolution;
   }
 
