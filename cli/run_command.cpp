@@ -18,6 +18,7 @@
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/pipeline/wear_run.hpp"
+#include "wheelwear/profiles/wheel_parameters.hpp"
 
 namespace wheelwear::cli {
 
@@ -114,6 +115,38 @@ std::map<std::string, double> run_dropped(const pipeline::ResultsFile& file, int
   return totals;
 }
 
+// The first step at which a wheel profile reached an in-service limit, and what it reached
+// ("wheel Sd 21.98 mm <= 22.00 mm"); step -1 when none did (or the file predates limits).
+struct LimitReached {
+  int step = -1;
+  std::string what;
+};
+
+LimitReached first_limit(const pipeline::ResultsFile& file, int last) {
+  LimitReached first;
+  const std::string limits = pipeline::ResultsFile::step_group(0) + "/limits/Sd_min";
+  if (!file.has(limits)) return first;
+  profiles::WheelLimits bounds;
+  bounds.Sd_min = file.read_step_array(0, "limits/Sd_min").at(0);
+  bounds.Sh_max = file.read_step_array(0, "limits/Sh_max").at(0);
+  bounds.qR_min = file.read_step_array(0, "limits/qR_min").at(0);
+  for (int step = 0; step <= last && first.step < 0; ++step) {
+    for (const char* wheel : {"wheel", "wheel_left", "wheel_right"}) {
+      const std::string name = wheel;
+      if (!file.has(pipeline::ResultsFile::step_group(step) + "/" + name + "/Sd")) continue;
+      profiles::WheelParameters p;
+      p.Sd = file.read_step_array(step, name + "/Sd").at(0);
+      p.Sh = file.read_step_array(step, name + "/Sh").at(0);
+      p.qR = file.read_step_array(step, name + "/qR").at(0);
+      for (const std::string& phrase : profiles::limits_reached(p, bounds)) {
+        first.step = step;
+        first.what += (first.what.empty() ? "" : ", ") + name + " " + phrase;
+      }
+    }
+  }
+  return first;
+}
+
 void report(const RunArgs& args, const std::string& output, const pipeline::RunSummary& s) {
   const pipeline::ResultsFile file = pipeline::ResultsFile::read(output);
   const int last = file.completed_steps() - 1;
@@ -124,6 +157,9 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
   };
   const double rate = s.elapsed > 0.0 ? static_cast<double>(s.evaluations) / s.elapsed : 0.0;
   const std::map<std::string, double> dropped = run_dropped(file, last);
+  const LimitReached limit = first_limit(file, last);
+  const bool stopped = file.has(pipeline::ResultsFile::step_group(last) + "/limits/stopped") &&
+                       at(last, "limits/stopped") > 0.0;
   if (args.json) {
     JsonObject o;
     o.add("output", output)
@@ -142,7 +178,10 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
         .add("states_steps_per_second", rate)
         .add("geometry_solves", static_cast<double>(s.geometry_solves))
         .add("patches", static_cast<double>(s.patches))
-        .add("table_patches", static_cast<double>(s.table_patches));
+        .add("table_patches", static_cast<double>(s.table_patches))
+        .add("limit_reached", limit.what)
+        .add("limit_step", limit.step)
+        .add("stopped_at_limit", stopped);
     for (const auto& [name, unused] : pipeline::DroppedStates{}.named())
       o.add(name, dropped.at(name));
     std::cout << o.str() << '\n';
@@ -172,6 +211,11 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
   if (s.table_patches > 0) {
     std::printf("  %zu of %zu patches with totals from the book of tables (best)\n",
                 s.table_patches, s.patches);
+  }
+  if (limit.step >= 0) {
+    std::printf("  in-service limit (EN 15313) reached at step %d, %.1f km: %s%s\n", limit.step,
+                at(limit.step, "distance") / 1e3, limit.what.c_str(),
+                stopped ? "; the run stopped there ([limits] stop)" : "");
   }
   std::printf("plots: scripts/plot_run.py %s\n", output.c_str());
 }

@@ -364,6 +364,21 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                }
                s.separate_wheels = mode == "separate";
              }}})},
+      {"limits",
+       section("limits",
+               {{"Sd_min_m",
+                 [&](const auto& n, const auto& k) {
+                   s.limits.Sd_min = number(n, k, 0.0, 0.05, "the least flange thickness in m");
+                 }},
+                {"Sh_max_m",
+                 [&](const auto& n, const auto& k) {
+                   s.limits.Sh_max = number(n, k, 0.0, 0.1, "the largest flange height in m");
+                 }},
+                {"qR_min_m",
+                 [&](const auto& n, const auto& k) {
+                   s.limits.qR_min = number(n, k, 0.0, 0.05, "the least qR in m");
+                 }},
+                {"stop", [&](const auto& n, const auto& k) { s.limits.stop = boolean(n, k); }}})},
       {"output",
        section("output",
                {{"state_summaries",
@@ -509,6 +524,14 @@ Scene load_scene(const fs::path& path) {
   } catch (const InputError& error) {
     throw InputError(path.string() + ": " + error.what());
   }
+}
+
+profiles::WheelLimits LimitKeys::resolve(double diameter) const {
+  profiles::WheelLimits limits = profiles::in_service_limits(diameter);
+  limits.Sd_min = Sd_min.value_or(limits.Sd_min);
+  limits.Sh_max = Sh_max.value_or(limits.Sh_max);
+  limits.qR_min = qR_min.value_or(limits.qR_min);
+  return limits;
 }
 
 }  // namespace wheelwear::pipeline

@@ -149,6 +149,17 @@ profiles::WearDepth depth_on_y(const profiles::Profile& profile, const wear::Wea
   return depth;
 }
 
+// EN 15313's parameters of a wheel profile; NaN for a profile worn past their reference points.
+profiles::WheelParameters measured_parameters(const profiles::Profile& wheel) {
+  try {
+    return profiles::wheel_parameters(wheel);
+  } catch (const InputError&) {
+    profiles::WheelParameters none;
+    none.Sh = none.Sd = none.qR = kNaN;
+    return none;
+  }
+}
+
 RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, ResultsFile& file,
                 LoopStart start, const fs::path& scene_directory, bool builtin,
                 const RunOptions& options) {
@@ -160,9 +171,14 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   VehicleCarry carry = std::move(start.vehicle);
   // The depth arrives smoothed (smoothed() above): the update adds no smoothing of its own.
   const profiles::WearUpdateOptions update{0.0};
+  std::optional<profiles::WheelLimits> nominal_limits;
   while (true) {
     std::vector<profiles::Profile> wheels;
     for (const WornProfile& w : worn) wheels.push_back(w.build());
+    // The nominal diameter is the new wheel's (a worn profile keeps its nominal radius).
+    if (!nominal_limits)
+      nominal_limits = scene.limits.resolve(2.0 * wheels.front().info().nominal_radius);
+    const profiles::WheelLimits& limits = *nominal_limits;
     std::vector<const profiles::Profile*> pointers;
     for (const auto& w : wheels) pointers.push_back(&w);
     bool vehicle_solved = false;
@@ -182,9 +198,16 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     double peak = 0.0;
     for (const auto& r : smooth_rate)
       for (double d : r.depth) peak = std::max(peak, d);
+    std::vector<profiles::WheelParameters> parameters;
+    bool reached = false;
+    for (const profiles::Profile& wheel : wheels) {
+      parameters.push_back(measured_parameters(wheel));
+      reached = reached || !profiles::limits_reached(parameters.back(), limits).empty();
+    }
+    const bool stop = scene.limits.stop && reached;
     const double remaining = scene.distance - distance;
     double step_distance = 0.0;
-    if (remaining > 1e-9 * scene.distance) {
+    if (remaining > 1e-9 * scene.distance && !stop) {
       step_distance = std::min(scene.step_distance, remaining);
       if (peak > 0.0) step_distance = std::min(step_distance, scene.max_depth_step / peak);
     }
@@ -195,6 +218,11 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
                               "distance of the wear increment taken from here (0: the end)"));
     for (const auto& [name, value] : cw.dropped.named())
       g.arrays.push_back(scalar(name, value, "1", dropped_description(name)));
+    g.arrays.push_back(scalar("limits/Sd_min", limits.Sd_min, "m", "least flange thickness"));
+    g.arrays.push_back(scalar("limits/Sh_max", limits.Sh_max, "m", "largest flange height"));
+    g.arrays.push_back(scalar("limits/qR_min", limits.qR_min, "m", "least qR"));
+    g.arrays.push_back(scalar("limits/stopped", stop ? 1.0 : 0.0, "1",
+                              "1 when the run ends here because a profile reached a limit"));
     g.arrays.push_back(
         scalar("patches", static_cast<double>(cw.patches), "1", "contact patches solved"));
     g.arrays.push_back(scalar("table_patches", static_cast<double>(cw.table_patches), "1",
@@ -217,19 +245,14 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       }
       g.arrays.push_back(vector(n + "/y", y, "m", "profile points, lateral (+ field side)"));
       g.arrays.push_back(vector(n + "/z", z, "m", "profile points, vertical (+ down)"));
-      profiles::WheelParameters params;
-      double sh = kNaN, sd = kNaN, qr = kNaN;
-      try {
-        params = profiles::wheel_parameters(wheels[p]);
-        sh = params.Sh;
-        sd = params.Sd;
-        qr = params.qR;
-      } catch (const InputError&) {
-        // A profile worn past EN 15313's reference points has no parameters: NaN records it.
-      }
-      g.arrays.push_back(scalar(n + "/Sh", sh, "m", "flange height (EN 15313)"));
-      g.arrays.push_back(scalar(n + "/Sd", sd, "m", "flange thickness (EN 15313)"));
-      g.arrays.push_back(scalar(n + "/qR", qr, "m", "flange slope measure qR (EN 15313)"));
+      g.arrays.push_back(scalar(n + "/Sh", parameters[p].Sh, "m", "flange height (EN 15313)"));
+      g.arrays.push_back(scalar(n + "/Sd", parameters[p].Sd, "m", "flange thickness (EN 15313)"));
+      g.arrays.push_back(
+          scalar(n + "/qR", parameters[p].qR, "m", "flange slope measure qR (EN 15313)"));
+      g.arrays.push_back(
+          scalar(n + "/limits_reached",
+                 static_cast<double>(profiles::limits_reached(parameters[p], limits).size()), "1",
+                 "in-service limits (limits/) this profile has reached: Sd, Sh, qR"));
       const wear::WearDistribution& rate = cw.rate[p];
       std::vector<double> s(rate.depth.size()), ys(rate.depth.size());
       for (std::size_t k = 0; k < s.size(); ++k) {

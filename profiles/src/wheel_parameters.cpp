@@ -1,6 +1,7 @@
 #include "wheelwear/profiles/wheel_parameters.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 #include "wheelwear/core/input_error.hpp"
@@ -91,6 +92,39 @@ WheelParameters wheel_parameters(const Profile& wheel, const WheelParameterOptio
   out.Sd = out.sd_point[0] - y_face;
   out.qR = out.sd_point[0] - out.qr_point[0];
   return out;
+}
+
+WheelLimits in_service_limits(double diameter) {
+  if (!std::isfinite(diameter) || diameter < 0.330) {
+    throw InputError("wheel diameter " + std::to_string(diameter) +
+                     " m: EN 15313's in-service limits cover diameters from 0.33 m");
+  }
+  WheelLimits limits;
+  limits.Sh_max = 36e-3;
+  limits.qR_min = 6.5e-3;
+  if (diameter >= 0.840)
+    limits.Sd_min = 22e-3;
+  else if (diameter > 0.760)
+    limits.Sd_min = 25e-3;
+  else
+    limits.Sd_min = 27.5e-3;
+  return limits;
+}
+
+std::vector<std::string> limits_reached(const WheelParameters& parameters,
+                                        const WheelLimits& limits) {
+  std::vector<std::string> reached;
+  auto phrase = [&](const char* name, double value, const char* relation, double limit) {
+    char text[96];
+    std::snprintf(text, sizeof text, "%s %.3f mm %s %.3f mm", name, value * 1e3, relation,
+                  limit * 1e3);
+    reached.emplace_back(text);
+  };
+  // Comparisons with NaN are false: a parameter that could not be measured reaches nothing.
+  if (parameters.Sd <= limits.Sd_min) phrase("Sd", parameters.Sd, "<=", limits.Sd_min);
+  if (parameters.Sh >= limits.Sh_max) phrase("Sh", parameters.Sh, ">=", limits.Sh_max);
+  if (parameters.qR <= limits.qR_min) phrase("qR", parameters.qR, "<=", limits.qR_min);
+  return reached;
 }
 
 }  // namespace wheelwear::profiles

@@ -86,5 +86,39 @@ TEST(WheelParameters, RejectRailsAndFlangelessProfiles) {
   EXPECT_THROW(wheel_parameters(s1002(), {.taping_line_offset = -1.0}), InputError);
 }
 
+// EN 15313's in-service limits by nominal diameter (the TSI LOC&PAS, Regulation (EU)
+// No 1302/2014, 4.2.3.5.2.2, gives the same figures): the Sd bound steps at 760 and 840 mm.
+TEST(WheelLimits, FollowTheStandardsDiameterBands) {
+  struct Band {
+    double diameter, Sd_min;
+  };
+  for (const Band& band : {Band{0.920, 22e-3}, Band{0.840, 22e-3}, Band{0.839, 25e-3},
+                           Band{0.761, 25e-3}, Band{0.760, 27.5e-3}, Band{0.330, 27.5e-3}}) {
+    const WheelLimits limits = in_service_limits(band.diameter);
+    EXPECT_EQ(limits.Sd_min, band.Sd_min) << band.diameter;
+    EXPECT_EQ(limits.Sh_max, 36e-3) << band.diameter;
+    EXPECT_EQ(limits.qR_min, 6.5e-3) << band.diameter;
+  }
+  EXPECT_THROW(in_service_limits(0.329), InputError);
+  EXPECT_THROW(in_service_limits(std::nan("")), InputError);
+}
+
+TEST(WheelLimits, NameWhatIsReachedAndIgnoreUnmeasuredParameters) {
+  const WheelLimits limits = in_service_limits(0.92);
+  // The new S1002 (Sh 28, Sd 32.5, qR 10.8 mm) is far inside every limit.
+  EXPECT_TRUE(limits_reached(wheel_parameters(s1002()), limits).empty());
+  WheelParameters worn;
+  worn.Sd = 21.9e-3;
+  worn.Sh = 36e-3;  // on the limit counts as reached
+  worn.qR = 7e-3;
+  const std::vector<std::string> reached = limits_reached(worn, limits);
+  ASSERT_EQ(reached.size(), 2u);
+  EXPECT_EQ(reached[0], "Sd 21.900 mm <= 22.000 mm");
+  EXPECT_EQ(reached[1], "Sh 36.000 mm >= 36.000 mm");
+  WheelParameters unmeasured;
+  unmeasured.Sd = unmeasured.Sh = unmeasured.qR = std::nan("");
+  EXPECT_TRUE(limits_reached(unmeasured, limits).empty());
+}
+
 }  // namespace
 }  // namespace wheelwear::profiles

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "wheelwear/profiles/profile_source.hpp"
+#include "wheelwear/profiles/wheel_parameters.hpp"
 #include "wheelwear/tangential/contact_model.hpp"
 #include "wheelwear/tangential/creep_types.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
@@ -89,6 +90,18 @@ struct VehicleRun {
   std::vector<int> worn_wheelsets() const;
 };
 
+/// The in-service limits the run watches ([limits]); unset values are EN 15313's for the wheel's
+/// nominal diameter (profiles::in_service_limits).
+struct LimitKeys {
+  std::optional<double> Sd_min;  ///< [m]
+  std::optional<double> Sh_max;  ///< [m]
+  std::optional<double> qR_min;  ///< [m]
+  bool stop = false;             ///< end the run at the first step that reaches a limit
+
+  /// The limits for a wheel of nominal diameter `diameter` [m].
+  profiles::WheelLimits resolve(double diameter) const;
+};
+
 /// Everything a run needs. Defaults are those of the built-in scene.
 struct Scene {
   std::string title;
@@ -123,6 +136,7 @@ struct Scene {
   double max_depth_step = 0.1e-3;     ///< deepest wear increment of one step [m]
   double smoothing_length = 2e-3;     ///< smoothing of a step's depth along the profile [m]
   bool separate_wheels = false;       ///< evolve left and right profiles separately
+  LimitKeys limits;                   ///< in-service limits, and whether reaching one stops
   bool state_summaries = true;        ///< write per-state summaries
   bool tgamma_maps = false;           ///< write per-cell T gamma maps of every contact
   /// The hand-written collective; empty when the vehicle makes it (vehicle_run).
