@@ -27,6 +27,9 @@ void add_profile_command(CLI::App& app);
 /// `wheelwear curving`: quasi-static curving of a vehicle in a constant curve.
 void add_curving_command(CLI::App& app);
 
+/// `wheelwear route`: the vehicle on its route without wear, and the collective it makes.
+void add_route_command(CLI::App& app);
+
 /// `wheelwear run`: the wear-evolution run of a scene, written to an HDF5 results file.
 void add_run_command(CLI::App& app);
 

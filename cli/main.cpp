@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   wheelwear::cli::add_profile_command(app);
   wheelwear::cli::add_run_command(app);
   wheelwear::cli::add_curving_command(app);
+  wheelwear::cli::add_route_command(app);
   // CLI11 answers `wheelwear nosuch --help` with the main help and success; a misspelt
   // command must fail instead, so scripts notice.
   if (argc > 1 && argv[1][0] != '-') {

@@ -1,5 +1,7 @@
 #include "vehicle_record.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -299,3 +301,30 @@ std::vector<vehicle::VehicleCurving> read_vehicle_cases(const ResultsFile& file,
 }
 
 }  // namespace wheelwear::pipeline::detail
+
+namespace wheelwear::pipeline {
+
+std::string collective_csv(const std::vector<WheelsetStateSpec>& states) {
+  using detail::collective_columns;
+  std::string out = "label";
+  for (const auto& column : collective_columns()) out += std::string(",") + column.name;
+  out += '\n';
+  char cell[40];
+  for (const WheelsetStateSpec& state : states) {
+    std::string label = state.label;
+    for (char& c : label)
+      if (c == ',' || c == '\n' || c == '\r') c = ';';  // a cell may hold neither
+    out += label;
+    for (const auto& column : collective_columns()) {
+      const double value = column.get(state);
+      out += ',';
+      if (std::isnan(value)) continue;  // an optional value left unset
+      std::snprintf(cell, sizeof cell, "%.17g", value);
+      out += cell;
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+}  // namespace wheelwear::pipeline

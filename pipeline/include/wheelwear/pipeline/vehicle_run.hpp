@@ -66,4 +66,10 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
 WheelsetStateSpec wheelset_state(const RouteCase& route_case,
                                  const vehicle::VehicleCurving& curving, int k, double weight);
 
+/// `states` as a load-collective CSV file (docs/scenes.md, "Load collective formats"): a label
+/// column and every column a run records under collective/, 17 significant digits so that the
+/// file reads back to the same numbers, unset optional values left empty. Commas and line
+/// breaks in labels become ';'.
+std::string collective_csv(const std::vector<WheelsetStateSpec>& states);
+
 }  // namespace wheelwear::pipeline

@@ -1,0 +1,140 @@
+// `wheelwear route`: the vehicle on its route without wear, and the load collective it writes,
+// which reads back as the very states the run would wear with.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/run_command.hpp"
+#include "wheelwear/pipeline/scene.hpp"
+#include "wheelwear/pipeline/state_kernel.hpp"
+#include "wheelwear/pipeline/vehicle_run.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
+#include "wheelwear/vehicle/route.hpp"
+#include "wheelwear/vehicle/vehicle_file.hpp"
+
+namespace wheelwear::pipeline {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A lubricated R 3000 m (its solve converges on S1002/60E1), eased out to tangent track.
+constexpr const char* kRoute = R"(
+[route]
+name = "short"
+speed_m_s = 40
+[[section]]
+kind = "curve"
+length_m = 1000
+radius_m = 3000
+cant_m = 0.03
+friction_flange = 0.1
+[[section]]
+kind = "transition"
+length_m = 60
+radius_m = 0
+cant_m = 0
+[[section]]
+kind = "tangent"
+length_m = 940
+)";
+
+class RouteCommandTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("wheelwear_route_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "route.toml") << kRoute;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+std::string text_of(const fs::path& file) {
+  std::stringstream s;
+  s << std::ifstream(file).rdbuf();
+  return s.str();
+}
+
+// Whether two numbers are the same double, NaN (an unset value) equal to NaN.
+bool same(double a, double b) {
+  return a == b || (std::isnan(a) && std::isnan(b));
+}
+
+TEST_F(RouteCommandTest, WritesTheCollectiveTheRunWouldWearWith) {
+  const fs::path csv = dir_ / "states.csv";
+  const std::string base =
+      "route --route " + (dir_ / "route.toml").string() + " -o " + csv.string();
+  const testing::CommandResult r = testing::run_wheelwear(base + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(testing::json_number(r.out, "states"), 12.0);
+  EXPECT_EQ(testing::json_number(r.out, "unconverged"), 0.0);
+
+  // The same solve in this process: the built-in scene's profiles, vehicle and contact chain.
+  const Scene scene = default_scene();
+  VehicleRun run;
+  run.vehicle = vehicle::default_vehicle();
+  run.route = vehicle::read_route(dir_ / "route.toml");
+  const StateKernel kernel(scene);
+  const profiles::Profile wheel =
+      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
+  const VehicleCollective v = solve_vehicle_collective(run, kernel, {&wheel});
+
+  // The file, read as a scene's collective, holds those states to the last bit.
+  const Scene from_file =
+      parse_scene("[load_collective]\nfile = \"" + csv.filename().string() + "\"\n", dir_);
+  ASSERT_EQ(from_file.states.size(), v.states.size());
+  int compared = 0;
+  for (std::size_t i = 0; i < v.states.size(); ++i) {
+    const WheelsetStateSpec &a = v.states[i], &b = from_file.states[i];
+    std::string label = a.label;  // the file's cells hold no commas (collective_csv)
+    std::replace(label.begin(), label.end(), ',', ';');
+    EXPECT_EQ(b.label, label) << i;
+    for (const auto& [x, y] : {std::pair{a.dy, b.dy},
+                               {a.yaw, b.yaw},
+                               {a.load_left, b.load_left},
+                               {a.load_right, b.load_right},
+                               {a.speed, b.speed},
+                               {a.curve_radius, b.curve_radius},
+                               {a.lateral_velocity, b.lateral_velocity},
+                               {a.yaw_rate, b.yaw_rate},
+                               {a.angular_velocity.value_or(NAN), b.angular_velocity.value_or(NAN)},
+                               {a.roll.value_or(NAN), b.roll.value_or(NAN)},
+                               {a.friction.value_or(NAN), b.friction.value_or(NAN)},
+                               {a.friction_flange.value_or(NAN), b.friction_flange.value_or(NAN)},
+                               {a.weight, b.weight}}) {
+      EXPECT_TRUE(same(x, y)) << "state " << i << ": " << x << " against " << y;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 12 * 13);
+  // The lubricated curve's gauge-face friction reaches the file.
+  EXPECT_EQ(from_file.states[0].friction_flange.value_or(0.0), 0.1);
+
+  // An existing file is kept unless --overwrite says otherwise.
+  const std::string before = text_of(csv);
+  const testing::CommandResult again = testing::run_wheelwear(base);
+  EXPECT_NE(again.exit_code, 0);
+  EXPECT_NE(again.err.find("--overwrite"), std::string::npos) << again.err;
+  EXPECT_EQ(text_of(csv), before);
+}
+
+TEST(CollectiveCsv, KeepsLabelsReadableAsOneCell) {
+  WheelsetStateSpec s;
+  s.label = "curve, R 500\nleft";
+  s.dy = 1.0 / 3.0;
+  s.load_left = s.load_right = 55e3;
+  s.speed = 20.0;
+  const std::string csv = collective_csv({s});
+  EXPECT_NE(csv.find("curve; R 500;left,0.33333333333333331,"), std::string::npos) << csv;
+  // Header and one row: the label's line break did not start a new row.
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2);
+}
+
+}  // namespace
+}  // namespace wheelwear::pipeline
