@@ -206,6 +206,12 @@ void validate_state(const WheelsetOnTrack& track, const WheelsetState& s) {
   require_finite("vertical_force_right", s.vertical_force_right);
   require(s.vertical_force_right > 0.0, "vertical_force_right", s.vertical_force_right,
           "the vertical wheel load must be positive (newtons)");
+  if (s.known_roll) {
+    require_finite("known_roll.roll", s.known_roll->roll);
+    require(std::abs(s.known_roll->roll) <= kMaxRoll, "known_roll.roll", s.known_roll->roll,
+            "a wheelset's roll lies within 0.09 rad");
+    require_finite("known_roll.centre_height", s.known_roll->centre_height);
+  }
   if (s.lateral_force_left) require_finite("lateral_force_left", *s.lateral_force_left);
   if (s.lateral_force_right) require_finite("lateral_force_right", *s.lateral_force_right);
   track.left.validate();
@@ -316,9 +322,16 @@ WheelsetContact solve_wheelset(const WheelsetOnTrack& track, const WheelsetState
     return root.x;
   };
 
-  double roll = solve_roll(0.0);
-  WheelRailLateral lateral_left, lateral_right;
   const bool prescribed = state.lateral_force_left || state.lateral_force_right;
+  double roll = 0.0;
+  if (state.known_roll && !prescribed) {
+    roll = state.known_roll->roll;
+    centre = state.known_roll->centre_height;
+    out.roll_converged = state.known_roll->converged;
+  } else {
+    roll = solve_roll(0.0);
+  }
+  WheelRailLateral lateral_left, lateral_right;
   bool alternation_converged = !prescribed;
   double previous_roll = 0.0, previous_r = 0.0;
   for (int round = 0; touch && prescribed && round < 12; ++round) {
@@ -368,6 +381,7 @@ WheelsetContact solve_wheelset(const WheelsetOnTrack& track, const WheelsetState
     return out;
   }
   out.centre_height = centre;
+  if (!prescribed) out.known_roll = KnownRoll{roll, centre, out.roll_converged};
   // Each wheel: the contact its lateral-force solve found, or the one at its rigid position.
   auto finish = [&](bool given, WheelRailLateral& lateral, const WheelRailPair& pair,
                     double vertical_force, double gauge_y, const char* side, WheelsetPose& pose,

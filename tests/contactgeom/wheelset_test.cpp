@@ -270,5 +270,48 @@ TEST(Wheelset, PrescribedLateralForceMovesOnlyThatWheel) {
   EXPECT_NEAR(w.roll, roll_from_contact_points(pair, w), 5e-8);
 }
 
+// The roll depends on dy and yaw only: a solve for other loads that takes the roll found by an
+// earlier one skips the roll iteration and gives the contacts a full solve gives, bit for bit.
+TEST(Wheelset, KnownRollGivesTheFullSolvesContacts) {
+  int compared = 0;
+  for (double dy : {0.0, 4.8e-3, 6.5e-3}) {  // tread, two-point and flange contact
+    WheelsetState first = loaded(dy);
+    first.yaw = 1.5e-3;
+    const WheelsetContact earlier = solve_wheelset(track(), first);
+    ASSERT_TRUE(earlier.known_roll.has_value()) << dy;
+    WheelsetState other = first;
+    other.vertical_force_left = 62e3;
+    other.vertical_force_right = 47e3;
+    const WheelsetContact full = solve_wheelset(track(), other);
+    other.known_roll = earlier.known_roll;
+    const WheelsetContact reused = solve_wheelset(track(), other);
+    EXPECT_EQ(reused.touch_evaluations, 0) << dy;
+    EXPECT_GT(full.touch_evaluations, 0) << dy;
+    EXPECT_EQ(reused.roll, full.roll) << dy;
+    EXPECT_EQ(reused.centre_height, full.centre_height) << dy;
+    EXPECT_EQ(reused.roll_converged, full.roll_converged) << dy;
+    for (const auto& [a, b] : {std::pair{&reused.left, &full.left}, {&reused.right, &full.right}}) {
+      ASSERT_EQ(a->patches.size(), b->patches.size()) << dy;
+      EXPECT_EQ(a->vertical_force, b->vertical_force) << dy;
+      EXPECT_EQ(a->lateral_force, b->lateral_force) << dy;
+      for (std::size_t k = 0; k < a->patches.size(); ++k) {
+        EXPECT_EQ(a->patches[k].normal_force, b->patches[k].normal_force) << dy;
+        EXPECT_EQ(a->patches[k].y_rail, b->patches[k].y_rail) << dy;
+        compared += 2;
+      }
+      compared += 2;
+    }
+  }
+  EXPECT_GE(compared, 20);
+  // A prescribed lateral force moves the wheels and so the roll: none is offered for reuse.
+  WheelsetState pushed = loaded(6.5e-3);
+  pushed.lateral_force_left = 20e3;
+  EXPECT_FALSE(solve_wheelset(track(), pushed).known_roll.has_value());
+  // A roll that is not a number is refused.
+  WheelsetState bad = loaded(0.0);
+  bad.known_roll = KnownRoll{std::nan(""), 0.0, true};
+  EXPECT_THROW(solve_wheelset(track(), bad), InputError);
+}
+
 }  // namespace
 }  // namespace wheelwear::contactgeom

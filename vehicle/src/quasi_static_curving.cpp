@@ -142,9 +142,11 @@ class CurvingProblem {
       : v_(vehicle), models_(models), curve_(curve), options_(options), evaluations_(evaluations) {}
 
   // The rails' forces on wheelset k at `state` with the given loads.
-  WheelsetForces contact(int k, const WheelsetMotionState& state, double left, double right) const {
+  // `roll`: the roll at the same dy and yaw, when known.
+  WheelsetForces contact(int k, const WheelsetMotionState& state, double left, double right,
+                         std::optional<contactgeom::KnownRoll> roll = std::nullopt) const {
     ++evaluations_;
-    return wheelset_forces(models_[k], state, left, right, curve_.running);
+    return wheelset_forces(models_[k], state, left, right, curve_.running, roll);
   }
 
   Evaluation evaluate(const Vector& u) const {
@@ -192,21 +194,24 @@ class CurvingProblem {
         return Eigen::Vector3d(f.lateral, f.yaw_moment, f.axle_torque);
       };
       const Eigen::Vector3d f0 = forces_vector(ws.forces);
+      const std::optional<contactgeom::KnownRoll> known = ws.forces.contact.known_roll;
       const Eigen::Vector3d steps(1e-7, 1e-8, 1e-7 * ws.state.spin);
       for (int c = 0; c < 3; ++c) {
         WheelsetMotionState t = ws.state;
         if (c == 0) t.dy += steps[0];
         if (c == 1) t.yaw += steps[1];
         if (c == 2) t.spin += steps[2];
+        // The spin leaves the wheelset where it is: its roll is the evaluation's.
+        const auto roll = c == 2 ? known : std::nullopt;
         J.block<3, 1>(w, w + c) +=
-            (forces_vector(contact(k, t, ws.load_left, ws.load_right)) - f0) / steps[c];
+            (forces_vector(contact(k, t, ws.load_left, ws.load_right, roll)) - f0) / steps[c];
       }
       // d(forces)/d(load) per wheel, and d(load)/d(shift) of the car body, bogie and wheelset.
       const double dQ = 1e-6 * std::max(ws.load_left, ws.load_right);
       const Eigen::Vector3d by_left =
-          (forces_vector(contact(k, ws.state, ws.load_left + dQ, ws.load_right)) - f0) / dQ;
+          (forces_vector(contact(k, ws.state, ws.load_left + dQ, ws.load_right, known)) - f0) / dQ;
       const Eigen::Vector3d by_right =
-          (forces_vector(contact(k, ws.state, ws.load_left, ws.load_right + dQ)) - f0) / dQ;
+          (forces_vector(contact(k, ws.state, ws.load_left, ws.load_right + dQ, known)) - f0) / dQ;
       // The unknowns of the car body's, the bogie's and the wheelset's shift, in wheel_loads'
       // order of arguments.
       const std::array<int, 3> shifts{0, bogie_index(k / 2), w};

@@ -87,7 +87,8 @@ contactgeom::WheelsetMotion wheel_motion(const WheelsetMotionState& state,
 
 WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionState& state,
                                double load_left, double load_right,
-                               const RunningConditions& running) {
+                               const RunningConditions& running,
+                               std::optional<contactgeom::KnownRoll> known_roll) {
   validate(running);
   require(std::isfinite(state.spin) && state.spin > 0.0, "spin", state.spin,
           "the axle's angular velocity must be positive (rad/s)");
@@ -107,7 +108,10 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
     geometry.yaw = state.yaw;
     geometry.vertical_force_left = solved_for[0];
     geometry.vertical_force_right = solved_for[1];
+    geometry.known_roll = known_roll;
     out.contact = contactgeom::solve_wheelset(model.track, geometry, model.contact);
+    // The roll depends on dy and yaw alone: the next load iterations take it as found.
+    known_roll = out.contact.known_roll;
     ++out.load_iterations;
     bool met = true;
     for (int side = 0; side < 2; ++side) {

@@ -19,6 +19,15 @@ struct WheelsetOnTrack {
   WheelRailPair right;
 };
 
+/// The roll of a rigid wheelset as solve_wheelset found it at some dy and yaw. It does not depend
+/// on the loads (both wheels touch with undeformed surfaces), so a solve for other loads at the
+/// same dy and yaw can take it instead of iterating again, with identical results.
+struct KnownRoll {
+  double roll = 0.0;           ///< [rad]
+  double centre_height = 0.0;  ///< WheelsetContact::centre_height [m]
+  bool converged = false;      ///< WheelsetContact::roll_converged
+};
+
 /// The state of the wheelset for one evaluation.
 struct WheelsetState {
   /// Lateral shift of the wheelset's centre (on the axle, midway between the flange backs) from
@@ -31,6 +40,10 @@ struct WheelsetState {
   /// pushes the wheel towards the track centre); nullopt: the position is prescribed.
   std::optional<double> lateral_force_left;
   std::optional<double> lateral_force_right;  ///< [N], as lateral_force_left for the right wheel
+  /// The roll found at this dy and yaw by an earlier solve (WheelsetContact::known_roll); the
+  /// roll iteration is then skipped. Ignored when a lateral force is prescribed (the wheels'
+  /// adjusted positions move the roll).
+  std::optional<KnownRoll> known_roll;
 };
 
 /// How a wheel's prescribed lateral force was met.
@@ -75,6 +88,9 @@ struct WheelsetContact {
   int touch_evaluations = 0;    ///< first-touch evaluations of both wheels (roll iteration)
   int contact_solves = 0;       ///< wheel/rail contact solves, lateral searches included
   std::string message;          ///< why, when something did not converge or match
+  /// The roll for a later solve at the same dy and yaw (WheelsetState::known_roll); empty when
+  /// a wheel did not reach its rail or a lateral force was prescribed.
+  std::optional<KnownRoll> known_roll;
 };
 
 /// Solves both wheels' contacts of a rigid wheelset.

@@ -113,9 +113,13 @@ struct WheelsetForces {
 /// `load_right` [N] (its Q, creep forces included: the vertical force the contact solves for is
 /// corrected by the creep forces' vertical part until Q meets the load to 1e-9). Throws
 /// InputError on bad input; a wheel whose contact fails keeps its status and no forces.
+/// `known_roll`: the roll an earlier evaluation at the same dy and yaw found
+/// (WheelsetForces::contact.known_roll), which spares the roll iteration without changing the
+/// result; the load iterations share one roll solve the same way.
 WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionState& state,
                                double load_left, double load_right,
-                               const RunningConditions& running);
+                               const RunningConditions& running,
+                               std::optional<contactgeom::KnownRoll> known_roll = std::nullopt);
 
 /// The motion of wheel `side` (0 left, 1 right) in its own frame for kinematic_creepages.
 contactgeom::WheelsetMotion wheel_motion(const WheelsetMotionState& state,
