@@ -527,7 +527,10 @@ Scene load_scene(const fs::path& path) {
 }
 
 profiles::WheelLimits LimitKeys::resolve(double diameter) const {
-  profiles::WheelLimits limits = profiles::in_service_limits(diameter);
+  // Below the standard's smallest wheel the unset limits are not watched: NaN reaches nothing.
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  profiles::WheelLimits limits{kNaN, kNaN, kNaN};
+  if (diameter >= profiles::kSmallestStandardWheel) limits = profiles::in_service_limits(diameter);
   limits.Sd_min = Sd_min.value_or(limits.Sd_min);
   limits.Sh_max = Sh_max.value_or(limits.Sh_max);
   limits.qR_min = qR_min.value_or(limits.qR_min);

@@ -95,7 +95,7 @@ WheelParameters wheel_parameters(const Profile& wheel, const WheelParameterOptio
 }
 
 WheelLimits in_service_limits(double diameter) {
-  if (!std::isfinite(diameter) || diameter < 0.330) {
+  if (!std::isfinite(diameter) || diameter < kSmallestStandardWheel) {
     throw InputError("wheel diameter " + std::to_string(diameter) +
                      " m: EN 15313's in-service limits cover diameters from 0.33 m");
   }

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -84,6 +85,11 @@ TEST(SceneLimits, RefuseValuesOutOfRangeNamingTheKey) {
   const profiles::WheelLimits resolved = scene.limits.resolve(0.80);
   EXPECT_EQ(resolved.qR_min, 7e-3);
   EXPECT_EQ(resolved.Sd_min, 25e-3);  // unset: EN 15313's for a 0.80 m wheel
+  // A wheel smaller than the standard covers watches only what the scene sets.
+  const profiles::WheelLimits small = scene.limits.resolve(0.30);
+  EXPECT_EQ(small.qR_min, 7e-3);
+  EXPECT_TRUE(std::isnan(small.Sd_min));
+  EXPECT_TRUE(std::isnan(small.Sh_max));
 }
 
 }  // namespace

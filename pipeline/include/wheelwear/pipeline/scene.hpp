@@ -98,7 +98,8 @@ struct LimitKeys {
   std::optional<double> qR_min;  ///< [m]
   bool stop = false;             ///< end the run at the first step that reaches a limit
 
-  /// The limits for a wheel of nominal diameter `diameter` [m].
+  /// The limits for a wheel of nominal diameter `diameter` [m]; below the standard's 0.33 m the
+  /// unset ones are NaN, which no profile reaches.
   profiles::WheelLimits resolve(double diameter) const;
 };
 

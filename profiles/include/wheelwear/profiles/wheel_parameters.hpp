@@ -55,6 +55,9 @@ struct WheelLimits {
   double qR_min = 0.0;  ///< least qR
 };
 
+/// The smallest wheel diameter EN 15313's in-service limits cover [m].
+inline constexpr double kSmallestStandardWheel = 0.330;
+
 /// EN 15313's in-service limits for a wheel of nominal diameter `diameter` [m] (the same figures
 /// are the TSI LOC&PAS limits, Commission Regulation (EU) No 1302/2014, 4.2.3.5.2.2): Sd at least
 /// 22 mm for D >= 840 mm, 25 mm for 760 < D < 840 mm and 27.5 mm for 330 <= D <= 760 mm; Sh at
