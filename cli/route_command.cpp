@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <numbers>
 
 #include "commands.hpp"
 #include "json_writer.hpp"
@@ -80,7 +81,7 @@ void print_text(const pipeline::VehicleCollective& v, double seconds) {
                 rc.label.c_str(), rc.curve.running.curve_radius, rc.curve.cant * 1e3,
                 rc.curve.running.speed, rc.share * 100.0, c.converged ? "yes" : "NO",
                 c.wheelsets[0].state.dy * 1e3, c.wheelsets[0].state.yaw * 1e3, e.y_over_q,
-                e.contact_angle * 180.0 / M_PI);
+                e.contact_angle * 180.0 / std::numbers::pi);
   }
   std::printf("%zu conditions in %.1f s; %d did not converge (their last iterate is shown)\n",
               v.cases.size(), seconds, v.unconverged);

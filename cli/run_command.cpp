@@ -116,7 +116,7 @@ std::map<std::string, double> run_dropped(const pipeline::ResultsFile& file, int
 }
 
 // The first step at which a wheel profile reached an in-service limit, and what it reached
-// ("wheel Sd 21.98 mm <= 22.00 mm"); step -1 when none did (or the file predates limits).
+// ("wheel Sd 21.980 mm <= 22.000 mm"); step -1 when none did (or the file predates limits).
 struct LimitReached {
   int step = -1;
   std::string what;

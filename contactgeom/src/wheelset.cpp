@@ -324,7 +324,9 @@ WheelsetContact solve_wheelset(const WheelsetOnTrack& track, const WheelsetState
 
   const bool prescribed = state.lateral_force_left || state.lateral_force_right;
   double roll = 0.0;
-  if (state.known_roll && !prescribed) {
+  const bool reuse = state.known_roll && !prescribed && state.known_roll->dy == state.dy &&
+                     state.known_roll->yaw == state.yaw;
+  if (reuse) {
     roll = state.known_roll->roll;
     centre = state.known_roll->centre_height;
     out.roll_converged = state.known_roll->converged;
@@ -381,7 +383,8 @@ WheelsetContact solve_wheelset(const WheelsetOnTrack& track, const WheelsetState
     return out;
   }
   out.centre_height = centre;
-  if (!prescribed) out.known_roll = KnownRoll{roll, centre, out.roll_converged};
+  if (!prescribed)
+    out.known_roll = KnownRoll{state.dy, state.yaw, roll, centre, out.roll_converged};
   // Each wheel: the contact its lateral-force solve found, or the one at its rigid position.
   auto finish = [&](bool given, WheelRailLateral& lateral, const WheelRailPair& pair,
                     double vertical_force, double gauge_y, const char* side, WheelsetPose& pose,

@@ -204,8 +204,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       parameters.push_back(measured_parameters(wheel));
       reached = reached || !profiles::limits_reached(parameters.back(), limits).empty();
     }
-    const bool stop = scene.limits.stop && reached;
     const double remaining = scene.distance - distance;
+    const bool stop = scene.limits.stop && reached && remaining > 1e-9 * scene.distance;
     double step_distance = 0.0;
     if (remaining > 1e-9 * scene.distance && !stop) {
       step_distance = std::min(scene.step_distance, remaining);
@@ -383,8 +383,13 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   if (last < 0) throw InputError("results file " + output.string() + ": no step to resume from");
   const double step_distance = file.read_step_array(last, "step_distance").at(0);
   if (step_distance == 0.0) {
+    const bool at_limit = file.has(ResultsFile::step_group(last) + "/limits/stopped") &&
+                          file.read_step_array(last, "limits/stopped").at(0) != 0.0;
     throw InputError("results file " + output.string() +
-                     ": the run is complete; nothing to resume (start a new run with -o)");
+                     (at_limit ? ": the run stopped at an in-service limit ([limits] stop); "
+                                 "nothing to resume (raise the limit and start a new run with -o)"
+                               : ": the run is complete; nothing to resume (start a new run "
+                                 "with -o)"));
   }
   if (scene.tangential == TangentialMethod::best &&
       file.root_attribute("creep_table_sha256") != tangential::creep_table_sha256()) {

@@ -116,14 +116,22 @@ std::vector<std::string> limits_reached(const WheelParameters& parameters,
   std::vector<std::string> reached;
   auto phrase = [&](const char* name, double value, const char* relation, double limit) {
     char text[96];
-    std::snprintf(text, sizeof text, "%s %.3f mm %s %.3f mm", name, value * 1e3, relation,
-                  limit * 1e3);
+    if (std::isnan(value))
+      std::snprintf(text, sizeof text, "%s not measurable (worn past its reference points)", name);
+    else
+      std::snprintf(text, sizeof text, "%s %.3f mm %s %.3f mm", name, value * 1e3, relation,
+                    limit * 1e3);
     reached.emplace_back(text);
   };
-  // Comparisons with NaN are false: a parameter that could not be measured reaches nothing.
-  if (parameters.Sd <= limits.Sd_min) phrase("Sd", parameters.Sd, "<=", limits.Sd_min);
-  if (parameters.Sh >= limits.Sh_max) phrase("Sh", parameters.Sh, ">=", limits.Sh_max);
-  if (parameters.qR <= limits.qR_min) phrase("qR", parameters.qR, "<=", limits.qR_min);
+  // A limit that is NaN is not watched; a parameter that is NaN could not be measured on a
+  // profile worn past its reference points, which is past any limit.
+  auto past = [](double value, double limit, bool below) {
+    if (std::isnan(limit)) return false;
+    return std::isnan(value) || (below ? value <= limit : value >= limit);
+  };
+  if (past(parameters.Sd, limits.Sd_min, true)) phrase("Sd", parameters.Sd, "<=", limits.Sd_min);
+  if (past(parameters.Sh, limits.Sh_max, false)) phrase("Sh", parameters.Sh, ">=", limits.Sh_max);
+  if (past(parameters.qR, limits.qR_min, true)) phrase("qR", parameters.qR, "<=", limits.qR_min);
   return reached;
 }
 

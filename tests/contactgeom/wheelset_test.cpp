@@ -303,13 +303,27 @@ TEST(Wheelset, KnownRollGivesTheFullSolvesContacts) {
     }
   }
   EXPECT_GE(compared, 20);
-  // A prescribed lateral force moves the wheels and so the roll: none is offered for reuse.
+  // A roll found at another shift or yaw is not taken: the roll is solved.
+  WheelsetState moved = loaded(5e-3);
+  moved.yaw = 1.5e-3;
+  const WheelsetContact at_5mm = solve_wheelset(track(), moved);
+  moved.known_roll = solve_wheelset(track(), loaded(4.8e-3)).known_roll;
+  const WheelsetContact not_reused = solve_wheelset(track(), moved);
+  EXPECT_GT(not_reused.touch_evaluations, 0);
+  EXPECT_EQ(not_reused.roll, at_5mm.roll);
+  // A prescribed lateral force moves the wheels and so the roll: a known roll is not taken,
+  // and none is offered for reuse.
   WheelsetState pushed = loaded(6.5e-3);
   pushed.lateral_force_left = 20e3;
-  EXPECT_FALSE(solve_wheelset(track(), pushed).known_roll.has_value());
+  const WheelsetContact pushed_alone = solve_wheelset(track(), pushed);
+  EXPECT_FALSE(pushed_alone.known_roll.has_value());
+  pushed.known_roll = solve_wheelset(track(), loaded(6.5e-3)).known_roll;
+  const WheelsetContact pushed_offered = solve_wheelset(track(), pushed);
+  EXPECT_EQ(pushed_offered.roll, pushed_alone.roll);
+  EXPECT_EQ(pushed_offered.left_shift, pushed_alone.left_shift);
   // A roll that is not a number is refused.
   WheelsetState bad = loaded(0.0);
-  bad.known_roll = KnownRoll{std::nan(""), 0.0, true};
+  bad.known_roll = KnownRoll{0.0, 0.0, std::nan(""), 0.0, true};
   EXPECT_THROW(solve_wheelset(track(), bad), InputError);
 }
 

@@ -124,16 +124,27 @@ TEST_F(RouteCommandTest, WritesTheCollectiveTheRunWouldWearWith) {
   EXPECT_EQ(text_of(csv), before);
 }
 
-TEST(CollectiveCsv, KeepsLabelsReadableAsOneCell) {
-  WheelsetStateSpec s;
-  s.label = "curve, R 500\nleft";
-  s.dy = 1.0 / 3.0;
-  s.load_left = s.load_right = 55e3;
-  s.speed = 20.0;
-  const std::string csv = collective_csv({s});
-  EXPECT_NE(csv.find("curve; R 500;left,0.33333333333333331,"), std::string::npos) << csv;
-  // Header and one row: the label's line break did not start a new row.
-  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2);
+TEST_F(RouteCommandTest, CollectiveCsvKeepsEveryLabelOneCellThatReadsBack) {
+  std::vector<WheelsetStateSpec> states(3);
+  const char* labels[] = {"curve, R 500\nleft", "#2 S-curve, wheelset 1", "  padded  "};
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    states[i].label = labels[i];
+    states[i].dy = 1e-3 / 3.0;
+    states[i].load_left = states[i].load_right = 55e3;
+    states[i].speed = 20.0;
+    states[i].weight = 1.0 + static_cast<double>(i);
+  }
+  std::ofstream(dir_ / "labels.csv") << collective_csv(states);
+  const Scene s = parse_scene("[load_collective]\nfile = \"labels.csv\"\n", dir_);
+  // Every row came back (none read as a comment or split), with its label and numbers.
+  ASSERT_EQ(s.states.size(), 3u);
+  EXPECT_EQ(s.states[0].label, "curve; R 500;left");
+  EXPECT_EQ(s.states[1].label, "no. #2 S-curve; wheelset 1");
+  EXPECT_EQ(s.states[2].label, "padded");
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(s.states[i].dy, 1e-3 / 3.0);
+    EXPECT_EQ(s.states[i].weight, 1.0 + static_cast<double>(i));
+  }
 }
 
 }  // namespace

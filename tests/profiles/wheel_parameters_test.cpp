@@ -103,7 +103,7 @@ TEST(WheelLimits, FollowTheStandardsDiameterBands) {
   EXPECT_THROW(in_service_limits(std::nan("")), InputError);
 }
 
-TEST(WheelLimits, NameWhatIsReachedAndIgnoreUnmeasuredParameters) {
+TEST(WheelLimits, NameWhatIsReachedAndCountUnmeasurableParameters) {
   const WheelLimits limits = in_service_limits(0.92);
   // The new S1002 (Sh 28, Sd 32.5, qR 10.8 mm) is far inside every limit.
   EXPECT_TRUE(limits_reached(wheel_parameters(s1002()), limits).empty());
@@ -115,9 +115,17 @@ TEST(WheelLimits, NameWhatIsReachedAndIgnoreUnmeasuredParameters) {
   ASSERT_EQ(reached.size(), 2u);
   EXPECT_EQ(reached[0], "Sd 21.900 mm <= 22.000 mm");
   EXPECT_EQ(reached[1], "Sh 36.000 mm >= 36.000 mm");
+  // A profile worn past its reference points is past every watched limit; a NaN limit is not
+  // watched.
   WheelParameters unmeasured;
   unmeasured.Sd = unmeasured.Sh = unmeasured.qR = std::nan("");
-  EXPECT_TRUE(limits_reached(unmeasured, limits).empty());
+  EXPECT_EQ(limits_reached(unmeasured, limits).size(), 3u);
+  EXPECT_EQ(limits_reached(unmeasured, limits)[0],
+            "Sd not measurable (worn past its reference points)");
+  WheelLimits unwatched = limits;
+  unwatched.Sd_min = unwatched.qR_min = std::nan("");
+  EXPECT_EQ(limits_reached(unmeasured, unwatched).size(), 1u);
+  EXPECT_TRUE(limits_reached(worn, unwatched).size() == 1u);  // Sh only
 }
 
 }  // namespace

@@ -23,6 +23,8 @@ struct WheelsetOnTrack {
 /// on the loads (both wheels touch with undeformed surfaces), so a solve for other loads at the
 /// same dy and yaw can take it instead of iterating again, with identical results.
 struct KnownRoll {
+  double dy = 0.0;             ///< the WheelsetState::dy it was found at [m]
+  double yaw = 0.0;            ///< the WheelsetState::yaw it was found at [rad]
   double roll = 0.0;           ///< [rad]
   double centre_height = 0.0;  ///< WheelsetContact::centre_height [m]
   bool converged = false;      ///< WheelsetContact::roll_converged
@@ -40,9 +42,9 @@ struct WheelsetState {
   /// pushes the wheel towards the track centre); nullopt: the position is prescribed.
   std::optional<double> lateral_force_left;
   std::optional<double> lateral_force_right;  ///< [N], as lateral_force_left for the right wheel
-  /// The roll found at this dy and yaw by an earlier solve (WheelsetContact::known_roll); the
-  /// roll iteration is then skipped. Ignored when a lateral force is prescribed (the wheels'
-  /// adjusted positions move the roll).
+  /// The roll found by an earlier solve (WheelsetContact::known_roll); when it was found at
+  /// exactly this dy and yaw the roll iteration is skipped. Ignored otherwise, and when a
+  /// lateral force is prescribed (the wheels' adjusted positions move the roll).
   std::optional<KnownRoll> known_roll;
 };
 

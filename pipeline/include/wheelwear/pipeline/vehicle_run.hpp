@@ -68,8 +68,9 @@ WheelsetStateSpec wheelset_state(const RouteCase& route_case,
 
 /// `states` as a load-collective CSV file (docs/scenes.md, "Load collective formats"): a label
 /// column and every column a run records under collective/, 17 significant digits so that the
-/// file reads back to the same numbers, unset optional values left empty. Commas and line
-/// breaks in labels become ';'.
+/// file reads back to the same numbers, unset optional values left empty. Labels are made one
+/// cell that reads back: commas and line breaks become ';', edge spaces go, and a leading '#'
+/// (a comment row to the reader) becomes "no. #".
 std::string collective_csv(const std::vector<WheelsetStateSpec>& states);
 
 }  // namespace wheelwear::pipeline

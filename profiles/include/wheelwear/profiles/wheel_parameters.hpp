@@ -66,7 +66,8 @@ inline constexpr double kSmallestStandardWheel = 0.330;
 WheelLimits in_service_limits(double diameter);
 
 /// The limits `parameters` has reached, one phrase each ("Sd 21.950 mm <= 22.000 mm"); empty when
-/// none. A NaN parameter (a profile worn past its reference points) reaches no limit.
+/// none. A NaN limit is not watched; a NaN parameter (a profile worn past its reference points,
+/// where it cannot be measured) has reached its limit.
 std::vector<std::string> limits_reached(const WheelParameters& parameters,
                                         const WheelLimits& limits);
 
