@@ -1,8 +1,6 @@
 // `wheelwear route`: the vehicle on its route alone, without wear: every running condition
 // solved quasi-statically on the scene's profiles, and the load collective its states make.
 
-#include <tbb/global_control.h>
-
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
@@ -14,6 +12,7 @@
 
 #include "commands.hpp"
 #include "json_writer.hpp"
+#include "thread_limit.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/scene.hpp"
@@ -142,11 +141,7 @@ void route(const RouteArgs& args) {
   if (!args.output.empty() && std::filesystem::exists(args.output) && !args.overwrite) {
     throw InputError("-o " + args.output + ": the file exists; pass --overwrite to replace it");
   }
-  std::unique_ptr<tbb::global_control> threads;
-  if (args.threads > 0) {
-    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                    static_cast<std::size_t>(args.threads));
-  }
+  const auto threads = thread_limit(args.threads);
   const pipeline::Scene scene =
       args.scene.empty() ? pipeline::default_scene() : pipeline::load_scene(args.scene);
   const pipeline::VehicleRun run = vehicle_run(scene, args);

@@ -1,6 +1,5 @@
 // `wheelwear run`: the wear-evolution run of a scene (the built-in default when none is given).
 
-#include <tbb/global_control.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -11,9 +10,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "json_writer.hpp"
+#include "thread_limit.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
@@ -124,25 +125,27 @@ struct LimitReached {
 
 LimitReached first_limit(const pipeline::ResultsFile& file, int last) {
   LimitReached first;
-  const std::string limits = pipeline::ResultsFile::step_group(0) + "/limits/Sd_min";
-  if (!file.has(limits)) return first;
-  profiles::WheelLimits bounds;
-  bounds.Sd_min = file.read_step_array(0, "limits/Sd_min").at(0);
-  bounds.Sh_max = file.read_step_array(0, "limits/Sh_max").at(0);
-  bounds.qR_min = file.read_step_array(0, "limits/qR_min").at(0);
-  for (int step = 0; step <= last && first.step < 0; ++step) {
-    for (const char* wheel : {"wheel", "wheel_left", "wheel_right"}) {
-      const std::string name = wheel;
-      if (!file.has(pipeline::ResultsFile::step_group(step) + "/" + name + "/Sd")) continue;
-      profiles::WheelParameters p;
-      p.Sd = file.read_step_array(step, name + "/Sd").at(0);
-      p.Sh = file.read_step_array(step, name + "/Sh").at(0);
-      p.qR = file.read_step_array(step, name + "/qR").at(0);
-      for (const std::string& phrase : profiles::limits_reached(p, bounds)) {
+  const std::vector<std::string> wheels{"wheel", "wheel_left", "wheel_right"};
+  auto recorded = [&](int step, const std::string& wheel) {
+    return file.has(pipeline::ResultsFile::step_group(step) + "/" + wheel + "/limits_reached");
+  };
+  // The run counts the limits each profile reached per step; the phrases are rebuilt from the
+  // recorded parameters and limits at the first step that has any.
+  for (int step = 0; step <= last && first.step < 0; ++step)
+    for (const std::string& wheel : wheels)
+      if (recorded(step, wheel) && file.read_step_array(step, wheel + "/limits_reached").at(0) > 0)
         first.step = step;
-        first.what += (first.what.empty() ? "" : ", ") + name + " " + phrase;
-      }
-    }
+  if (first.step < 0) return first;
+  auto at = [&](const std::string& name) { return file.read_step_array(first.step, name).at(0); };
+  const profiles::WheelLimits bounds{at("limits/Sd_min"), at("limits/Sh_max"), at("limits/qR_min")};
+  for (const std::string& wheel : wheels) {
+    if (!recorded(first.step, wheel)) continue;
+    profiles::WheelParameters p;
+    p.Sd = at(wheel + "/Sd");
+    p.Sh = at(wheel + "/Sh");
+    p.qR = at(wheel + "/qR");
+    for (const std::string& phrase : profiles::limits_reached(p, bounds))
+      first.what += (first.what.empty() ? "" : ", ") + wheel + " " + phrase;
   }
   return first;
 }
@@ -237,11 +240,7 @@ void run(const RunArgs& args) {
               << "with: wheelwear run " << (dir / "default.toml").string() << " -o run.h5\n";
     return;
   }
-  std::unique_ptr<tbb::global_control> threads;
-  if (args.threads > 0) {
-    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                    static_cast<std::size_t>(args.threads));
-  }
+  const auto threads = thread_limit(args.threads);
   pipeline::RunOptions options;
   options.overwrite = args.overwrite;
   if (!args.quiet) options.progress = show_progress;

@@ -171,14 +171,11 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   VehicleCarry carry = std::move(start.vehicle);
   // The depth arrives smoothed (smoothed() above): the update adds no smoothing of its own.
   const profiles::WearUpdateOptions update{0.0};
-  std::optional<profiles::WheelLimits> nominal_limits;
+  // The nominal diameter is the new wheel's: a worn profile keeps its nominal radius.
+  const profiles::WheelLimits limits = scene.limits.resolve(2.0 * worn.front().info.nominal_radius);
   while (true) {
     std::vector<profiles::Profile> wheels;
     for (const WornProfile& w : worn) wheels.push_back(w.build());
-    // The nominal diameter is the new wheel's (a worn profile keeps its nominal radius).
-    if (!nominal_limits)
-      nominal_limits = scene.limits.resolve(2.0 * wheels.front().info().nominal_radius);
-    const profiles::WheelLimits& limits = *nominal_limits;
     std::vector<const profiles::Profile*> pointers;
     for (const auto& w : wheels) pointers.push_back(&w);
     bool vehicle_solved = false;
@@ -199,10 +196,12 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     for (const auto& r : smooth_rate)
       for (double d : r.depth) peak = std::max(peak, d);
     std::vector<profiles::WheelParameters> parameters;
+    std::vector<std::size_t> limits_reached;  // per profile
     bool reached = false;
     for (const profiles::Profile& wheel : wheels) {
       parameters.push_back(measured_parameters(wheel));
-      reached = reached || !profiles::limits_reached(parameters.back(), limits).empty();
+      limits_reached.push_back(profiles::limits_reached(parameters.back(), limits).size());
+      reached = reached || limits_reached.back() > 0;
     }
     const double remaining = scene.distance - distance;
     const bool stop = scene.limits.stop && reached && remaining > 1e-9 * scene.distance;
@@ -250,8 +249,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       g.arrays.push_back(
           scalar(n + "/qR", parameters[p].qR, "m", "flange slope measure qR (EN 15313)"));
       g.arrays.push_back(
-          scalar(n + "/limits_reached",
-                 static_cast<double>(profiles::limits_reached(parameters[p], limits).size()), "1",
+          scalar(n + "/limits_reached", static_cast<double>(limits_reached[p]), "1",
                  "in-service limits (limits/) this profile has reached: Sd, Sh, qR"));
       const wear::WearDistribution& rate = cw.rate[p];
       std::vector<double> s(rate.depth.size()), ys(rate.depth.size());

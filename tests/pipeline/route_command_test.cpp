@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "short_route.hpp"
 #include "support/run_command.hpp"
 #include "wheelwear/pipeline/scene.hpp"
 #include "wheelwear/pipeline/state_kernel.hpp"
@@ -23,33 +24,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A lubricated R 3000 m (its solve converges on S1002/60E1), eased out to tangent track.
-constexpr const char* kRoute = R"(
-[route]
-name = "short"
-speed_m_s = 40
-[[section]]
-kind = "curve"
-length_m = 1000
-radius_m = 3000
-cant_m = 0.03
-friction_flange = 0.1
-[[section]]
-kind = "transition"
-length_m = 60
-radius_m = 0
-cant_m = 0
-[[section]]
-kind = "tangent"
-length_m = 940
-)";
-
 class RouteCommandTest : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() / ("wheelwear_route_" + std::to_string(::getpid()));
     fs::create_directories(dir_);
-    std::ofstream(dir_ / "route.toml") << kRoute;
+    std::ofstream(dir_ / "route.toml") << kShortRoute;
   }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;

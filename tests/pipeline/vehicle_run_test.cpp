@@ -10,6 +10,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "short_route.hpp"
 #include "wear_run_support.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
@@ -19,28 +20,6 @@
 
 namespace wheelwear::pipeline {
 namespace {
-
-// One km of R 3000 m (whose quasi-static solve converges on S1002/60E1) with a lubricated gauge
-// face, eased out to tangent track in 60 m, then 940 m of tangent.
-constexpr const char* kShortRoute = R"(
-[route]
-name = "short"
-speed_m_s = 40
-[[section]]
-kind = "curve"
-length_m = 1000
-radius_m = 3000
-cant_m = 0.03
-friction_flange = 0.1
-[[section]]
-kind = "transition"
-length_m = 60
-radius_m = 0
-cant_m = 0
-[[section]]
-kind = "tangent"
-length_m = 940
-)";
 
 std::string vehicle_scene(double distance, double step, double resolve_depth) {
   return "[contact]\ngrid_nx = 12\ngrid_ny = 12\n[run]\ndistance_m = " + std::to_string(distance) +

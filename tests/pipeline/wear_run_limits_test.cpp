@@ -8,6 +8,7 @@
 #include <string>
 
 #include "support/input_errors.hpp"
+#include "support/run_command.hpp"
 #include "wear_run_support.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/pipeline/wear_run.hpp"
@@ -67,6 +68,14 @@ TEST_F(WearRunTest, StopsAtTheFirstStepThatReachesALimit) {
     EXPECT_EQ(at(s, step, "limits/stopped"), step == 3 ? 1.0 : 0.0) << step;
   }
   EXPECT_EQ(at(s, 3, "step_distance"), 0.0);
+  // The command reports the same step and what was reached.
+  const fs::path scene = write("stopping.toml", stopping);
+  const testing::CommandResult cli = testing::run_wheelwear(
+      "run " + scene.string() + " -q --json -o " + (dir_ / "cli.h5").string());
+  ASSERT_EQ(cli.exit_code, 0) << cli.err;
+  EXPECT_EQ(testing::json_number(cli.out, "limit_step"), 3.0);
+  EXPECT_TRUE(contains(cli.out, "\"limit_reached\": \"wheel Sh ")) << cli.out;
+  EXPECT_TRUE(contains(cli.out, "\"stopped_at_limit\": true")) << cli.out;
   EXPECT_EQ(at(s, 3, "limits/Sh_max"), bound);
 }
 
