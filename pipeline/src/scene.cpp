@@ -10,6 +10,7 @@
 
 #include "load_collective.hpp"
 #include "scene_keys.hpp"
+#include "scene_values.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/tangential/tangential.hpp"
@@ -31,122 +32,13 @@ using detail::read_table;
 using detail::text;
 using detail::where;
 
-// contact.tangential_method: fastsim, best or exact, or a FASTSIM method of the command line's
-// names that also names the contact model (fastsim-sdec is fastsim with model sdec).
-struct SceneTangential {
-  TangentialMethod method = TangentialMethod::fastsim;
-  bool names_model = false;  // the name also gives the contact model
-  tangential::ContactModel model = tangential::ContactModel::sdec;
-};
-
-std::optional<SceneTangential> scene_tangential_method(const std::string& name) {
-  using C = tangential::ContactModel;
-  if (name == "fastsim") return SceneTangential{};
-  const auto method = tangential::parse_method(name);
-  if (!method) return std::nullopt;
-  switch (*method) {
-    case tangential::Method::best:
-      return SceneTangential{TangentialMethod::best, false, C::sdec};
-    case tangential::Method::exact:
-      return SceneTangential{TangentialMethod::exact, false, C::sdec};
-    case tangential::Method::fastsim_sdec:
-      return SceneTangential{TangentialMethod::fastsim, true, C::sdec};
-    case tangential::Method::fastsim_eql:
-      return SceneTangential{TangentialMethod::fastsim, true, C::eql};
-    case tangential::Method::fastsim_eqe:
-      return SceneTangential{TangentialMethod::fastsim, true, C::eqe};
-    case tangential::Method::fastsim_eqe_shifted:
-      return SceneTangential{TangentialMethod::fastsim, true, C::eqe_shifted};
-    default:  // no per-cell fields (linear, table) or no scene model (fastsim-elliptic)
-      return std::nullopt;
-  }
-}
-
-fs::path resolve(const fs::path& base, const std::string& name) {
-  const fs::path p(name);
-  return p.is_absolute() || base.empty() ? p : base / p;
-}
-
-bool is_standard_profile(const std::string& spec, std::string_view standard) {
-  return core::to_lower(spec) == core::to_lower(standard);
-}
-
-// A profile is a standard name or a file, which must exist.
-std::string profile_spec(const toml::node& node, const std::string& key, const fs::path& base,
-                         std::string_view standard) {
-  const std::string spec = text(node, key);
-  if (is_standard_profile(spec, standard)) return std::string(standard);
-  const fs::path file = resolve(base, spec);
-  if (!fs::is_regular_file(file)) {
-    throw InputError(where(node.source(), key) + " = \"" + spec + "\": no such file (looked for " +
-                     file.string() + "); give \"" + std::string(standard) +
-                     "\" or a profile file, relative to the scene file");
-  }
-  return file.string();
-}
-
-// A file named by `key`, or none for "default" (the built-in one, `builtin`); a file that does
-// not exist is refused, naming both choices (`file_kind`: what kind of file to give).
-std::optional<fs::path> builtin_or_file(const toml::node& node, const std::string& key,
-                                        const fs::path& base, std::string_view builtin,
-                                        std::string_view file_kind) {
-  const std::string name = text(node, key);
-  if (name == "default") return std::nullopt;
-  const fs::path file = resolve(base, name);
-  if (!fs::is_regular_file(file)) {
-    throw InputError(where(node.source(), key) + " = \"" + name + "\": no such file (looked for " +
-                     file.string() + "); give \"default\" (" + std::string(builtin) + ") or " +
-                     std::string(file_kind));
-  }
-  return file;
-}
-
-// [wheel] origin: "auto", "taping-line" or "internal-face" (profiles::WheelOrigin).
-profiles::WheelOrigin wheel_origin(const toml::node& node, const std::string& key) {
-  const std::string name = text(node, key);
-  const auto origin = profiles::parse_wheel_origin(name);
-  if (!origin)
-    throw InputError(where(node.source(), key) + " = \"" + name +
-                     "\": unknown origin; use auto, taping-line (the file's y = 0 is the taping "
-                     "line) or internal-face (the flange back, as MiniProf writes wheels)");
-  return *origin;
-}
-
-// The share of a file's points the cleaning may discard.
-double max_drop(const toml::node& node, const std::string& key) {
-  return number(node, key, 0.0, 1.0,
-                "the share of points the cleaning may discard (merged duplicates do not count)");
-}
-
-std::vector<WheelsetStateSpec> inline_states(const toml::node& node, const std::string& key) {
-  const toml::array* array = node.as_array();
-  if (!array || !array->is_array_of_tables()) {
-    throw InputError(where(node.source(), key) +
-                     ": expected [[load_collective.state]] tables, one per state");
-  }
-  std::vector<WheelsetStateSpec> states;
-  for (const toml::node& element : *array) {
-    const toml::table& table = *element.as_table();
-    WheelsetStateSpec state;
-    state.line = static_cast<int>(table.source().begin.line);
-    for (auto&& [name, value] : table) {
-      const std::string field(name.str());
-      const std::string place = where(name.source(), key + "." + field);
-      detail::StateField f{field, 0.0, {}};
-      if (field == "label" || field == "section") {
-        f.text = text(value, key + "." + field);
-      } else {
-        const auto v = value.value<double>();
-        if (!v || value.is_boolean()) throw InputError(place + ": expected a number (SI units)");
-        f.number = *v;
-      }
-      detail::set_state_field(state, f, where(name.source(), key));
-    }
-    detail::finish_state(state, "scene line " + std::to_string(state.line) + ": " + key);
-    states.push_back(std::move(state));
-  }
-  return states;
-}
+using detail::builtin_or_file;
+using detail::inline_states;
+using detail::max_drop;
+using detail::profile_spec;
+using detail::resolve;
+using detail::scene_tangential_method;
+using detail::wheel_origin;
 
 }  // namespace
 

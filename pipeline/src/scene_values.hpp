@@ -1,0 +1,52 @@
+#pragma once
+// The scene's readers of single values beyond numbers and text: the tangential method's name,
+// file names relative to the scene, profile names, the wheel's origin, inline states. Each
+// names the key and its line when it refuses a value.
+
+#include <toml++/toml.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "wheelwear/pipeline/scene.hpp"
+
+namespace wheelwear::pipeline::detail {
+
+// contact.tangential_method: fastsim, best or exact, or a FASTSIM method of the command line's
+// names that also names the contact model (fastsim-sdec is fastsim with model sdec).
+struct SceneTangential {
+  TangentialMethod method = TangentialMethod::fastsim;
+  bool names_model = false;  // the name also gives the contact model
+  tangential::ContactModel model = tangential::ContactModel::sdec;
+};
+
+// The method a name gives; none for names that are no scene method.
+std::optional<SceneTangential> scene_tangential_method(const std::string& name);
+
+// `name` taken relative to `base` unless it is absolute or `base` is empty.
+std::filesystem::path resolve(const std::filesystem::path& base, const std::string& name);
+
+// A profile is a standard name (`standard`, any case) or a file, which must exist.
+std::string profile_spec(const toml::node& node, const std::string& key,
+                         const std::filesystem::path& base, std::string_view standard);
+
+// A file named by `key`, or none for "default" (the built-in one, `builtin`); a file that does
+// not exist is refused, naming both choices (`file_kind`: what kind of file to give).
+std::optional<std::filesystem::path> builtin_or_file(const toml::node& node, const std::string& key,
+                                                     const std::filesystem::path& base,
+                                                     std::string_view builtin,
+                                                     std::string_view file_kind);
+
+// [wheel] origin: "auto", "taping-line" or "internal-face" (profiles::WheelOrigin).
+profiles::WheelOrigin wheel_origin(const toml::node& node, const std::string& key);
+
+// The share of a file's points the cleaning may discard.
+double max_drop(const toml::node& node, const std::string& key);
+
+// [[load_collective.state]] tables.
+std::vector<WheelsetStateSpec> inline_states(const toml::node& node, const std::string& key);
+
+}  // namespace wheelwear::pipeline::detail
