@@ -1,6 +1,7 @@
 // The vehicle: one wheelset's forces (both wheels' contacts, their loads met, FASTSIM-SDEC on
-// every patch) and the quasi-static curving of the whole vehicle (18 unknowns) by direct
-// evaluation of the contact chain, on S1002 / 60E1 1:40.
+// every patch) and the quasi-static curving of the whole vehicle (18 unknowns), by direct
+// evaluation of the contact chain and with a contact look-up table (and the table's build), on
+// S1002 / 60E1 1:40.
 
 #include <benchmark/benchmark.h>
 
@@ -28,8 +29,29 @@ vehicle::WheelsetModel standard_wheelset() {
   return model;
 }
 
-void BM_WheelsetForcesFlange(benchmark::State& state) {
+vehicle::WheelsetModel tabulated(vehicle::WheelsetModel m) {
+  m.table = std::make_shared<const contactgeom::WheelsetContactTable>(m.track, m.contact);
+  return m;
+}
+
+void BM_ContactTableBuild(benchmark::State& state) {
   const vehicle::WheelsetModel m = standard_wheelset();
+  std::size_t shifts = 0;
+  int solves = 0;
+  for (auto _ : state) {
+    const contactgeom::WheelsetContactTable table(m.track, m.contact);
+    shifts = table.shifts().size();
+    solves = table.contact_solves();
+    benchmark::DoNotOptimize(shifts);
+  }
+  state.counters["shifts"] = static_cast<double>(shifts);
+  state.counters["contact_solves"] = solves;
+}
+BENCHMARK(BM_ContactTableBuild)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_WheelsetForcesFlange(benchmark::State& state) {
+  const vehicle::WheelsetModel m =
+      state.range(0) ? tabulated(standard_wheelset()) : standard_wheelset();
   vehicle::WheelsetMotionState s;
   s.dy = 6.16e-3;
   s.yaw = 4.6e-3;
@@ -43,11 +65,13 @@ void BM_WheelsetForcesFlange(benchmark::State& state) {
   }
   state.counters["contact_solves"] = benchmark::Counter(solves, benchmark::Counter::kAvgIterations);
 }
-BENCHMARK(BM_WheelsetForcesFlange)->Unit(benchmark::kMicrosecond);
+// Argument: 0 direct evaluation, 1 with the contact table.
+BENCHMARK(BM_WheelsetForcesFlange)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 void BM_QuasiStaticCurving(benchmark::State& state) {
   const vehicle::Vehicle v = vehicle::default_vehicle();
-  const vehicle::WheelsetModel m = standard_wheelset();
+  const vehicle::WheelsetModel m =
+      state.range(1) ? tabulated(standard_wheelset()) : standard_wheelset();
   vehicle::SteadyCurve curve;
   curve.running = {20.0, static_cast<double>(state.range(0)), 0.3};
   curve.cant = 0.1;
@@ -63,7 +87,11 @@ void BM_QuasiStaticCurving(benchmark::State& state) {
   state.counters["newton_iterations"] =
       benchmark::Counter(iterations, benchmark::Counter::kAvgIterations);
 }
-BENCHMARK(BM_QuasiStaticCurving)->Arg(500)->Arg(1500)->Arg(3000)->Unit(benchmark::kMillisecond);
+// Arguments: the curve radius [m]; 0 direct evaluation, 1 with the contact table (its build
+// not included: BM_ContactTableBuild).
+BENCHMARK(BM_QuasiStaticCurving)
+    ->ArgsProduct({{500, 1500, 3000}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 BENCHMARK_MAIN();

@@ -1,6 +1,7 @@
 // Quasi-static curving of the default vehicle (Manchester benchmark coach, S1002 on 60E1 1:40):
-// every body in balance, the axles rolling freely, the loads those of the vertical balance;
-// tangent track keeps it centred, and left- and right-hand curves mirror.
+// every body in balance, the axles rolling freely, the loads those of the vertical balance, also
+// with a contact look-up table; tangent track keeps it centred, and left- and right-hand curves
+// mirror.
 
 #include "wheelwear/vehicle/quasi_static_curving.hpp"
 
@@ -8,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 #include "standard_wheelset.hpp"
 #include "wheelwear/vehicle/vehicle_file.hpp"
@@ -118,8 +120,41 @@ TEST(QuasiStaticCurving, EveryBodyIsInEquilibrium) {
   EXPECT_EQ(compared, 4 * 19);
 }
 
-// A symmetric vehicle on straight track without irregularities: every body on the centre line,
-// every yaw zero, no longitudinal creep force.
+TEST(QuasiStaticCurving, WithAContactTableIsInEquilibriumAndNearTheDirectSolve) {
+  // The balances hold for the forces the table gives (recomputed through the same table), and
+  // the states stay near those of direct evaluation: the table misses a wheel's lateral force by
+  // at most 1e-3 of its load per interpolation (shift, load), 2e-3 Q together (~100 N here); a
+  // wheelset's shift moves by that over its lateral stiffness on the flange root (>= 1e7 N/m for
+  // the leading axles in contact), 10 um, and on the tread by the miss over the primary and
+  // gravitational stiffness (~1 MN/m), 0.1 mm at most. Angles of attack follow within 0.1 mrad.
+  const Vehicle v = default_vehicle();
+  const auto direct = four(standard_wheelset());
+  WheelsetModel tabulated = standard_wheelset();
+  tabulated.table =
+      std::make_shared<const contactgeom::WheelsetContactTable>(tabulated.track, tabulated.contact);
+  const auto models = four(tabulated);
+  int compared = 0;
+  for (double radius : {500.0, 1500.0, -3000.0}) {
+    const SteadyCurve curve = curve_of(radius, 0.1, 20.0);
+    const VehicleCurving reference = solve_vehicle_curving(v, direct, curve);
+    const VehicleCurving c = solve_vehicle_curving(v, models, curve);
+    ASSERT_TRUE(reference.converged && c.converged) << radius;
+    expect_equilibrium(v, models, curve, c, compared);
+    for (std::size_t k = 0; k < kWheelsets; ++k) {
+      const CurvingWheelset& a = reference.wheelsets[k];
+      const CurvingWheelset& b = c.wheelsets[k];
+      EXPECT_TRUE(b.forces.tabulated);
+      const double Q = a.load_left + a.load_right;
+      EXPECT_NEAR(b.state.dy, a.state.dy, std::abs(a.state.dy) > 4e-3 ? 10e-6 : 0.1e-3) << k;
+      EXPECT_NEAR(b.state.yaw, a.state.yaw, 0.1e-3) << k;
+      EXPECT_NEAR(b.forces.wheels[0].Y, a.forces.wheels[0].Y, 2e-3 * Q) << k;
+      EXPECT_NEAR(b.forces.wheels[1].Y, a.forces.wheels[1].Y, 2e-3 * Q) << k;
+      compared += 4;
+    }
+  }
+  EXPECT_EQ(compared, 3 * (19 + 4 * 4));
+}
+
 TEST(QuasiStaticCurving, StartsFromAnEarlierSolution) {
   const Vehicle v = default_vehicle();
   const auto models = four(standard_wheelset());
@@ -151,6 +186,8 @@ TEST(QuasiStaticCurving, StartsFromAnEarlierSolution) {
   EXPECT_FALSE(solve_vehicle_curving(v, models, r1500, options).converged);
 }
 
+// A symmetric vehicle on straight track without irregularities: every body on the centre line,
+// every yaw zero, no longitudinal creep force.
 TEST(QuasiStaticCurving, TangentTrackKeepsTheVehicleCentred) {
   const Vehicle v = default_vehicle();
   const VehicleCurving c =

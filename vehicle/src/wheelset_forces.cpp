@@ -109,7 +109,11 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
     geometry.vertical_force_left = solved_for[0];
     geometry.vertical_force_right = solved_for[1];
     geometry.known_roll = known_roll;
-    out.contact = contactgeom::solve_wheelset(model.track, geometry, model.contact);
+    std::optional<contactgeom::WheelsetContact> tabulated;
+    if (model.table) tabulated = model.table->contact(geometry);
+    out.contact = tabulated ? std::move(*tabulated)
+                            : contactgeom::solve_wheelset(model.track, geometry, model.contact);
+    out.tabulated = tabulated.has_value();
     // The roll depends on dy and yaw alone: the next load iterations take it as found.
     known_roll = out.contact.known_roll;
     ++out.load_iterations;

@@ -10,6 +10,7 @@
 /// the gauge side, the track centre.
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "wheelwear/contactgeom/kinematics.hpp"
 #include "wheelwear/contactgeom/rail_friction.hpp"
 #include "wheelwear/contactgeom/wheelset.hpp"
+#include "wheelwear/contactgeom/wheelset_table.hpp"
 #include "wheelwear/tangential/tangential.hpp"
 
 namespace wheelwear::vehicle {
@@ -60,6 +62,10 @@ struct WheelsetModel {
   /// Distance from the wheelset centre to each wheel's contact [m]: the arm of the yaw rate in
   /// each wheel's forward speed and of the longitudinal forces in the yaw moment.
   double lateral_arm = 0.75;
+  /// A contact look-up table of `track` with `contact` (contactgeom::WheelsetContactTable): the
+  /// wheels' contacts are interpolated from it where it answers and solved directly elsewhere.
+  /// Unset: always solved directly (the reference).
+  std::shared_ptr<const contactgeom::WheelsetContactTable> table;
 };
 
 /// One patch's share, in its wheel's frame.
@@ -106,6 +112,7 @@ struct WheelsetForces {
   double axle_torque = 0.0;  ///< torque of both wheels [N m]; 0 for a free-rolling axle
   int load_iterations = 0;   ///< contact solves made to meet the wheels' loads Q
   bool loads_met = false;    ///< every wheel carrying load meets its Q to 1e-9
+  bool tabulated = false;    ///< the last contact came from WheelsetModel::table
   std::string message;       ///< why, when the loads were not met
 };
 
