@@ -1,6 +1,7 @@
 // `wheelwear curving`: the quasi-static curving of the scene's vehicle in a constant curve.
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -30,6 +31,7 @@ struct CurvingArgs {
   double speed = 0.0;
   std::optional<double> friction;
   bool json = false;
+  bool contact_table = false;
   std::string export_vehicle;
   bool overwrite = false;
 };
@@ -55,7 +57,14 @@ const char* wheelset_status(const vehicle::WheelsetForces& f) {
   return "ok";
 }
 
-void print_json(const vehicle::VehicleCurving& c) {
+// What the contact table cost, when one was built.
+struct TableReport {
+  std::size_t shifts = 0, load_levels = 0;
+  int contact_solves = 0;
+  double seconds = 0.0;
+};
+
+void print_json(const vehicle::VehicleCurving& c, const std::optional<TableReport>& table) {
   std::vector<std::string> wheelsets;
   for (const vehicle::CurvingWheelset& w : c.wheelsets) {
     JsonObject o;
@@ -86,6 +95,13 @@ void print_json(const vehicle::VehicleCurving& c) {
       .add_raw("car_body", body.str())
       .add_raw("bogies", json_array(bogies))
       .add_raw("wheelsets", json_array(wheelsets));
+  if (table)
+    out.add_raw("contact_table", JsonObject()
+                                     .add("shifts", static_cast<int>(table->shifts))
+                                     .add("load_levels", static_cast<int>(table->load_levels))
+                                     .add("contact_solves", table->contact_solves)
+                                     .add("build_seconds", table->seconds)
+                                     .str());
   std::cout << out.str() << "\n";
 }
 
@@ -145,13 +161,25 @@ void curving(const CurvingArgs& args) {
   const pipeline::StateKernel kernel(scene);
   const profiles::Profile wheel =
       profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
-  const vehicle::WheelsetModel model = pipeline::wheelset_model(kernel, wheel, wheel);
+  vehicle::WheelsetModel model = pipeline::wheelset_model(kernel, wheel, wheel);
+  std::optional<TableReport> table;
+  if (args.contact_table) {
+    const auto start = std::chrono::steady_clock::now();
+    model.table = pipeline::contact_table(model, v);
+    table = TableReport{
+        model.table->shifts().size(), model.table->loads().size(), model.table->contact_solves(),
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+  }
   const vehicle::VehicleCurving c =
       vehicle::solve_vehicle_curving(v, {model, model, model, model}, curve);
-  if (args.json)
-    print_json(c);
-  else
+  if (args.json) {
+    print_json(c, table);
+  } else {
     print_text(c, curve);
+    if (table)
+      std::printf("contact table: %zu shifts x %zu loads, %d contact solves, built in %.2f s\n",
+                  table->shifts, table->load_levels, table->contact_solves, table->seconds);
+  }
   if (!c.converged) throw InputError("curving did not converge: " + c.message);
 }
 
@@ -179,6 +207,9 @@ void add_curving_command(CLI::App& app) {
                   "friction coefficient, top of rail and flange alike (default: the scene's)")
       ->check(CLI::Range(0.01, 1.0));
   cmd->add_flag("--json", args->json, "print the result as JSON");
+  cmd->add_flag("--contact-table", args->contact_table,
+                "interpolate the contacts from a look-up table built first (as a run does; "
+                "docs/vehicle.md) instead of solving each directly");
   cmd->add_option("--export-default-vehicle", args->export_vehicle,
                   "write the built-in vehicle (vehicle.toml) into this directory and exit");
   cmd->add_flag("--overwrite", args->overwrite, "replace an existing exported file");

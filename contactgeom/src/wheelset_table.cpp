@@ -145,7 +145,6 @@ WheelRailContact scaled(const std::vector<TablePatch>& patches, WheelRailStatus 
   return c;
 }
 
-
 // Every load level of one shift. The roll depends on dy alone: it is solved at the first level
 // and taken as found at the others.
 std::vector<TableNode> solve_shift(const WheelsetOnTrack& track, const WheelRailOptions& options,
@@ -214,9 +213,10 @@ void WheelsetTableOptions::validate() const {
           "the table's shifts must reach beyond 0 and stay below 0.1 m");
   require(std::isfinite(dy_step) && dy_step > 0.0 && dy_step <= dy_max, "dy_step", dy_step,
           "the node spacing must be positive and at most dy_max (m)");
-  require(dy_max / dy_step <= 1e5, "dy_step", dy_step, "gives more than 2e5 shifts: take it larger");
-  require(std::isfinite(dy_step_min) && dy_step_min > 0.0 && dy_step_min <= dy_step,
-          "dy_step_min", dy_step_min, "must be positive and at most dy_step (m)");
+  require(dy_max / dy_step <= 1e5, "dy_step", dy_step,
+          "gives more than 2e5 shifts: take it larger");
+  require(std::isfinite(dy_step_min) && dy_step_min > 0.0 && dy_step_min <= dy_step, "dy_step_min",
+          dy_step_min, "must be positive and at most dy_step (m)");
   require(dy_step / dy_step_min <= 1e4, "dy_step_min", dy_step_min,
           "refines dy_step more than 1e4 times: take it larger");
   require(std::isfinite(lateral_tolerance) && lateral_tolerance > 0.0, "lateral_tolerance",
@@ -240,9 +240,9 @@ WheelsetContactTable::WheelsetContactTable(const WheelsetOnTrack& track,
   const auto intervals = static_cast<std::size_t>(
       std::ceil(std::log(grid.load_max / grid.load_min) / std::log(grid.load_ratio) - 1e-9));
   for (std::size_t j = 0; j <= intervals; ++j)
-    loads_.push_back(grid.load_min * std::pow(grid.load_max / grid.load_min,
-                                              static_cast<double>(j) /
-                                                  static_cast<double>(intervals)));
+    loads_.push_back(grid.load_min *
+                     std::pow(grid.load_max / grid.load_min,
+                              static_cast<double>(j) / static_cast<double>(intervals)));
 
   // Solves a batch of shifts in parallel; the table does not depend on the number of threads.
   std::map<double, std::vector<TableNode>> solved;
@@ -261,8 +261,8 @@ WheelsetContactTable::WheelsetContactTable(const WheelsetOnTrack& track,
   const auto initial = std::max<long long>(1, std::llround(2.0 * grid.dy_max / grid.dy_step));
   std::vector<double> dys;
   for (long long k = 0; k <= initial; ++k)
-    dys.push_back(-grid.dy_max + 2.0 * grid.dy_max * static_cast<double>(k) /
-                                     static_cast<double>(initial));
+    dys.push_back(-grid.dy_max +
+                  2.0 * grid.dy_max * static_cast<double>(k) / static_cast<double>(initial));
   solve_all(dys);
   // Every initial interval has its midpoint checked; an interval whose midpoint misses has both
   // halves checked in the next pass.
@@ -299,8 +299,8 @@ WheelsetContactTable::WheelsetContactTable(const WheelsetOnTrack& track,
 std::size_t WheelsetContactTable::unusable_nodes() const {
   std::size_t count = 0;
   for (const std::vector<TableNode>& levels : nodes_)
-    count += static_cast<std::size_t>(std::count_if(
-        levels.begin(), levels.end(), [](const TableNode& n) { return !n.usable; }));
+    count += static_cast<std::size_t>(
+        std::count_if(levels.begin(), levels.end(), [](const TableNode& n) { return !n.usable; }));
   return count;
 }
 
@@ -324,13 +324,12 @@ std::optional<WheelsetContact> WheelsetContactTable::contact(const WheelsetState
     l.j = std::clamp<std::size_t>(static_cast<std::size_t>(above - loads_.begin()), 1,
                                   loads_.size() - 1) -
           1;
-    l.s = std::clamp(std::log(Fz / loads_[l.j]) / std::log(loads_[l.j + 1] / loads_[l.j]), 0.0,
-                     1.0);
+    l.s =
+        std::clamp(std::log(Fz / loads_[l.j]) / std::log(loads_[l.j + 1] / loads_[l.j]), 0.0, 1.0);
     return l;
   };
   const double Fz_left = state.vertical_force_left, Fz_right = state.vertical_force_right;
-  if (!(Fz_left > 0.0) || !(Fz_right > 0.0) || !std::isfinite(Fz_left) ||
-      !std::isfinite(Fz_right))
+  if (!(Fz_left > 0.0) || !(Fz_right > 0.0) || !std::isfinite(Fz_left) || !std::isfinite(Fz_right))
     return std::nullopt;
   const Level left = level(Fz_left), right = level(Fz_right);
 

@@ -301,6 +301,10 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                    vehicle_run().wheelsets = name == "all" ? WheelsetSelection::all
                                                            : WheelsetSelection::leading;
                  }},
+                {"contact_table",
+                 [&](const auto& n, const auto& k) {
+                   vehicle_run().contact_table = boolean(n, k);
+                 }},
                 {"resolve_depth_m",
                  [&](const auto& n, const auto& k) {
                    vehicle_run().resolve_depth =

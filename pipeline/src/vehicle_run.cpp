@@ -78,6 +78,18 @@ vehicle::WheelsetModel wheelset_model(const StateKernel& kernel, const profiles:
   return model;
 }
 
+std::shared_ptr<const contactgeom::WheelsetContactTable> contact_table(
+    const vehicle::WheelsetModel& model, const vehicle::Vehicle& vehicle) {
+  // Loads from a quarter of the static wheel load to three times it: beyond the quasi-static
+  // range of every curve (Y/Q and the unloading of the inner wheel) without wasting levels.
+  const double static_load = vehicle.mass() * vehicle::kGravity / (2.0 * vehicle::kWheelsets);
+  contactgeom::WheelsetTableOptions grid;
+  grid.load_min = 0.25 * static_load;
+  grid.load_max = 3.0 * static_load;
+  return std::make_shared<const contactgeom::WheelsetContactTable>(model.track, model.contact,
+                                                                   grid);
+}
+
 WheelsetStateSpec wheelset_state(const RouteCase& route_case,
                                  const vehicle::VehicleCurving& curving, int k, double weight) {
   const vehicle::CurvingWheelset& w = curving.wheelsets[static_cast<std::size_t>(k)];
@@ -112,7 +124,8 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
   if (previous)
     require(previous->curving.size() == out.cases.size(), "previous solution's cases",
             static_cast<double>(previous->curving.size()), "must be the route's");
-  const vehicle::WheelsetModel model = wheelset_model(kernel, *wheels.front(), *wheels.back());
+  vehicle::WheelsetModel model = wheelset_model(kernel, *wheels.front(), *wheels.back());
+  if (run.contact_table) model.table = contact_table(model, run.vehicle);
   const std::array<vehicle::WheelsetModel, vehicle::kWheelsets> models{model, model, model, model};
   out.curving.resize(out.cases.size());
   std::vector<int> kept(out.cases.size(), 0);

@@ -40,7 +40,9 @@ WheelsetState at(double dy, double Fz_left, double Fz_right, double yaw = 0.0) {
   return s;
 }
 
-double lateral_share(const WheelRailContact& c) { return c.lateral_force / c.vertical_force; }
+double lateral_share(const WheelRailContact& c) {
+  return c.lateral_force / c.vertical_force;
+}
 
 // The shift of every k-th node within the tread and flange root (|dy| <= 6 mm).
 std::vector<double> tread_nodes(std::size_t every) {

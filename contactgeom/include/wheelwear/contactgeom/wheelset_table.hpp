@@ -41,9 +41,9 @@ namespace wheelwear::contactgeom {
 /// refined in turn, down to dy_step_min. An interval between two nodes that do not answer is
 /// not checked: the table does not answer there, and the caller's direct evaluation does.
 struct WheelsetTableOptions {
-  double dy_max = 16e-3;         ///< the table covers shifts in [-dy_max, dy_max] [m]
-  double dy_step = 0.2e-3;       ///< spacing of the initial shifts [m]
-  double dy_step_min = 10e-6;    ///< finest spacing refinement reaches [m]
+  double dy_max = 16e-3;       ///< the table covers shifts in [-dy_max, dy_max] [m]
+  double dy_step = 0.2e-3;     ///< spacing of the initial shifts [m]
+  double dy_step_min = 10e-6;  ///< finest spacing refinement reaches [m]
   /// Largest miss of a wheel's lateral force per unit vertical force (sum of the patches'
   /// lateral_force / Fz) at a midpoint [-].
   double lateral_tolerance = 1e-3;
@@ -100,13 +100,11 @@ class WheelsetContactTable {
   const WheelsetTableOptions& grid() const { return grid_; }
   const std::vector<double>& shifts() const { return shifts_; }  ///< node shifts, increasing [m]
   const std::vector<double>& loads() const { return loads_; }    ///< load levels, increasing [N]
-  std::size_t unusable_nodes() const;                           ///< nodes that do not answer
-  int contact_solves() const { return contact_solves_; }  ///< spent building the table
+  std::size_t unusable_nodes() const;                            ///< nodes that do not answer
+  int contact_solves() const { return contact_solves_; }         ///< spent building the table
 
  private:
-  const TableNode& node(std::size_t shift, std::size_t level) const {
-    return nodes_[shift][level];
-  }
+  const TableNode& node(std::size_t shift, std::size_t level) const { return nodes_[shift][level]; }
 
   WheelsetTableOptions grid_;
   std::vector<double> shifts_;                 ///< the nodes' dy, increasing [m]

@@ -85,6 +85,9 @@ struct VehicleRun {
   /// The vehicle is solved again once the deepest wear since its last solve reaches this [m];
   /// 0: at every step.
   double resolve_depth = 0.05e-3;
+  /// Interpolate the wheels' contacts from a look-up table built on each solve's profiles
+  /// (contactgeom::WheelsetContactTable) rather than solve every one directly.
+  bool contact_table = true;
 
   /// The wheelsets (0..3, in order of travel) that wear the profile(s).
   std::vector<int> worn_wheelsets() const;

@@ -11,6 +11,7 @@
 /// without irregularities gives the centred wheelset: the time-domain simulation with track
 /// irregularities is not part of the run (docs/vehicle.md, "In the run").
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,12 @@ struct VehicleCollective {
 VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKernel& kernel,
                                            const std::vector<const profiles::Profile*>& wheels,
                                            const VehicleCollective* previous = nullptr);
+
+/// The contact look-up table of `model` the run interpolates from (VehicleRun::contact_table):
+/// the default grid (contactgeom::WheelsetTableOptions), its loads from a quarter to three times
+/// `vehicle`'s static wheel load.
+std::shared_ptr<const contactgeom::WheelsetContactTable> contact_table(
+    const vehicle::WheelsetModel& model, const vehicle::Vehicle& vehicle);
 
 /// The collective's state of wheelset `k` in a solved curve: its dy, yaw, spin and the
 /// vertical forces its contact was solved for (so that the kernel meets the same contact), the
