@@ -15,6 +15,8 @@ namespace wheelwear::contactgeom {
 
 namespace {
 
+constexpr std::size_t kMaxPatches = 8;
+
 bool answers(WheelRailStatus status) {
   return status == WheelRailStatus::ok || status == WheelRailStatus::load_jump;
 }
@@ -164,8 +166,11 @@ std::vector<TableNode> solve_shift(const WheelsetOnTrack& track, const WheelRail
     n.right_dy = c.right_pose.dy;
     n.left = tabulate(c.left);
     n.right = tabulate(c.right);
+    // The pairing of patches between nodes enumerates subsets: a wheel with more patches
+    // than kMaxPatches (none of the profiles seen has more than 3) is solved directly.
     n.usable = c.roll_converged && c.known_roll.has_value() && answers(n.left.status) &&
-               answers(n.right.status);
+               answers(n.right.status) && n.left.patches.size() <= kMaxPatches &&
+               n.right.patches.size() <= kMaxPatches;
   }
   return nodes;
 }
@@ -228,6 +233,8 @@ void WheelsetTableOptions::validate() const {
           "must be larger than load_min (N)");
   require(std::isfinite(load_ratio) && load_ratio > 1.0 && load_ratio <= 4.0, "load_ratio",
           load_ratio, "must lie in (1, 4]");
+  require(std::log(load_max / load_min) / std::log(load_ratio) <= 64.0, "load_ratio", load_ratio,
+          "gives more than 64 load levels between load_min and load_max: take it larger");
 }
 
 WheelsetContactTable::WheelsetContactTable(const WheelsetOnTrack& track,
@@ -237,8 +244,9 @@ WheelsetContactTable::WheelsetContactTable(const WheelsetOnTrack& track,
   grid.validate();
   options.validate();
   // Geometric levels from load_min to load_max, at most load_ratio apart.
-  const auto intervals = static_cast<std::size_t>(
-      std::ceil(std::log(grid.load_max / grid.load_min) / std::log(grid.load_ratio) - 1e-9));
+  const auto intervals = std::max<std::size_t>(
+      1, static_cast<std::size_t>(std::ceil(
+             std::log(grid.load_max / grid.load_min) / std::log(grid.load_ratio) - 1e-9)));
   for (std::size_t j = 0; j <= intervals; ++j)
     loads_.push_back(grid.load_min *
                      std::pow(grid.load_max / grid.load_min,

@@ -87,18 +87,18 @@ TEST(WheelsetTable, IsTheDirectSolveAtItsNodes) {
 }
 
 TEST(WheelsetTable, MeetsItsToleranceBetweenShifts) {
-  // Where refinement stopped short of the finest spacing, every interval's midpoint met the
-  // tolerance; linear interpolation misses most at the midpoint of a smooth interval, so the
-  // lateral force per unit load misses by at most lateral_tolerance (x1.5 for a curvature that
-  // varies across the interval). Intervals at the finest spacing straddle a jump of the contact
-  // point and are left out.
+  // An interval at least 2 dy_step_min wide had its midpoint checked and met the tolerance; linear
+  // interpolation misses most at the midpoint of a smooth interval, so the lateral force per unit
+  // load misses by at most lateral_tolerance (x1.5 for a curvature that varies across the
+  // interval). Intervals at the finest spacing straddle a jump of the contact point and are left
+  // out, as are those too narrow to be checked (below 2 dy_step_min).
   const WheelsetOnTrack track = s1002_on_60e1();
   const std::vector<double>& shifts = table().shifts();
   const double finest = table().grid().dy_step_min;
   const double Fz = table().loads()[5];
   int compared = 0;
   for (std::size_t i = 0; i + 1 < shifts.size(); ++i) {
-    if (std::abs(shifts[i]) > 6e-3 || shifts[i + 1] - shifts[i] < 1.5 * finest) continue;
+    if (std::abs(shifts[i]) > 6e-3 || shifts[i + 1] - shifts[i] < 2.0 * finest) continue;
     const double dy = shifts[i] + 0.3 * (shifts[i + 1] - shifts[i]);
     const WheelsetContact direct = solve_wheelset(track, at(dy, Fz, Fz), WheelRailOptions{});
     const std::optional<WheelsetContact> tab = table().contact(at(dy, Fz, Fz));
@@ -159,7 +159,6 @@ TEST(WheelsetTable, YawDoesNotChangeTheGeometry) {
   // creepages), so the direct solve at a yaw equals the one without, and the table's answer
   // carries the yaw in its poses only.
   const WheelsetOnTrack track = s1002_on_60e1();
-  int compared = 0;
   for (double dy : {-3e-3, 2e-3, 5.5e-3}) {
     const WheelsetContact straight = solve_wheelset(track, at(dy, 50e3, 60e3), WheelRailOptions{});
     const WheelsetContact yawed =
@@ -171,9 +170,7 @@ TEST(WheelsetTable, YawDoesNotChangeTheGeometry) {
     ASSERT_TRUE(tab);
     EXPECT_EQ(tab->left_pose.yaw, 8e-3);
     EXPECT_EQ(tab->right_pose.yaw, -8e-3);
-    compared += 5;
   }
-  EXPECT_EQ(compared, 15);
 }
 
 TEST(WheelsetTable, MirrorsForASymmetricWheelset) {

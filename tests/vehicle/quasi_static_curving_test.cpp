@@ -122,11 +122,9 @@ TEST(QuasiStaticCurving, EveryBodyIsInEquilibrium) {
 
 TEST(QuasiStaticCurving, WithAContactTableIsInEquilibriumAndNearTheDirectSolve) {
   // The balances hold for the forces the table gives (recomputed through the same table), and
-  // the states stay near those of direct evaluation: the table misses a wheel's lateral force by
-  // at most 1e-3 of its load per interpolation (shift, load), 2e-3 Q together (~100 N here); a
-  // wheelset's shift moves by that over its lateral stiffness on the flange root (>= 1e7 N/m for
-  // the leading axles in contact), 10 um, and on the tread by the miss over the primary and
-  // gravitational stiffness (~1 MN/m), 0.1 mm at most. Angles of attack follow within 0.1 mrad.
+  // the states stay near those of direct evaluation: within 4 times the misses measured on this
+  // model (2.5 um in shift, 1 urad in angle of attack, 15 N in Y), so that a regression of the
+  // table shows.
   const Vehicle v = default_vehicle();
   const auto direct = four(standard_wheelset());
   WheelsetModel tabulated = standard_wheelset();
@@ -144,11 +142,10 @@ TEST(QuasiStaticCurving, WithAContactTableIsInEquilibriumAndNearTheDirectSolve) 
       const CurvingWheelset& a = reference.wheelsets[k];
       const CurvingWheelset& b = c.wheelsets[k];
       EXPECT_TRUE(b.forces.tabulated);
-      const double Q = a.load_left + a.load_right;
-      EXPECT_NEAR(b.state.dy, a.state.dy, std::abs(a.state.dy) > 4e-3 ? 10e-6 : 0.1e-3) << k;
-      EXPECT_NEAR(b.state.yaw, a.state.yaw, 0.1e-3) << k;
-      EXPECT_NEAR(b.forces.wheels[0].Y, a.forces.wheels[0].Y, 2e-3 * Q) << k;
-      EXPECT_NEAR(b.forces.wheels[1].Y, a.forces.wheels[1].Y, 2e-3 * Q) << k;
+      EXPECT_NEAR(b.state.dy, a.state.dy, 10e-6) << k;
+      EXPECT_NEAR(b.state.yaw, a.state.yaw, 4e-6) << k;
+      EXPECT_NEAR(b.forces.wheels[0].Y, a.forces.wheels[0].Y, 60.0) << k;
+      EXPECT_NEAR(b.forces.wheels[1].Y, a.forces.wheels[1].Y, 60.0) << k;
       compared += 4;
     }
   }

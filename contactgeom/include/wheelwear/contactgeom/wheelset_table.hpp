@@ -14,7 +14,9 @@
 /// nodes are paired in order from the field side to the gauge side, choosing the pairing that
 /// keeps their contact points on the rail closest; a patch without a partner (a second contact
 /// that appears between two nodes) enters with its forces scaled by its weight and its sizes by
-/// the cube root of it, so the wheel's forces stay continuous as a contact appears. Each node's
+/// the cube root of it, so the wheel's forces stay continuous as a contact appears (along dy and
+/// along Fz; inside a cell the pairing in dy follows the load-blended contact points, and may
+/// change with the load where two patches are equally near). Each node's
 /// vertical shares sum to 1, so the interpolated patches carry exactly the requested Fz.
 /// Outside the loads tabulated, the end level's shares and shapes are scaled.
 ///
@@ -38,7 +40,8 @@ namespace wheelwear::contactgeom {
 /// The grid of a table. Shifts start on a uniform grid and are refined by halving where the
 /// interpolation misses: an interval's midpoint is solved, and where its interpolated contact
 /// differs from the solved one at any load level by more than a tolerance, both halves are
-/// refined in turn, down to dy_step_min. An interval between two nodes that do not answer is
+/// refined in turn, as long as the halves are at least dy_step_min wide (12.5 um with the
+/// defaults). An interval between two nodes that do not answer is
 /// not checked: the table does not answer there, and the caller's direct evaluation does.
 struct WheelsetTableOptions {
   double dy_max = 16e-3;       ///< the table covers shifts in [-dy_max, dy_max] [m]
