@@ -21,6 +21,19 @@ bool answers(WheelRailStatus status) {
   return status == WheelRailStatus::ok || status == WheelRailStatus::load_jump;
 }
 
+// The patch with its forces multiplied by `forces` and its sizes (SDEC a and b, and pmax) by
+// `sizes`: the Hertzian scaling with the load, sizes by its cube root, serves to store a patch
+// per unit load, to scale it back, and to fade in a patch without a partner.
+TablePatch rescaled(TablePatch p, double forces, double sizes) {
+  p.normal *= forces;
+  p.vertical *= forces;
+  p.lateral *= forces;
+  p.a *= sizes;
+  p.b *= sizes;
+  p.pmax *= sizes;
+  return p;
+}
+
 // A wheel's patches per unit of its vertical force. The node's own vertical force is the
 // divisor (it misses the load only in a load jump), so the vertical shares sum to 1.
 TableWheel tabulate(const WheelRailContact& contact) {
@@ -28,22 +41,11 @@ TableWheel tabulate(const WheelRailContact& contact) {
   w.status = contact.status;
   if (!answers(contact.status) || !(contact.vertical_force > 0.0)) return w;
   const double Fz = contact.vertical_force;
-  const double root = std::cbrt(Fz);
   for (const WheelRailPatch& p : contact.patches) {
-    TablePatch t;
-    t.normal = p.normal_force / Fz;
-    t.vertical = p.vertical_force / Fz;
-    t.lateral = p.lateral_force / Fz;
-    t.a = p.sdec.a / root;
-    t.b = p.sdec.b / root;
-    t.psi = p.sdec.psi;
-    t.pmax = p.pmax / root;
-    t.contact_angle = p.contact_angle;
-    t.rolling_radius = p.rolling_radius;
-    t.y_wheel = p.y_wheel;
-    t.y_rail = p.y_rail;
-    t.s_wheel = p.s_wheel;
-    w.patches.push_back(t);
+    const TablePatch solved{p.normal_force,   p.vertical_force, p.lateral_force, p.sdec.a,
+                            p.sdec.b,         p.sdec.psi,       p.pmax,          p.contact_angle,
+                            p.rolling_radius, p.y_wheel,        p.y_rail,        p.s_wheel};
+    w.patches.push_back(rescaled(solved, 1.0 / Fz, 1.0 / std::cbrt(Fz)));
   }
   return w;
 }
@@ -67,15 +69,8 @@ TablePatch mix(const TablePatch& p, double wp, const TablePatch& q, double wq) {
 
 // A patch without a partner enters with its weight: its forces scale with it, its sizes (and
 // pmax) with the cube root, as a Hertzian patch's do with its load; its place is kept.
-TablePatch fade(TablePatch p, double weight) {
-  const double root = std::cbrt(weight);
-  p.normal *= weight;
-  p.vertical *= weight;
-  p.lateral *= weight;
-  p.a *= root;
-  p.b *= root;
-  p.pmax *= root;
-  return p;
+TablePatch fade(const TablePatch& p, double weight) {
+  return rescaled(p, weight, std::cbrt(weight));
 }
 
 // The order-preserving pairing of every patch of `few` with one of `many` that keeps their
@@ -129,13 +124,14 @@ WheelRailContact scaled(const std::vector<TablePatch>& patches, WheelRailStatus 
   WheelRailContact c;
   c.status = status;
   const double root = std::cbrt(Fz);
-  for (const TablePatch& t : patches) {
+  for (const TablePatch& share : patches) {
+    const TablePatch t = rescaled(share, Fz, root);
     WheelRailPatch& p = c.patches.emplace_back();
-    p.normal_force = t.normal * Fz;
-    p.vertical_force = t.vertical * Fz;
-    p.lateral_force = t.lateral * Fz;
-    p.sdec = Sdec{t.a * root, t.b * root, t.psi};
-    p.pmax = t.pmax * root;
+    p.normal_force = t.normal;
+    p.vertical_force = t.vertical;
+    p.lateral_force = t.lateral;
+    p.sdec = Sdec{t.a, t.b, t.psi};
+    p.pmax = t.pmax;
     p.contact_angle = t.contact_angle;
     p.rolling_radius = t.rolling_radius;
     p.y_wheel = t.y_wheel;
