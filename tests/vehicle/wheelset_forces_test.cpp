@@ -53,6 +53,32 @@ TEST(WheelsetForces, SumsThePatchesAsTheContractDefines) {
   EXPECT_EQ(compared, 12);
 }
 
+// A looser load tolerance is met to itself, and a start from a nearby state's vertical forces
+// reaches the same forces in fewer contact solves.
+TEST(WheelsetForces, LoadToleranceAndVerticalStart) {
+  WheelsetModel model = conical_wheelset(0.1);
+  model.load_tolerance = 1e-4;
+  WheelsetMotionState state;
+  state.dy = 2e-3;
+  state.yaw = 1e-3;
+  state.spin = 20.0 / kNominalRadius;
+  const RunningConditions running{20.0, 800.0, 0.35};
+  const WheelsetForces cold = wheelset_forces(model, state, 60e3, 50e3, running);
+  ASSERT_TRUE(cold.loads_met);
+  EXPECT_NEAR(cold.wheels[0].Q, 60e3, 1e-4 * 60e3);
+  EXPECT_NEAR(cold.wheels[1].Q, 50e3, 1e-4 * 50e3);
+  state.dy += 1e-6;
+  const WheelsetForces warm =
+      wheelset_forces(model, state, 60e3, 50e3, running, std::nullopt, cold.vertical_forces);
+  ASSERT_TRUE(warm.loads_met);
+  EXPECT_EQ(warm.load_iterations, 1);
+  EXPECT_GT(cold.load_iterations, 1);
+  EXPECT_NEAR(warm.wheels[0].Q, 60e3, 1e-4 * 60e3);
+  EXPECT_NEAR(warm.wheels[1].Q, 50e3, 1e-4 * 50e3);
+  model.load_tolerance = 0.0;
+  EXPECT_THROW(wheelset_forces(model, state, 60e3, 50e3, running), InputError);
+}
+
 // Centred on tangent track without yaw, rolling at V / r_c (r_c the radius at its contacts, the
 // same on both wheels), a conical wheelset with linear creep on the ellipse has no creepage but
 // the spin: no longitudinal force, no axle torque, and the two wheels' lateral forces (normal

@@ -9,9 +9,8 @@ namespace wheelwear::vehicle {
 
 namespace {
 
-// Q of a wheel must meet its load to this relative tolerance; the contact's vertical force is
-// corrected by the creep forces' vertical part until it does.
-constexpr double kLoadTolerance = 1e-9;
+// The contact's vertical force is corrected by the creep forces' vertical part until Q meets
+// the load to WheelsetModel::load_tolerance.
 constexpr int kMaxLoadIterations = 30;
 
 void validate(const RunningConditions& running) {
@@ -88,8 +87,12 @@ contactgeom::WheelsetMotion wheel_motion(const WheelsetMotionState& state,
 WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionState& state,
                                double load_left, double load_right,
                                const RunningConditions& running,
-                               std::optional<contactgeom::KnownRoll> known_roll) {
+                               std::optional<contactgeom::KnownRoll> known_roll,
+                               std::optional<std::array<double, 2>> vertical_start) {
   validate(running);
+  require(std::isfinite(model.load_tolerance) && model.load_tolerance > 0.0 &&
+              model.load_tolerance <= 0.01,
+          "load tolerance", model.load_tolerance, "must lie in (0, 0.01]");
   require(std::isfinite(state.spin) && state.spin > 0.0, "spin", state.spin,
           "the axle's angular velocity must be positive (rad/s)");
   require(std::isfinite(load_left) && load_left > 0.0, "left wheel load", load_left,
@@ -97,7 +100,11 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
   require(std::isfinite(load_right) && load_right > 0.0, "right wheel load", load_right,
           "must be positive (N)");
   const std::array<double, 2> loads{load_left, load_right};
-  std::array<double, 2> solved_for = loads;  // the vertical force the contact is solved for
+  // The vertical force the contact is solved for.
+  std::array<double, 2> solved_for = loads;
+  if (vertical_start && std::isfinite((*vertical_start)[0]) && std::isfinite((*vertical_start)[1]))
+    for (int side = 0; side < 2; ++side)
+      solved_for[side] = std::clamp((*vertical_start)[side], 0.5 * loads[side], 2.0 * loads[side]);
   // The previous iterate per wheel, for secant steps: Q grows with the solved-for force at a
   // rate near 1 (less the creep forces' share), which the secant finds in one step.
   std::array<double, 2> previous_for{0.0, 0.0}, previous_Q{0.0, 0.0};
@@ -117,6 +124,7 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
     // The roll depends on dy and yaw alone: the next load iterations take it as found.
     known_roll = out.contact.known_roll;
     ++out.load_iterations;
+    out.vertical_forces = solved_for;
     bool met = true;
     for (int side = 0; side < 2; ++side) {
       const auto k = static_cast<std::size_t>(side);
@@ -130,7 +138,7 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
       if (!contactgeom::carries_load(c.status)) continue;
       const double Q = out.wheels[k].Q;
       const double miss = loads[k] - Q;
-      if (std::abs(miss) > kLoadTolerance * loads[k]) {
+      if (std::abs(miss) > model.load_tolerance * loads[k]) {
         met = false;
         double rate = 1.0;
         if (iteration > 0 && solved_for[k] != previous_for[k]) {

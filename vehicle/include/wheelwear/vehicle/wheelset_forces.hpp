@@ -66,6 +66,8 @@ struct WheelsetModel {
   /// wheels' contacts are interpolated from it where it answers and solved directly elsewhere.
   /// Unset: always solved directly (the reference).
   std::shared_ptr<const contactgeom::WheelsetContactTable> table;
+  /// Relative tolerance to which each wheel's Q meets its load, in (0, 0.01].
+  double load_tolerance = 1e-9;
 };
 
 /// One patch's share, in its wheel's frame.
@@ -111,9 +113,12 @@ struct WheelsetForces {
   double Fx_axle = 0.0;      ///< Fx of both wheels [N], + forward
   double axle_torque = 0.0;  ///< torque of both wheels [N m]; 0 for a free-rolling axle
   int load_iterations = 0;   ///< contact solves made to meet the wheels' loads Q
-  bool loads_met = false;    ///< every wheel carrying load meets its Q to 1e-9
-  bool tabulated = false;    ///< the last contact came from WheelsetModel::table
-  std::string message;       ///< why, when the loads were not met
+  bool loads_met = false;    ///< every wheel carrying load meets its Q to the model's tolerance
+  /// The vertical forces (left, right) the last contact was solved for [N]: the loads less
+  /// the creep forces' vertical parts; a good start for a nearby state (vertical_start).
+  std::array<double, 2> vertical_forces{};
+  bool tabulated = false;  ///< the last contact came from WheelsetModel::table
+  std::string message;     ///< why, when the loads were not met
 };
 
 /// The forces of the rails on the wheelset at `state`, each wheel carrying `load_left`,
@@ -122,11 +127,14 @@ struct WheelsetForces {
 /// InputError on bad input; a wheel whose contact fails keeps its status and no forces.
 /// `known_roll`: the roll an earlier evaluation at the same dy and yaw found
 /// (WheelsetForces::contact.known_roll), which spares the roll iteration without changing the
-/// result; the load iterations share one roll solve the same way.
+/// result; the load iterations share one roll solve the same way. `vertical_start`: the
+/// vertical forces to solve the contact for first (WheelsetForces::vertical_forces of a
+/// nearby state), which saves load iterations; unset: the loads.
 WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionState& state,
                                double load_left, double load_right,
                                const RunningConditions& running,
-                               std::optional<contactgeom::KnownRoll> known_roll = std::nullopt);
+                               std::optional<contactgeom::KnownRoll> known_roll = std::nullopt,
+                               std::optional<std::array<double, 2>> vertical_start = std::nullopt);
 
 /// The motion of wheel `side` (0 left, 1 right) in its own frame for kinematic_creepages.
 contactgeom::WheelsetMotion wheel_motion(const WheelsetMotionState& state,
