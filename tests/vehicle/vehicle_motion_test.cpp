@@ -88,7 +88,22 @@ TEST(VehicleMotion, StraightTrackWithoutIrregularitiesStaysCentred) {
     }
   }
   EXPECT_EQ(compared, 16 * 4 * 4);
-  EXPECT_GT(m.steps, 100);
+}
+
+TEST(VehicleMotion, SamplesThePieceAtEqualIntervalsBothEndsIncluded) {
+  const VehicleCurving centred = steady(0.0, 0.0, 30.0);
+  // 155 m at no more than 10 m: 16 intervals of 9.6875 m, 17 samples.
+  const VehicleMotion m = simulate(one_section(0.0, 0.0, 30.0), 155.0, {}, placement_of(centred));
+  ASSERT_EQ(m.samples.size(), 17u);
+  for (std::size_t i = 0; i < m.samples.size(); ++i) {
+    EXPECT_NEAR(m.samples[i].distance, 100.0 + 9.6875 * static_cast<double>(i), 1e-9);
+    EXPECT_NEAR(m.samples[i].time, 9.6875 * static_cast<double>(i) / 30.0, 1e-12);
+    // Each wheelset at its own place along the route.
+    const Vehicle v = default_vehicle();
+    for (int k = 0; k < kWheelsets; ++k)
+      EXPECT_NEAR(m.samples[i].wheelsets[k].distance, m.samples[i].distance + v.wheelset_x(k),
+                  1e-9);
+  }
 }
 
 // Perturbed: every wheelset 1 mm towards the inner rail, its yaw zeroed and its spin 0.1 %
@@ -187,9 +202,9 @@ TEST(VehicleMotion, AUniformCrossLevelsWeightIsCarriedByTheRails) {
   const Vehicle v = default_vehicle();
   const double sin_tilt = cross_level / 1.5;
   // At rest on the tilted track the rails push the vehicle up the slope by its weight's
-  // in-plane part, M g sin(tilt); the dynamics has settled to 1e-14 of it (measured), 1e-9
-  // asked.
-  EXPECT_NEAR(lateral, v.mass() * kGravity * sin_tilt, 1e-9 * v.mass() * kGravity * sin_tilt);
+  // in-plane part, M g sin(tilt); the dynamics has settled to 2e-14 of it (measured), 1e-7
+  // asked (the slowest sway's remainder may differ between builds).
+  EXPECT_NEAR(lateral, v.mass() * kGravity * sin_tilt, 1e-7 * v.mass() * kGravity * sin_tilt);
   EXPECT_NEAR(loads, v.mass() * kGravity * std::sqrt(1.0 - sin_tilt * sin_tilt), 1e-9 * loads);
   // The higher rail carries less.
   for (const WheelsetMotionSample& w : end.wheelsets) EXPECT_LT(w.load_left, w.load_right);

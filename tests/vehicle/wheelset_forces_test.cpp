@@ -75,6 +75,10 @@ TEST(WheelsetForces, LoadToleranceAndVerticalStart) {
   EXPECT_GT(cold.load_iterations, 1);
   EXPECT_NEAR(warm.wheels[0].Q, 60e3, 1e-4 * 60e3);
   EXPECT_NEAR(warm.wheels[1].Q, 50e3, 1e-4 * 50e3);
+  // The same forces as a cold start at the new state, to what the load tolerance moves them.
+  const WheelsetForces again = wheelset_forces(model, state, 60e3, 50e3, running);
+  EXPECT_NEAR(warm.lateral, again.lateral, 1e-4 * 60e3);
+  EXPECT_NEAR(warm.Fx_axle, again.Fx_axle, 1e-4 * 60e3);
   model.load_tolerance = 0.0;
   EXPECT_THROW(wheelset_forces(model, state, 60e3, 50e3, running), InputError);
 }

@@ -15,9 +15,9 @@
 ///   the track's curvature between the bodies (exact for a curvature linear in distance, as in
 ///   a clothoid), plus the dampers on its rate.
 /// - Track irregularities move the rails: a wheelset's contact sees its shift, yaw, lateral
-///   velocity and yaw rate relative to the rails' alignment, and its wheels' loads and its
-///   in-plane share of gravity follow the cant plus the cross-level. The irregularities'
-///   slope and curvature are central differences over kIrregularityStencil_m, which smooths
+///   velocity relative to the rails' alignment, and its wheels' loads and its in-plane share
+///   of gravity follow the cant plus the cross-level. The irregularities' slope is a central
+///   difference over +-kIrregularityStencil_m (or the record's widest spacing), which smooths
 ///   wavelengths below a few metres (the shortest a generated record has is 3 m).
 /// - Wheel loads as the quasi-static model shares them (each wheelset its own mass, half its
 ///   bogie's and a quarter of the car body's; moment balance about the rails), at the cant and
@@ -51,7 +51,9 @@ struct VehicleMotionOptions {
   /// forces (lateral, yaw and spin, per wheelset; it grows as 1 / V) at the start and on the
   /// centred wheelset in pure rolling, where they are stiffest; at most 2 ms.
   double time_step = 0.0;
-  double sample_distance = 0.5;  ///< distance between samples [m], > 0
+  /// Longest distance between samples [m], > 0: the piece is sampled at equal intervals no
+  /// longer than this, both its ends included.
+  double sample_distance = 0.5;
   /// Distance run before the first sample [m], >= 0: the start's transient dies out (the
   /// irregularities are best faded in over it, IrregularitySpec::run_in).
   double run_in = 0.0;
@@ -68,8 +70,9 @@ struct VehicleMotionOptions {
 /// One wheelset at one sample.
 struct WheelsetMotionSample {
   double distance = 0.0;  ///< of the wheelset along the route [m]
-  /// Relative to the rails (irregularities included): dy, yaw (angle of attack), spin,
-  /// lateral velocity and yaw rate.
+  /// As the contact sees it: dy, yaw (angle of attack) and lateral velocity relative to the
+  /// rails (irregularities included), the spin, and the yaw rate against the design track whose
+  /// radius `running` gives (the longitudinal creepages follow the wheelset's absolute turning).
   WheelsetMotionState state;
   double load_left = 0.0;     ///< Q the left wheel carries [N]
   double load_right = 0.0;    ///< Q the right wheel carries [N]
@@ -101,8 +104,10 @@ struct VehicleMotion {
 /// The piece of `route` the car body's centre runs from `start_m` over `length_m` [m] (plus
 /// options.run_in before the first sample, so the simulation starts at start_m - run_in), at
 /// the speed of the route at start_m. Each wheelset's track (curvature, cant, friction) is the
-/// route's at its own distance, clamped to the route's ends. `irregularities` (route distance;
-/// none where the record does not reach, or when empty) moves the rails. The motion starts from
+/// route's at its own distance, clamped to the route's ends. `irregularities` (route distance)
+/// moves the rails; outside the record (or with an empty one) the track is ideal, so a record
+/// should cover the piece and the run-in plus the vehicle's length (a wheelset crossing its end
+/// sees a step). The motion starts from
 /// `start`'s placement (e.g. the quasi-static solution, placement_of) with every rate zero.
 /// Throws InputError on bad input; a motion that leaves the rails is reported in the result.
 VehicleMotion simulate_vehicle(const Vehicle& vehicle,

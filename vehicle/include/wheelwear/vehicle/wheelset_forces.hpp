@@ -123,11 +123,11 @@ struct WheelsetForces {
 
 /// The forces of the rails on the wheelset at `state`, each wheel carrying `load_left`,
 /// `load_right` [N] (its Q, creep forces included: the vertical force the contact solves for is
-/// corrected by the creep forces' vertical part until Q meets the load to 1e-9). Throws
-/// InputError on bad input; a wheel whose contact fails keeps its status and no forces.
-/// `known_roll`: the roll an earlier evaluation at the same dy and yaw found
-/// (WheelsetForces::contact.known_roll), which spares the roll iteration without changing the
-/// result; the load iterations share one roll solve the same way. `vertical_start`: the
+/// corrected by the creep forces' vertical part until Q meets the load to
+/// WheelsetModel::load_tolerance). Throws InputError on bad input; a wheel whose contact fails
+/// keeps its status and no forces. `known_roll`: the roll an earlier evaluation at the same dy and
+/// yaw found (WheelsetForces::contact.known_roll), which spares the roll iteration without changing
+/// the result; the load iterations share one roll solve the same way. `vertical_start`: the
 /// vertical forces to solve the contact for first (WheelsetForces::vertical_forces of a
 /// nearby state), which saves load iterations; unset: the loads.
 WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionState& state,
