@@ -37,33 +37,29 @@ class DesignTrack {
     for (std::size_t i = 0; i < starts_.size(); ++i) begin_.push_back(track_at(route, starts_[i]));
   }
 
-  // The track at `s`, clamped to the route's ends.
-  TrackPoint at(double s) const {
+  // The track at `s`, clamped to the route's ends, and d(curvature)/ds there [1/m^2]
+  // (constant within a section, 0 except in transitions).
+  struct Point {
+    TrackPoint track;
+    double curvature_slope = 0.0;
+  };
+
+  Point at(double s) const {
     s = std::clamp(s, 0.0, total_);
     const auto after = std::upper_bound(starts_.begin(), starts_.end(), s);
     const auto i = static_cast<std::size_t>(after - starts_.begin()) - 1;
-    TrackPoint p = begin_[i];
+    Point out{begin_[i]};
+    TrackPoint& p = out.track;
     p.offset_m = s - starts_[i];
     const RouteSection& section = route_.sections[i];
     if (section.kind == SectionKind::transition) {
+      out.curvature_slope = (section.curvature() - p.curvature_1_m) / section.length_m;
       const double t = std::clamp(p.offset_m / section.length_m, 0.0, 1.0);
       p.curvature_1_m += t * (section.curvature() - p.curvature_1_m);
       p.cant_m += t * (section.cant_m - p.cant_m);
       p.radius_m = p.curvature_1_m == 0.0 ? 0.0 : 1.0 / p.curvature_1_m;
     }
-    return p;
-  }
-
-  double curvature(double s) const { return at(s).curvature_1_m; }
-
-  // d(curvature)/ds [1/m^2]: constant within a section, 0 except in transitions.
-  double curvature_slope(double s) const {
-    s = std::clamp(s, 0.0, total_);
-    const auto after = std::upper_bound(starts_.begin(), starts_.end(), s);
-    const auto i = static_cast<std::size_t>(after - starts_.begin()) - 1;
-    const RouteSection& section = route_.sections[i];
-    if (section.kind != SectionKind::transition) return 0.0;
-    return (section.curvature() - begin_[i].curvature_1_m) / section.length_m;
+    return out;
   }
 
  private:
@@ -124,9 +120,10 @@ struct JointMotion {
   double lateral = 0.0, yaw = 0.0, lateral_rate = 0.0, yaw_rate = 0.0;
 };
 
-// The rails' and the suspension's inputs needed per body.
+// The design track under one body.
 struct BodyTrack {
-  double s = 0.0;      // along the route
+  double s = 0.0;  // along the route
+  TrackPoint point;
   double kappa = 0.0;  // design curvature
   double kappa_slope = 0.0;
   double theta = 0.0;  // design tilt
@@ -172,10 +169,11 @@ class VehicleSystem {
     for (int b = 0; b < kBodies; ++b) {
       BodyTrack& bt = tracks[b];
       bt.s = car_body_distance(t) + xs_[b];
-      const TrackPoint p = track_.at(bt.s);
-      bt.kappa = p.curvature_1_m;
-      bt.kappa_slope = track_.curvature_slope(bt.s);
-      bt.theta = cant_tilt(p, kCantBase);
+      const DesignTrack::Point p = track_.at(bt.s);
+      bt.point = p.track;
+      bt.kappa = p.track.curvature_1_m;
+      bt.kappa_slope = p.curvature_slope;
+      bt.theta = cant_tilt(p.track, kCantBase);
     }
     std::array<double, kPositions> force{};  // lateral force and yaw moment per body
     for (int b = 0; b < kBodies; ++b)
@@ -200,9 +198,11 @@ class VehicleSystem {
             moment);
     }
     for (int k = 0; k < kWheelsets; ++k) {
-      const WheelsetMotionSample c = contact(x, tracks, k);
       const int b = wheelset_body(k);
-      force[2 * b] += c.forces.lateral + carried_lateral(tracks, k);
+      const RailOffset rails = rail_offset(irregular_, stencil_, tracks[b].s);
+      const double tilt = wheelset_tilt(tracks[b], rails);
+      const WheelsetMotionSample c = contact(x, tracks[b], rails, tilt, k);
+      force[2 * b] += c.forces.lateral + carried_lateral(tracks[b], tilt);
       force[2 * b + 1] += c.forces.yaw_moment;
       dxdt[spin_index(k)] = -c.forces.axle_torque / v_.wheelset.spin_inertia;
       if (sample) sample->wheelsets[k] = c;
@@ -259,19 +259,16 @@ class VehicleSystem {
     force[2 * parent + 1] -= moment + d * lateral;
   }
 
-  // The tilt under wheelset k: the cant plus the cross-level.
-  double wheelset_tilt(const std::array<BodyTrack, kBodies>& tracks, int k,
-                       const RailOffset& rails) const {
-    return tracks[wheelset_body(k)].theta +
-           std::asin(std::clamp(rails.cross_level / kCantBase, -1.0, 1.0));
+  // The tilt under a wheelset: the cant plus the cross-level.
+  static double wheelset_tilt(const BodyTrack& t, const RailOffset& rails) {
+    return t.theta + std::asin(std::clamp(rails.cross_level / kCantBase, -1.0, 1.0));
   }
 
   // The weight the wheelset carries (its bogie's half, the car body's quarter) comes through
   // the suspension normal to the design track; in the plane of the rails, tilted further by
   // the cross-level, it has the lateral part -W sin(cross-level tilt).
-  double carried_lateral(const std::array<BodyTrack, kBodies>& tracks, int k) const {
-    const BodyTrack& t = tracks[wheelset_body(k)];
-    const double extra = wheelset_tilt(tracks, k, rails_[k]) - t.theta;
+  double carried_lateral(const BodyTrack& t, double tilt) const {
+    const double extra = tilt - t.theta;
     const double carried =
         normal(v_.car_body.mass / kWheelsets + 0.5 * v_.bogie.mass, speed_, t.kappa, t.theta);
     // The wheelset's own mass feels the full tilt: move its design-tilt share over.
@@ -280,14 +277,12 @@ class VehicleSystem {
     return -carried * std::sin(extra) + own;
   }
 
-  // The rails' forces on wheelset k.
-  WheelsetMotionSample contact(const State& x, const std::array<BodyTrack, kBodies>& tracks,
-                               int k) {
+  // The rails' forces on wheelset k on the design track `t`, its rails at `rails`, tilted by
+  // `tilt`.
+  WheelsetMotionSample contact(const State& x, const BodyTrack& t, const RailOffset& rails,
+                               double tilt, int k) {
     const int b = wheelset_body(k);
-    const BodyTrack& t = tracks[b];
-    const RailOffset rails = rail_offset(irregular_, stencil_, t.s);
-    rails_[k] = rails;
-    const TrackPoint p = track_.at(t.s);
+    const TrackPoint& p = t.point;
     WheelsetMotionSample c;
     c.distance = t.s;
     c.state.dy = x[2 * b] - rails.alignment;
@@ -303,7 +298,6 @@ class VehicleSystem {
     c.running.friction = p.friction_top;
     c.running.friction_flange = p.friction_flange;
     // Loads at the tilt under the wheelset, the bodies' shifts taken against its rails.
-    const double theta = wheelset_tilt(tracks, k, rails);
     struct Share {
       double mass, height, y;
     };
@@ -313,9 +307,9 @@ class VehicleSystem {
         Share{v_.wheelset.body.mass, v_.wheelset.body.cg_height, x[2 * b]}};
     double weight = 0.0, moment = 0.0;
     for (const Share& s : shares) {
-      const double w = normal(s.mass, speed_, t.kappa, theta);
+      const double w = normal(s.mass, speed_, t.kappa, tilt);
       weight += w;
-      moment += w * (s.y - rails.alignment) + s.height * in_plane(s.mass, speed_, t.kappa, theta);
+      moment += w * (s.y - rails.alignment) + s.height * in_plane(s.mass, speed_, t.kappa, tilt);
     }
     const double difference = moment / models_[k].lateral_arm;
     c.load_left = 0.5 * (weight + difference);
@@ -348,9 +342,7 @@ class VehicleSystem {
   double stencil_;
   double s0_, speed_;
   std::array<double, kBodies> xs_{}, masses_{}, inertias_{};
-  // Per wheelset: the rails under it and the vertical forces of its last contact solve (the
-  // next solve's start).
-  std::array<RailOffset, kWheelsets> rails_{};
+  // Per wheelset: the vertical forces of its last contact solve (the next solve's start).
   std::array<std::optional<std::array<double, 2>>, kWheelsets> vertical_{};
   long evaluations_ = 0;
 };
@@ -371,7 +363,8 @@ State initial_state(const VehiclePlacement& start) {
   return x;
 }
 
-// The fastest decay rate of the creep forces [1/s] of wheelset k at `state`: the lateral
+// The fastest decay rate of the creep forces [1/s] of a wheelset at `state` (with the loads
+// and running conditions of `c`): the lateral
 // force's rate of change with the lateral velocity over the mass, the yaw moment's with the yaw
 // rate over the yaw inertia and the axle torque's with the spin over the spin inertia.
 double fastest_rate(const Vehicle& v, const WheelsetModel& model, const WheelsetMotionSample& c,
