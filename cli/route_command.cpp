@@ -1,5 +1,6 @@
-// `wheelwear route`: the vehicle on its route alone, without wear: every running condition
-// solved quasi-statically on the scene's profiles, and the load collective its states make.
+// `wheelwear route`: the vehicle on its route alone, without wear: every constant curve solved
+// quasi-statically and every tangent and transition simulated in time on the scene's profiles,
+// and the load collective its states make.
 
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -32,6 +33,7 @@ struct RouteArgs {
   std::string route;
   std::string output;
   bool overwrite = false;
+  bool quasi_static = false;
   bool json = false;
   int threads = 0;
 };
@@ -48,6 +50,7 @@ pipeline::VehicleRun vehicle_run(const pipeline::Scene& scene, const RouteArgs& 
   }
   if (!args.vehicle.empty()) run.vehicle = vehicle::read_vehicle(args.vehicle);
   if (!args.route.empty()) run.route = vehicle::read_route(args.route);
+  if (args.quasi_static) run.time_domain.enabled = false;
   return run;
 }
 
@@ -67,6 +70,23 @@ CaseExtremes extremes(const vehicle::VehicleCurving& c) {
   return e;
 }
 
+// The time-domain pieces: per piece the leading wheelset's motion and the largest Y/Q.
+void print_pieces(const pipeline::VehicleCollective& v) {
+  std::printf("\n%-28s %7s %6s %7s %5s | %-27s | %6s\n", "time-domain piece", "length", "V",
+              "samples", "done", "leading wheelset dy rms/max", "Y/Q");
+  std::printf("%-28s %7s %6s %7s %5s | %-27s | %6s\n", "", "[m]", "[m/s]", "", "",
+              "[mm] / [mm], aoa rms [mrad]", "max");
+  for (std::size_t i = 0; i < v.pieces.size(); ++i) {
+    const pipeline::DynamicPiece& d = v.pieces[i];
+    const pipeline::PieceRun& r = v.piece_runs[i];
+    double y_over_q = 0.0;
+    for (double q : r.y_over_q) y_over_q = std::max(y_over_q, q);
+    std::printf("%-28.28s %7.0f %6.1f %7d %5s | %6.3f / %6.3f, %6.3f  | %6.3f\n", d.label.c_str(),
+                d.length_m, d.speed, r.samples[0], r.completed ? "yes" : "NO", r.dy_rms[0] * 1e3,
+                r.dy_max[0] * 1e3, r.yaw_rms[0] * 1e3, y_over_q);
+  }
+}
+
 void print_text(const pipeline::VehicleCollective& v, double seconds) {
   std::printf("%-28s %7s %6s %6s %6s %5s | %-23s | %6s %6s\n", "condition", "R [m]", "cant", "V",
               "share", "conv", "leading wheelset dy/aoa", "Y/Q", "angle");
@@ -82,8 +102,11 @@ void print_text(const pipeline::VehicleCollective& v, double seconds) {
                 c.wheelsets[0].state.dy * 1e3, c.wheelsets[0].state.yaw * 1e3, e.y_over_q,
                 e.contact_angle * 180.0 / std::numbers::pi);
   }
-  std::printf("%zu conditions in %.1f s; %d did not converge (their last iterate is shown)\n",
-              v.cases.size(), seconds, v.unconverged);
+  if (!v.pieces.empty()) print_pieces(v);
+  std::printf(
+      "%zu conditions and %zu time-domain pieces in %.1f s; %d conditions did not "
+      "converge (their last iterate is shown), %d pieces stopped early\n",
+      v.cases.size(), v.pieces.size(), seconds, v.unconverged, v.incomplete);
 }
 
 void print_json(const pipeline::VehicleCollective& v, double seconds) {
@@ -128,11 +151,39 @@ void print_json(const pipeline::VehicleCollective& v, double seconds) {
                         .add_raw("wheelsets", json_array(wheelsets))
                         .str());
   }
+  std::vector<std::string> pieces;
+  for (std::size_t i = 0; i < v.pieces.size(); ++i) {
+    const pipeline::DynamicPiece& d = v.pieces[i];
+    const pipeline::PieceRun& r = v.piece_runs[i];
+    std::vector<std::string> wheelsets;
+    for (std::size_t k = 0; k < vehicle::kWheelsets; ++k)
+      wheelsets.push_back(JsonObject()
+                              .add("samples", r.samples[k])
+                              .add("dy_rms", r.dy_rms[k])
+                              .add("dy_max", r.dy_max[k])
+                              .add("angle_of_attack_rms", r.yaw_rms[k])
+                              .add("Y_over_Q_max", r.y_over_q[k])
+                              .str());
+    pieces.push_back(JsonObject()
+                         .add("label", d.label)
+                         .add("section", static_cast<int>(d.section + 1))
+                         .add("start", d.start_m)
+                         .add("length", d.length_m)
+                         .add("speed", d.speed)
+                         .add("share", d.share)
+                         .add("completed", r.completed)
+                         .add("message", r.message)
+                         .add("time_step", r.time_step)
+                         .add_raw("wheelsets", json_array(wheelsets))
+                         .str());
+  }
   std::cout << JsonObject()
                    .add("elapsed", seconds)
                    .add("unconverged", v.unconverged)
+                   .add("incomplete_pieces", v.incomplete)
                    .add("states", static_cast<int>(v.states.size()))
                    .add_raw("cases", json_array(cases))
+                   .add_raw("pieces", json_array(pieces))
                    .str()
             << '\n';
 }
@@ -173,12 +224,15 @@ void add_route_command(CLI::App& app) {
   auto args = std::make_shared<RouteArgs>();
   CLI::App* cmd = app.add_subcommand(
       "route",
-      "The vehicle on its route without wear: the quasi-static state of the whole vehicle in\n"
-      "every running condition of the route (each curve and tangent, each transition at its\n"
-      "midpoint; alike conditions once) on the scene's wheel and rail profiles, as a wear run\n"
-      "solves it at its steps (docs/vehicle.md). Prints per condition the leading wheelset's\n"
-      "shift and angle of attack, the largest Y/Q and contact angle; -o writes the load\n"
-      "collective the states make (CSV, the columns of docs/scenes.md) for a scene or a study.\n"
+      "The vehicle on its route without wear, on the scene's wheel and rail profiles, as a wear\n"
+      "run solves it at its steps (docs/vehicle.md): the quasi-static state of the whole vehicle\n"
+      "in every constant curve (alike curves once), and a time-domain simulation with the\n"
+      "track's irregularities through a stretch of every tangent and through every transition\n"
+      "(the scene's [time_domain]; --quasi-static: every section quasi-statically, each\n"
+      "transition at its midpoint). Prints per curve the leading wheelset's shift and angle of\n"
+      "attack, the largest Y/Q and contact angle, and per piece its motion's rms and extremes;\n"
+      "-o writes the load collective the states make (CSV, the columns of docs/scenes.md) for a\n"
+      "scene or a study.\n"
       "Without SCENE, or when it has no [vehicle]: the built-in coach on the built-in route.\n"
       "Example: wheelwear route -o route_states.csv");
   cmd->add_option("scene", args->scene,
@@ -191,7 +245,9 @@ void add_route_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->output, "write the states as a load-collective CSV file");
   cmd->add_flag("--overwrite", args->overwrite, "replace an existing output file");
-  cmd->add_flag("--json", args->json, "print every condition's solution as JSON");
+  cmd->add_flag("--quasi-static", args->quasi_static,
+                "every section quasi-statically, without the time domain");
+  cmd->add_flag("--json", args->json, "print every condition's and piece's solution as JSON");
   cmd->add_option("--threads", args->threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   cmd->callback([args] { route(*args); });

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -38,6 +39,7 @@ using detail::max_drop;
 using detail::profile_spec;
 using detail::resolve;
 using detail::scene_tangential_method;
+using detail::time_domain_irregularities;
 using detail::wheel_origin;
 
 }  // namespace
@@ -323,6 +325,37 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                             run.route = file ? vehicle::read_route(*file) : vehicle::default_route();
                             run.route_file = file ? file->string() : std::string();
                           }}})},
+      {"time_domain",
+       section("time_domain",
+               {{"enabled",
+                 [&](const auto& n, const auto& k) {
+                   vehicle_run().time_domain.enabled = boolean(n, k);
+                 }},
+                {"irregularities",
+                 [&](const auto& n, const auto& k) {
+                   time_domain_irregularities(n, k, base_directory, vehicle_run().time_domain);
+                 }},
+                {"seed",
+                 [&](const auto& n, const auto& k) {
+                   vehicle_run().time_domain.seed = static_cast<std::uint64_t>(integer(
+                       n, k, 0, std::numeric_limits<int>::max(),
+                       "the base seed of the generated irregularities"));
+                 }},
+                {"tangent_length_m",
+                 [&](const auto& n, const auto& k) {
+                   vehicle_run().time_domain.tangent_length =
+                       number(n, k, 10.0, 1e5, "the simulated stretch of each tangent in m");
+                 }},
+                {"run_in_m",
+                 [&](const auto& n, const auto& k) {
+                   vehicle_run().time_domain.run_in =
+                       number(n, k, 0.0, 1e4, "the run before each stretch's first sample in m");
+                 }},
+                {"sample_distance_m",
+                 [&](const auto& n, const auto& k) {
+                   vehicle_run().time_domain.sample_distance =
+                       number(n, k, 0.01, 100.0, "the distance between two samples in m");
+                 }}})},
       {"load_collective",
        section("load_collective",
                {{"file",

@@ -64,6 +64,33 @@ std::optional<std::filesystem::path> builtin_or_file(const toml::node& node, con
   return file;
 }
 
+void time_domain_irregularities(const toml::node& node, const std::string& key,
+                                const std::filesystem::path& base, TimeDomainKeys& keys) {
+  const std::string name = text(node, key);
+  if (name == "none" || name == "erri-low" || name == "erri-high") {
+    keys.irregularities = name == "none"       ? IrregularitySource::none
+                          : name == "erri-low" ? IrregularitySource::erri_low
+                                               : IrregularitySource::erri_high;
+    keys.measured = {};
+    keys.irregularity_file.clear();
+    return;
+  }
+  const std::filesystem::path file = resolve(base, name);
+  if (!std::filesystem::is_regular_file(file))
+    throw InputError(where(node.source(), key) + " = \"" + name + "\": no such file (looked for " +
+                     file.string() +
+                     "); give erri-low or erri-high (ERRI B176 spectra, generated "
+                     "per section from [time_domain] seed), none (ideal track) or a measured "
+                     "irregularity file (docs/track_irregularities.md)");
+  try {
+    keys.measured = vehicle::read_irregularities(file);
+  } catch (const InputError& e) {
+    throw InputError(where(node.source(), key) + ": " + e.what());
+  }
+  keys.irregularities = IrregularitySource::file;
+  keys.irregularity_file = file.string();
+}
+
 profiles::WheelOrigin wheel_origin(const toml::node& node, const std::string& key) {
   const std::string name = text(node, key);
   const auto origin = profiles::parse_wheel_origin(name);

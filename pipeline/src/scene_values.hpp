@@ -40,6 +40,11 @@ std::optional<std::filesystem::path> builtin_or_file(const toml::node& node, con
                                                      std::string_view builtin,
                                                      std::string_view file_kind);
 
+// [time_domain] irregularities: "erri-low", "erri-high", "none" or a measured file (read here,
+// refused naming the key if it cannot be).
+void time_domain_irregularities(const toml::node& node, const std::string& key,
+                                const std::filesystem::path& base, TimeDomainKeys& keys);
+
 // [wheel] origin: "auto", "taping-line" or "internal-face" (profiles::WheelOrigin).
 profiles::WheelOrigin wheel_origin(const toml::node& node, const std::string& key);
 

@@ -219,6 +219,135 @@ void add_vehicle_cases(GroupRecord& g, const VehicleCollective& v) {
 
 namespace {
 
+// Per piece, one value of each wheelset (shape [pieces, 4]).
+template <class Value>
+std::vector<double> per_piece_wheelset(const VehicleCollective& v, Value value) {
+  std::vector<double> out;
+  for (const PieceRun& r : v.piece_runs)
+    for (std::size_t k = 0; k < vehicle::kWheelsets; ++k) out.push_back(value(r, k));
+  return out;
+}
+
+// A message as one line of a text dataset.
+std::string one_line(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
+
+}  // namespace
+
+void add_vehicle_pieces(GroupRecord& g, const VehicleCollective& v) {
+  if (v.pieces.empty()) return;
+  const std::size_t n = v.pieces.size();
+  const std::string p = "vehicle/pieces/";
+  std::string labels, messages;
+  for (std::size_t i = 0; i < n; ++i) {
+    labels += v.pieces[i].label + '\n';
+    messages += one_line(v.piece_runs[i].message) + '\n';
+  }
+  g.texts.push_back({p + "label", labels, "the route section each piece belongs to"});
+  g.texts.push_back(
+      {p + "message", messages, "why a piece's simulation stopped early, else empty"});
+  const auto per_piece = [&](const std::string& name, auto value, const std::string& units,
+                             const std::string& description) {
+    std::vector<double> values;
+    for (std::size_t i = 0; i < n; ++i) values.push_back(value(v.pieces[i], v.piece_runs[i]));
+    g.arrays.push_back(vector(p + name, std::move(values), units, description));
+  };
+  using D = DynamicPiece;
+  per_piece(
+      "section", [](const D& d, const PieceRun&) { return d.section + 1.0; }, "1",
+      "the route section (1-based)");
+  per_piece(
+      "start_m", [](const D& d, const PieceRun&) { return d.start_m; }, "m",
+      "where the simulated stretch starts along the route");
+  per_piece(
+      "length_m", [](const D& d, const PieceRun&) { return d.length_m; }, "m",
+      "length of the stretch");
+  per_piece(
+      "share", [](const D& d, const PieceRun&) { return d.share; }, "1",
+      "share of the route's length its samples stand for");
+  per_piece(
+      "speed_m_s", [](const D& d, const PieceRun&) { return d.speed; }, "m/s", "running speed");
+  per_piece(
+      "completed", [](const D&, const PieceRun& r) { return r.completed ? 1.0 : 0.0; }, "1",
+      "1 when the simulation ran through the whole stretch");
+  per_piece(
+      "time_step", [](const D&, const PieceRun& r) { return r.time_step; }, "s",
+      "integration step");
+  per_piece(
+      "steps", [](const D&, const PieceRun& r) { return static_cast<double>(r.steps); }, "1",
+      "integration steps");
+  const std::vector<std::size_t> ws{n, vehicle::kWheelsets};
+  using R = PieceRun;
+  g.arrays.push_back(
+      shaped(p + "samples",
+             per_piece_wheelset(v, [](const R& r, std::size_t k) { return 1.0 * r.samples[k]; }),
+             ws, "1", "states sampled in the stretch [piece, wheelset in order of travel]"));
+  g.arrays.push_back(shaped(
+      p + "dy_rms", per_piece_wheelset(v, [](const R& r, std::size_t k) { return r.dy_rms[k]; }),
+      ws, "m", "root mean square of the wheelset's shift [piece, wheelset]"));
+  g.arrays.push_back(shaped(
+      p + "dy_max", per_piece_wheelset(v, [](const R& r, std::size_t k) { return r.dy_max[k]; }),
+      ws, "m", "largest |shift| of the wheelset [piece, wheelset]"));
+  g.arrays.push_back(
+      shaped(p + "angle_of_attack_rms",
+             per_piece_wheelset(v, [](const R& r, std::size_t k) { return r.yaw_rms[k]; }), ws,
+             "rad", "root mean square of the wheelset's angle of attack [piece, wheelset]"));
+  g.arrays.push_back(
+      shaped(p + "Y_over_Q_max",
+             per_piece_wheelset(v, [](const R& r, std::size_t k) { return r.y_over_q[k]; }), ws,
+             "1", "largest Y/Q of the wheelset's two wheels [piece, wheelset]"));
+}
+
+std::vector<PieceRun> read_vehicle_pieces(const ResultsFile& file, int step, std::size_t pieces) {
+  if (pieces == 0) return {};
+  const std::string p = "vehicle/pieces/";
+  const std::size_t w = vehicle::kWheelsets;
+  auto read = [&](const std::string& name, std::size_t per_piece) {
+    std::vector<double> values = file.read_step_array(step, p + name);
+    if (values.size() != pieces * per_piece)
+      throw InputError("results file " + file.path().string() + ", step " + std::to_string(step) +
+                       ": " + p + name + " has " + std::to_string(values.size()) + " values, " +
+                       std::to_string(pieces * per_piece) +
+                       " expected; the scene's route or [time_domain] has changed, or the file "
+                       "is damaged: start a new run with -o");
+    return values;
+  };
+  const auto completed = read("completed", 1);
+  const auto time_step = read("time_step", 1);
+  const auto steps = read("steps", 1);
+  const auto samples = read("samples", w);
+  const auto dy_rms = read("dy_rms", w);
+  const auto dy_max = read("dy_max", w);
+  const auto yaw_rms = read("angle_of_attack_rms", w);
+  const auto y_over_q = read("Y_over_Q_max", w);
+  std::vector<std::string> messages;
+  std::istringstream text(
+      file.read_text(ResultsFile::step_group(step) + "/" + p + "message").value_or(""));
+  for (std::string line; std::getline(text, line);) messages.push_back(line);
+  messages.resize(pieces);
+  std::vector<PieceRun> out(pieces);
+  for (std::size_t i = 0; i < pieces; ++i) {
+    PieceRun& r = out[i];
+    r.completed = completed[i] != 0.0;
+    r.message = messages[i];
+    r.time_step = time_step[i];
+    r.steps = static_cast<long>(steps[i]);
+    for (std::size_t k = 0; k < w; ++k) {
+      r.samples[k] = static_cast<int>(samples[i * w + k]);
+      r.dy_rms[k] = dy_rms[i * w + k];
+      r.dy_max[k] = dy_max[i * w + k];
+      r.yaw_rms[k] = yaw_rms[i * w + k];
+      r.y_over_q[k] = y_over_q[i * w + k];
+    }
+  }
+  return out;
+}
+
+namespace {
+
 std::vector<std::optional<vehicle::VehiclePlacement>> read_vehicle_starts(const ResultsFile& file,
                                                                           int step) {
   const std::string p = "vehicle/cases/";

@@ -33,4 +33,12 @@ void add_vehicle_cases(GroupRecord& g, const VehicleCollective& vehicle);
 std::vector<vehicle::VehicleCurving> read_vehicle_cases(const ResultsFile& file, int step,
                                                         std::size_t cases);
 
+// vehicle/pieces/...: per time-domain piece its stretch, how its simulation went and per
+// wheelset its samples and the summary of its motion (PieceRun). Nothing for a run without.
+void add_vehicle_pieces(GroupRecord& g, const VehicleCollective& vehicle);
+
+// The pieces' runs as add_vehicle_pieces recorded them in step `step` (`pieces` of them).
+// Throws InputError when the step holds another number of pieces.
+std::vector<PieceRun> read_vehicle_pieces(const ResultsFile& file, int step, std::size_t pieces);
+
 }  // namespace wheelwear::pipeline::detail

@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <tuple>
@@ -29,6 +30,40 @@ std::string case_label(const vehicle::RouteSection& section, std::size_t index,
   return text;
 }
 
+// The running condition of the track at `point`, at `speed`.
+vehicle::SteadyCurve condition_at(const vehicle::TrackPoint& point, double speed) {
+  vehicle::SteadyCurve curve;
+  curve.running.speed = speed;
+  curve.running.curve_radius = point.radius_m;
+  curve.running.friction = point.friction_top;
+  curve.running.friction_flange = point.friction_flange;
+  curve.cant = point.cant_m;
+  return curve;
+}
+
+// Adds `c` to `cases`, or its share to the case of the same condition already there (which takes
+// its label if it was only a piece's start). Returns the case's index.
+std::size_t add_case(std::vector<RouteCase>& cases, RouteCase c) {
+  const CaseKey key = case_key(c.curve);
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    if (case_key(cases[k].curve) != key) continue;
+    if (cases[k].share == 0.0 && c.share > 0.0) cases[k].label = std::move(c.label);
+    cases[k].share += c.share;
+    return k;
+  }
+  cases.push_back(std::move(c));
+  return cases.size() - 1;
+}
+
+// The quasi-static case of section `i`: a constant section is the same everywhere, a
+// transition is taken at its midpoint.
+RouteCase section_case(const vehicle::Route& route, std::size_t i, double start, double total) {
+  const vehicle::RouteSection& section = route.sections[i];
+  const vehicle::TrackPoint point = vehicle::track_at(route, start + 0.5 * section.length_m);
+  return {case_label(section, i, point), condition_at(point, point.speed_m_s),
+          section.length_m / total};
+}
+
 }  // namespace
 
 std::vector<int> VehicleRun::worn_wheelsets() const {
@@ -40,32 +75,53 @@ std::vector<RouteCase> route_cases(const vehicle::Route& route) {
   const std::vector<double> starts = route.section_starts();
   const double total = route.total_length();
   std::vector<RouteCase> cases;
-  std::vector<CaseKey> keys;
-  for (std::size_t i = 0; i < route.sections.size(); ++i) {
-    const vehicle::RouteSection& section = route.sections[i];
-    // A constant section is the same everywhere; a transition is taken at its midpoint.
-    const vehicle::TrackPoint point = vehicle::track_at(route, starts[i] + 0.5 * section.length_m);
-    RouteCase c;
-    c.curve.running.speed = point.speed_m_s;
-    c.curve.running.curve_radius = point.radius_m;
-    c.curve.running.friction = point.friction_top;
-    c.curve.running.friction_flange = point.friction_flange;
-    c.curve.cant = point.cant_m;
-    c.share = section.length_m / total;
-    const CaseKey key = case_key(c.curve);
-    std::size_t k = 0;
-    while (k < keys.size() && keys[k] != key) ++k;
-    if (k < keys.size()) {
-      cases[k].share += c.share;
-      continue;
-    }
-    c.label = case_label(section, i, point);
-    keys.push_back(key);
-    cases.push_back(std::move(c));
-  }
+  for (std::size_t i = 0; i < route.sections.size(); ++i)
+    add_case(cases, section_case(route, i, starts[i], total));
   return cases;
 }
 
+RoutePlan route_plan(const vehicle::Route& route, const TimeDomainKeys& time_domain,
+                     const vehicle::Vehicle& vehicle) {
+  if (!time_domain.enabled) return {route_cases(route), {}};
+  require(std::isfinite(time_domain.tangent_length) && time_domain.tangent_length > 0.0,
+          "time-domain tangent length", time_domain.tangent_length, "must be positive (m)");
+  require(std::isfinite(time_domain.run_in) && time_domain.run_in >= 0.0, "time-domain run-in",
+          time_domain.run_in, "must not be negative (m)");
+  require(std::isfinite(time_domain.sample_distance) && time_domain.sample_distance > 0.0,
+          "time-domain sample distance", time_domain.sample_distance, "must be positive (m)");
+  const std::vector<double> starts = route.section_starts();
+  const double total = route.total_length();
+  // The leading and the trailing wheelset's places ahead of the car body's centre.
+  const double lead = vehicle.wheelset_x(0), trail = vehicle.wheelset_x(vehicle::kWheelsets - 1);
+  RoutePlan plan;
+  for (std::size_t i = 0; i < route.sections.size(); ++i) {
+    const vehicle::RouteSection& section = route.sections[i];
+    if (section.kind == vehicle::SectionKind::curve) {
+      add_case(plan.cases, section_case(route, i, starts[i], total));
+      continue;
+    }
+    DynamicPiece piece;
+    piece.section = i;
+    // A tangent is a stationary random track: a stretch at its middle, away from the
+    // transitions (simulated themselves), stands for all of it.
+    piece.length_m = section.kind == vehicle::SectionKind::tangent
+                         ? std::min(section.length_m, time_domain.tangent_length)
+                         : section.length_m;
+    piece.start_m = starts[i] + 0.5 * (section.length_m - piece.length_m);
+    piece.share = section.length_m / total;
+    piece.speed = section.speed_m_s;
+    piece.seed = vehicle::seed_for_section(time_domain.seed, i);
+    piece.sim_start_m = std::max(0.0, piece.start_m - lead);
+    piece.sim_length_m = piece.start_m + piece.length_m - trail - piece.sim_start_m;
+    const vehicle::TrackPoint start_point =
+        vehicle::track_at(route, std::max(0.0, piece.sim_start_m - time_domain.run_in));
+    piece.label = case_label(section, i, vehicle::track_at(route, piece.start_m));
+    piece.start_case = add_case(
+        plan.cases, {"start of " + piece.label, condition_at(start_point, piece.speed), 0.0});
+    plan.pieces.push_back(std::move(piece));
+  }
+  return plan;
+}
 vehicle::WheelsetModel wheelset_model(const StateKernel& kernel, const profiles::Profile& left,
                                       const profiles::Profile& right) {
   vehicle::WheelsetModel model{{kernel.pair(left), kernel.pair(right)}};
@@ -90,28 +146,35 @@ std::shared_ptr<const contactgeom::WheelsetContactTable> contact_table(
                                                                    grid);
 }
 
-WheelsetStateSpec wheelset_state(const RouteCase& route_case,
-                                 const vehicle::VehicleCurving& curving, int k, double weight) {
-  const vehicle::CurvingWheelset& w = curving.wheelsets[static_cast<std::size_t>(k)];
-  const vehicle::RunningConditions& running = route_case.curve.running;
+WheelsetStateSpec motion_state(const vehicle::WheelsetMotionState& state,
+                               const vehicle::WheelsetForces& forces,
+                               const vehicle::RunningConditions& running, std::string label,
+                               double weight) {
   WheelsetStateSpec s;
-  s.label = route_case.label + ", wheelset " + std::to_string(k + 1);
-  s.dy = w.state.dy;
-  s.yaw = w.state.yaw;
+  s.label = std::move(label);
+  s.dy = state.dy;
+  s.yaw = state.yaw;
   // The vertical forces the contact was solved for (Q less the creep forces' vertical part):
   // the kernel then meets the very contact the vehicle's balance used.
-  s.load_left = w.forces.contact.left.vertical_force;
-  s.load_right = w.forces.contact.right.vertical_force;
+  s.load_left = forces.contact.left.vertical_force;
+  s.load_right = forces.contact.right.vertical_force;
   s.speed = running.speed;
   s.curve_radius = running.curve_radius;
-  s.angular_velocity = w.state.spin;
-  s.yaw_rate = w.state.yaw_rate;
-  s.lateral_velocity = w.state.lateral_velocity;
-  s.roll = w.forces.contact.roll;
+  s.angular_velocity = state.spin;
+  s.yaw_rate = state.yaw_rate;
+  s.lateral_velocity = state.lateral_velocity;
+  s.roll = forces.contact.roll;
   s.friction = running.friction;
   s.friction_flange = running.rail_friction().flange;
   s.weight = weight;
   return s;
+}
+
+WheelsetStateSpec wheelset_state(const RouteCase& route_case,
+                                 const vehicle::VehicleCurving& curving, int k, double weight) {
+  const vehicle::CurvingWheelset& w = curving.wheelsets[static_cast<std::size_t>(k)];
+  return motion_state(w.state, w.forces, route_case.curve.running,
+                      route_case.label + ", wheelset " + std::to_string(k + 1), weight);
 }
 
 VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKernel& kernel,
@@ -120,7 +183,9 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
   require(wheels.size() == 1 || wheels.size() == 2, "worn wheel profiles",
           static_cast<double>(wheels.size()), "give one (shared) or two (left, right)");
   VehicleCollective out;
-  out.cases = route_cases(run.route);
+  RoutePlan plan = route_plan(run.route, run.time_domain, run.vehicle);
+  out.cases = std::move(plan.cases);
+  out.pieces = std::move(plan.pieces);
   if (previous)
     require(previous->curving.size() == out.cases.size(), "previous solution's cases",
             static_cast<double>(previous->curving.size()), "must be the route's");
@@ -148,9 +213,33 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
   for (std::size_t i = 0; i < out.cases.size(); ++i) {
     if (!out.curving[i].converged) ++out.unconverged;
     out.kept += kept[i];
+    if (out.cases[i].share == 0.0) continue;  // only starts a piece
     const double weight = out.cases[i].share / static_cast<double>(worn.size());
     for (int k : worn)
       out.states.push_back(wheelset_state(out.cases[i], out.curving[i], k, weight));
+  }
+  if (out.pieces.empty()) return out;
+
+  // Each piece is simulated from its start case's solution, independently of the others.
+  out.piece_runs.resize(out.pieces.size());
+  std::vector<std::vector<WheelsetStateSpec>> sampled(out.pieces.size());
+  tbb::parallel_for(std::size_t{0}, out.pieces.size(), [&](std::size_t p) {
+    const DynamicPiece& piece = out.pieces[p];
+    vehicle::VehicleMotionOptions options;
+    options.run_in = run.time_domain.run_in;
+    options.sample_distance = run.time_domain.sample_distance;
+    options.speed = piece.speed;
+    const vehicle::VehicleCurving& start = out.curving[piece.start_case];
+    const vehicle::VehicleMotion motion = vehicle::simulate_vehicle(
+        run.vehicle, models, run.route, piece.sim_start_m, piece.sim_length_m,
+        piece_irregularities(piece, run.time_domain, run.vehicle), vehicle::placement_of(start),
+        options);
+    sampled[p] =
+        piece_states(piece, motion, out.cases[piece.start_case], start, worn, out.piece_runs[p]);
+  });
+  for (std::size_t p = 0; p < out.pieces.size(); ++p) {
+    if (!out.piece_runs[p].completed) ++out.incomplete;
+    for (WheelsetStateSpec& s : sampled[p]) out.states.push_back(std::move(s));
   }
   return out;
 }

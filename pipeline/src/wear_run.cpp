@@ -293,8 +293,14 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       g.arrays.push_back(scalar("vehicle/depth_since_solve", depth_after, "m",
                                 "deepest wear since the vehicle's last solve, this step's "
                                 "included (an upper bound: the steps' deepest increments summed)"));
+      if (!carry.last.pieces.empty())
+        g.arrays.push_back(scalar("vehicle/incomplete_pieces",
+                                  static_cast<double>(carry.last.incomplete), "1",
+                                  "time-domain pieces whose simulation stopped early (the "
+                                  "vehicle left the rails); their samples up to there are used"));
       detail::add_collective(g, "collective/", carry.last.states);
       detail::add_vehicle_cases(g, carry.last);
+      detail::add_vehicle_pieces(g, carry.last);
       carry.depth_since_solve = depth_after;
     }
     if (scene.state_summaries) detail::add_state_summaries(g, cw.states);
@@ -418,7 +424,12 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   if (scene.vehicle_run) {
     VehicleCarry& carry = start.vehicle;
     carry.solved = true;
-    carry.last.cases = route_cases(scene.vehicle_run->route);
+    RoutePlan plan = route_plan(scene.vehicle_run->route, scene.vehicle_run->time_domain,
+                                scene.vehicle_run->vehicle);
+    carry.last.cases = std::move(plan.cases);
+    carry.last.pieces = std::move(plan.pieces);
+    carry.last.piece_runs = detail::read_vehicle_pieces(file, last, carry.last.pieces.size());
+    for (const PieceRun& r : carry.last.piece_runs) carry.last.incomplete += r.completed ? 0 : 1;
     carry.last.states = detail::read_collective(file, last, "collective/");
     // The cases' solved states as recorded: the records of the steps until the next solve,
     // and where that solve starts.

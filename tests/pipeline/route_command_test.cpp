@@ -49,7 +49,7 @@ bool same(double a, double b) {
 TEST_F(RouteCommandTest, WritesTheCollectiveTheRunWouldWearWith) {
   const fs::path csv = dir_ / "states.csv";
   const std::string base =
-      "route --route " + (dir_ / "route.toml").string() + " -o " + csv.string();
+      "route --quasi-static --route " + (dir_ / "route.toml").string() + " -o " + csv.string();
   const testing::CommandResult r = testing::run_wheelwear(base + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(testing::json_number(r.out, "states"), 12.0);
@@ -60,6 +60,7 @@ TEST_F(RouteCommandTest, WritesTheCollectiveTheRunWouldWearWith) {
   VehicleRun run;
   run.vehicle = vehicle::default_vehicle();
   run.route = vehicle::read_route(dir_ / "route.toml");
+  run.time_domain.enabled = false;
   const StateKernel kernel(scene);
   const profiles::Profile wheel =
       profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
@@ -102,6 +103,23 @@ TEST_F(RouteCommandTest, WritesTheCollectiveTheRunWouldWearWith) {
   EXPECT_NE(again.exit_code, 0);
   EXPECT_NE(again.err.find("--overwrite"), std::string::npos) << again.err;
   EXPECT_EQ(text_of(csv), before);
+}
+
+TEST_F(RouteCommandTest, SimulatesTheScenesTangentsAndTransitionsInTime) {
+  std::ofstream(dir_ / "scene.toml")
+      << "[vehicle]\nfile = \"default\"\n[route]\nfile = \"route.toml\"\n[time_domain]\n"
+         "tangent_length_m = 20\nrun_in_m = 10\nsample_distance_m = 2\n";
+  const testing::CommandResult r =
+      testing::run_wheelwear("route " + (dir_ / "scene.toml").string() + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(testing::json_number(r.out, "incomplete_pieces"), 0.0);
+  // The curve's 4 states, and per wheelset 30-31 samples of the 60 m transition and 10-11 of
+  // the tangent's 20 m at most 2 m apart (time_domain_run_test.cpp).
+  const double states = testing::json_number(r.out, "states").value_or(-1.0);
+  EXPECT_GE(states, 4.0 + 4.0 * (30.0 + 10.0));
+  EXPECT_LE(states, 4.0 + 4.0 * (31.0 + 11.0));
+  EXPECT_NE(r.out.find("\"pieces\": [{\"label\": \"section 2, transition"), std::string::npos)
+      << r.out.substr(0, 400);
 }
 
 TEST_F(RouteCommandTest, CollectiveCsvKeepsEveryLabelOneCellThatReadsBack) {

@@ -21,11 +21,14 @@
 namespace wheelwear::pipeline {
 namespace {
 
-std::string vehicle_scene(double distance, double step, double resolve_depth) {
+// Without `time_domain` keys every section is solved quasi-statically.
+std::string vehicle_scene(double distance, double step, double resolve_depth,
+                          const std::string& time_domain = "enabled = false\n") {
   return "[contact]\ngrid_nx = 12\ngrid_ny = 12\n[run]\ndistance_m = " + std::to_string(distance) +
          "\nstep_distance_m = " + std::to_string(step) +
          "\nmax_depth_step_m = 1e-3\n[vehicle]\nfile = \"default\"\nresolve_depth_m = " +
-         std::to_string(resolve_depth) + "\n[route]\nfile = \"route.toml\"\n";
+         std::to_string(resolve_depth) + "\n[route]\nfile = \"route.toml\"\n[time_domain]\n" +
+         time_domain;
 }
 
 TEST(RouteCases, DefaultRouteKeepsEverySectionsShare) {
@@ -62,6 +65,7 @@ void expect_kernel_meets_vehicle(bool contact_table, double slack) {
   run.vehicle = vehicle::default_vehicle();
   run.route = vehicle::parse_route(kShortRoute, "test route");
   run.contact_table = contact_table;
+  run.time_domain.enabled = false;
   const StateKernel kernel(scene);
   const profiles::Profile wheel = profiles::wheel_profile("S1002", 0.46, {});
   const VehicleCollective v = solve_vehicle_collective(run, kernel, {&wheel});
@@ -187,18 +191,35 @@ class VehicleRunTest : public WearRunTest {};
 
 TEST_F(VehicleRunTest, RecordsTheVehicleAndResumesToIdenticalResults) {
   write("route.toml", kShortRoute);
-  // Solved at every step (resolve depth 0), three steps of 1 km.
-  const std::string text = vehicle_scene(2e3, 1e3, 0.0);
+  // Solved at every step (resolve depth 0), three steps of 1 km; the transition and a short
+  // stretch of the tangent simulated in time, sampled every 2 m.
+  const std::string text =
+      vehicle_scene(2e3, 1e3, 0.0, "tangent_length_m = 20\nrun_in_m = 10\nsample_distance_m = 2\n");
   const fs::path reference = dir_ / "reference.h5", killed = dir_ / "killed.h5";
   run(text, reference);
   const ResultsFile ref = ResultsFile::read(reference);
   ASSERT_EQ(ref.completed_steps(), 3);
   for (int step = 0; step < 3; ++step) {
     EXPECT_EQ(ref.read_step_array(step, "vehicle/solved").at(0), 1.0);
-    EXPECT_EQ(ref.read_step_array(step, "vehicle/cases/dy").size(), 12u);  // 3 cases x 4
-    EXPECT_EQ(ref.read_step_array(step, "vehicle/cases/Q").size(), 24u);
+    // The curve, and the tangent that starts the tangent's piece (the transition's starts in
+    // the curve): 2 cases x 4 wheelsets.
+    EXPECT_EQ(ref.read_step_array(step, "vehicle/cases/dy").size(), 8u);
+    EXPECT_EQ(ref.read_step_array(step, "vehicle/cases/Q").size(), 16u);
+    EXPECT_EQ(ref.read_step_array(step, "vehicle/pieces/completed"),
+              (std::vector<double>{1.0, 1.0}));
+    // Every wheelset through the 60 m transition at most 2 m apart: 30 or 31 samples, as the
+    // car body's spacing (81.5 m over 41 intervals) falls on the stretch; the tangent's 20 m
+    // (41.5 m over 21 intervals): 10 or 11.
+    const auto samples = ref.read_step_array(step, "vehicle/pieces/samples");
+    ASSERT_EQ(samples.size(), 8u);
+    double sampled = 0.0;
+    for (std::size_t k = 0; k < 8; ++k) {
+      EXPECT_GE(samples[k], k < 4 ? 30.0 : 10.0) << k;
+      EXPECT_LE(samples[k], k < 4 ? 31.0 : 11.0) << k;
+      sampled += samples[k];
+    }
     const auto weight = ref.read_step_array(step, "collective/weight");
-    ASSERT_EQ(weight.size(), 12u);
+    ASSERT_EQ(static_cast<double>(weight.size()), 4.0 + sampled);
     double total = 0.0;
     for (double w : weight) total += w;
     EXPECT_NEAR(total, 1.0, 1e-12);

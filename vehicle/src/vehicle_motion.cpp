@@ -429,7 +429,9 @@ VehicleMotion simulate_vehicle(const Vehicle& vehicle,
   require(vehicle.wheelset.spin_inertia > 0.0, "wheelset spin inertia",
           vehicle.wheelset.spin_inertia,
           "must be positive for the time-domain simulation (kg m^2)");
-  const double speed = track_at(route, start_m).speed_m_s;
+  require(std::isfinite(options.speed) && options.speed >= 0.0 && options.speed <= 100.0, "speed",
+          options.speed, "must lie in [0, 100] m/s (0: the route's)");
+  const double speed = options.speed > 0.0 ? options.speed : track_at(route, start_m).speed_m_s;
   // Samples at equal intervals no longer than the sample distance, both ends included.
   const double intervals = std::ceil(length_m / options.sample_distance - 1e-9);
   require(intervals < 1e7, "samples", intervals,

@@ -31,7 +31,7 @@ namespace wheelwear::pipeline {
 /// 3: states dropped whole by reason (`failed_contacts` ... `dropped_patches` and their
 /// `_weight`s replace `failed_contacts`, `failed_weight`), per-state `drop_reason`, Nadal's
 /// `nadal_delta`, `Y_over_Q`, `nadal_limit`, status 6 past the flange, strip-wise forces.
-inline constexpr int kFormatVersion = 4;
+inline constexpr int kFormatVersion = 5;
 
 /// One dataset: values in row-major order with their shape ({} for a scalar, {n}, {rows, cols}).
 struct ArrayRecord {

@@ -2,6 +2,7 @@
 /// A wear-evolution scene: the wheel, the rail, the track, the contact and wear models, the load
 /// collective and the run's step control, read from a TOML file with unit-suffixed keys.
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -15,6 +16,7 @@
 #include "wheelwear/tangential/creep_types.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
 #include "wheelwear/vehicle/route.hpp"
+#include "wheelwear/vehicle/track_irregularities.hpp"
 #include "wheelwear/vehicle/vehicle.hpp"
 
 namespace wheelwear::pipeline {
@@ -74,6 +76,30 @@ enum class WheelsetSelection {
   leading,  ///< the leading wheelset of each bogie (the first and third in order of travel)
 };
 
+/// Where the track irregularities of the time-domain pieces come from.
+enum class IrregularitySource {
+  none,       ///< ideal track: the vehicle runs centred on tangents
+  erri_low,   ///< generated from ERRI B176 low level, seeded per section
+  erri_high,  ///< generated from ERRI B176 high level, seeded per section
+  file,       ///< measured, one record along the whole route (TimeDomainKeys::measured)
+};
+
+/// How a vehicle run simulates its route's tangents and transitions in time ([time_domain];
+/// docs/vehicle.md, "In the run"). Each tangent is represented by a stretch of
+/// `tangent_length` at its middle, each transition whole; a stretch is run from the
+/// quasi-static state `run_in` before it, and every wheelset is sampled every
+/// `sample_distance` while it runs through the stretch.
+struct TimeDomainKeys {
+  bool enabled = true;  ///< false: tangents and transitions quasi-statically, as curves
+  IrregularitySource irregularities = IrregularitySource::erri_low;
+  vehicle::TrackIrregularities measured;  ///< the record when irregularities is file
+  std::string irregularity_file;          ///< its resolved path, else empty
+  std::uint64_t seed = 1;                 ///< base seed; each section draws its own from it
+  double tangent_length = 200.0;          ///< simulated stretch of each tangent [m]
+  double run_in = 50.0;                   ///< run before a stretch's first sample [m]
+  double sample_distance = 0.5;           ///< longest distance between two samples [m]
+};
+
 /// A vehicle on a route, whose own steady states make each step's collective
 /// (vehicle_run.hpp).
 struct VehicleRun {
@@ -88,6 +114,8 @@ struct VehicleRun {
   /// Interpolate the wheels' contacts from a look-up table built on each solve's profiles
   /// (contactgeom::WheelsetContactTable) rather than solve every one directly.
   bool contact_table = true;
+  /// Tangents and transitions simulated in time with the track's irregularities.
+  TimeDomainKeys time_domain;
 
   /// The wheelsets (0..3, in order of travel) that wear the profile(s).
   std::vector<int> worn_wheelsets() const;

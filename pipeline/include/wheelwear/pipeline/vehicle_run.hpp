@@ -1,16 +1,19 @@
 #pragma once
-/// A run's load collective from the vehicle itself: the scene's vehicle solved quasi-statically
-/// on the current wheel profiles in every running condition of its route, each wheelset's
-/// steady state becoming a state of the collective (position, yaw, spin, loads and friction),
-/// weighted by the share of the route it stands for.
+/// A run's load collective from the vehicle itself, on the current wheel profiles: the scene's
+/// vehicle solved quasi-statically in the route's constant curves and simulated in time, with
+/// the track's irregularities, through its tangents and transitions; each wheelset's states
+/// become states of the collective (position, yaw, rates, spin, loads and friction), weighted by
+/// the share of the route they stand for. Manual: docs/vehicle.md, "In the run".
 ///
-/// The route is reduced to its running conditions: every constant curve and tangent as it is,
-/// every transition at its midpoint's curvature and cant (the quasi-static state there; its
-/// twist and the curvature's rate of change are left out); conditions that coincide (the same
-/// radius, cant, speed and friction) are solved once with their shares summed. Tangent track
-/// without irregularities gives the centred wheelset: the time-domain simulation with track
-/// irregularities is not part of the run (docs/vehicle.md, "In the run").
+/// Quasi-statically, the route is reduced to its running conditions: every constant curve as it
+/// is (and, without the time domain, every tangent, and every transition at its midpoint's
+/// curvature and cant); conditions that coincide (the same radius, cant, speed and friction) are
+/// solved once with their shares summed. In the time domain each tangent is represented by a
+/// stretch at its middle and each transition by itself (DynamicPiece), run from the quasi-static
+/// state of the track where the simulation starts.
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,18 +23,83 @@
 #include "wheelwear/vehicle/quasi_static_curving.hpp"
 #include "wheelwear/vehicle/route.hpp"
 #include "wheelwear/vehicle/vehicle.hpp"
+#include "wheelwear/vehicle/vehicle_motion.hpp"
 
 namespace wheelwear::pipeline {
 
-/// One running condition of the route.
+/// One running condition of the route, solved quasi-statically.
 struct RouteCase {
   std::string label;           ///< the first section's name (or kind and radius)
   vehicle::SteadyCurve curve;  ///< radius, cant, speed, rail-top and gauge-face friction
-  double share = 0.0;          ///< of the route's length [-]
+  /// Of the route's length [-]; 0 for a condition that only starts a time-domain piece, whose
+  /// states are not worn.
+  double share = 0.0;
 };
 
-/// The running conditions of `route` in order of first appearance; their shares sum to 1.
+/// A stretch of a tangent or transition the vehicle is simulated through.
+struct DynamicPiece {
+  std::string label;           ///< the section's name (or number and kind)
+  std::size_t section = 0;     ///< index into the route's sections
+  double start_m = 0.0;        ///< where the stretch starts along the route [m]
+  double length_m = 0.0;       ///< of the stretch [m], > 0
+  double share = 0.0;          ///< of the route's length its samples stand for: its section's
+  double speed = 0.0;          ///< its section's speed [m/s]
+  std::size_t start_case = 0;  ///< the RouteCase whose solution starts the simulation
+  std::uint64_t seed = 0;      ///< of its generated irregularities (seed_for_section)
+  /// The car body's centre runs from sim_start_m (every body at rest in the start case's
+  /// state) over sim_length_m (samples after the first run_in of it), so that each wheelset
+  /// runs through the whole stretch after at least the run-in.
+  double sim_start_m = 0.0;
+  double sim_length_m = 0.0;
+};
+
+/// What a route's wear step solves: its quasi-static cases and its time-domain pieces.
+struct RoutePlan {
+  std::vector<RouteCase> cases;
+  std::vector<DynamicPiece> pieces;
+};
+
+/// The running conditions of `route` in order of first appearance, every section solved
+/// quasi-statically; their shares sum to 1.
 std::vector<RouteCase> route_cases(const vehicle::Route& route);
+
+/// The plan of `route` for `vehicle` (its wheelsets' places set where the pieces' simulations
+/// start): without the time domain route_cases(route) and no pieces; with it the curves' cases
+/// (shares > 0), one piece per tangent and transition, and the cases that start the pieces
+/// (share 0 unless they coincide with a curve's). The shares of the worn cases and the pieces
+/// sum to 1. Throws InputError for time-domain keys out of range.
+RoutePlan route_plan(const vehicle::Route& route, const TimeDomainKeys& time_domain,
+                     const vehicle::Vehicle& vehicle);
+
+/// A piece's irregularities: the measured record, none, or generated over the stretch the
+/// wheelsets run through with the piece's seed, faded in over the run-in from where the leading
+/// wheelset starts (IrregularitySpec::run_in), in route distance.
+vehicle::TrackIrregularities piece_irregularities(const DynamicPiece& piece,
+                                                  const TimeDomainKeys& time_domain,
+                                                  const vehicle::Vehicle& vehicle);
+
+/// What a piece's simulation gave, per wheelset in order of travel where it applies.
+struct PieceRun {
+  bool completed = false;  ///< false: it stopped early (message), its samples up to there
+  std::string message;     ///< why it stopped early
+  double time_step = 0.0;  ///< [s]
+  long steps = 0;          ///< integration steps
+  std::array<int, vehicle::kWheelsets> samples{};      ///< taken in the stretch
+  std::array<double, vehicle::kWheelsets> dy_rms{};    ///< about zero [m]
+  std::array<double, vehicle::kWheelsets> dy_max{};    ///< largest |dy| [m]
+  std::array<double, vehicle::kWheelsets> yaw_rms{};   ///< angle of attack [rad]
+  std::array<double, vehicle::kWheelsets> y_over_q{};  ///< largest Y/Q of its wheels [-]
+};
+
+/// The states of the wheelsets `worn` (in order of travel) where each runs through `piece`,
+/// every one weighted share / (its samples) / (worn wheelsets), and the piece's summary. A
+/// wheelset without a sample there (a simulation that stopped before) gives the start's state
+/// at the stretch's start, with the piece's share, so that the weights still sum to the share.
+std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
+                                            const vehicle::VehicleMotion& motion,
+                                            const RouteCase& start_case,
+                                            const vehicle::VehicleCurving& start,
+                                            const std::vector<int>& worn, PieceRun& summary);
 
 /// The contact model of one wheelset for the vehicle: `left` and `right` wheel profiles on the
 /// kernel's rail and track, with its normal-problem options, tangential method, material and
@@ -39,20 +107,26 @@ std::vector<RouteCase> route_cases(const vehicle::Route& route);
 vehicle::WheelsetModel wheelset_model(const StateKernel& kernel, const profiles::Profile& left,
                                       const profiles::Profile& right);
 
-/// The vehicle solved in every case of the route, and the collective its states make.
+/// The vehicle solved in every case of the route and simulated through every piece, and the
+/// collective its states make.
 struct VehicleCollective {
   std::vector<RouteCase> cases;
+  std::vector<DynamicPiece> pieces;
+  std::vector<PieceRun> piece_runs;              ///< per piece
   std::vector<vehicle::VehicleCurving> curving;  ///< per case
-  /// Per case, per wheelset the run wears (VehicleRun::wheelsets), in that order.
+  /// Per worn case (share > 0), per wheelset the run wears (VehicleRun::wheelsets), in that
+  /// order; then per piece the states of piece_states.
   std::vector<WheelsetStateSpec> states;
   int unconverged = 0;  ///< cases whose solve did not converge (their last iterate is used)
   /// Cases whose solve on the current profiles did not converge from the last converged one,
   /// which they keep (its states on the earlier profiles).
   int kept = 0;
+  int incomplete = 0;  ///< pieces whose simulation stopped early
 };
 
 /// Solves `run`'s vehicle in every case of its route on `wheels` (one profile for both wheels
-/// of every wheelset, or left and right), TBB-parallel over the cases. With `previous` (the
+/// of every wheelset, or left and right), then simulates it through every piece from its start
+/// case's solution, TBB-parallel over the cases and over the pieces. With `previous` (the
 /// same route's solution on earlier profiles) each case starts where it was, and is not solved
 /// afresh where that fails: a case that converged then keeps that solution (counted in `kept`),
 /// one that did not goes on from its last iterate. Deterministic for any number of threads.
@@ -72,6 +146,14 @@ std::shared_ptr<const contactgeom::WheelsetContactTable> contact_table(
 /// case's speed, radius and friction; weight `weight`.
 WheelsetStateSpec wheelset_state(const RouteCase& route_case,
                                  const vehicle::VehicleCurving& curving, int k, double weight);
+
+/// The collective's state of a wheelset in motion: its dy, yaw, rates and spin as `state`, the
+/// vertical forces its contact was solved for (so that the kernel meets the same contact), the
+/// speed, radius and friction of `running`; weight `weight`.
+WheelsetStateSpec motion_state(const vehicle::WheelsetMotionState& state,
+                               const vehicle::WheelsetForces& forces,
+                               const vehicle::RunningConditions& running, std::string label,
+                               double weight);
 
 /// `states` as a load-collective CSV file (docs/scenes.md, "Load collective formats"): a label
 /// column and every column a run records under collective/, 17 significant digits so that the

@@ -65,6 +65,9 @@ struct VehicleMotionOptions {
   /// dynamics' creep forces; 0 keeps the models' grids. 20 x 20 moves the wheelsets' paths by
   /// about 0.2 % of their amplitude from 50 x 50 at 2.2 times the speed (docs/vehicle.md).
   int fastsim_grid = 20;
+  /// Running speed over the whole piece [m/s]; 0: the route's at the car body's first sample.
+  /// A piece that starts before its section (a transition's run-in) runs at the section's.
+  double speed = 0.0;
 };
 
 /// One wheelset at one sample.
@@ -103,7 +106,7 @@ struct VehicleMotion {
 
 /// The piece of `route` the car body's centre runs from `start_m` over `length_m` [m] (plus
 /// options.run_in before the first sample, so the simulation starts at start_m - run_in), at
-/// the speed of the route at start_m. Each wheelset's track (curvature, cant, friction) is the
+/// one speed. Each wheelset's track (curvature, cant, friction) is the
 /// route's at its own distance, clamped to the route's ends. `irregularities` (route distance)
 /// moves the rails; outside the record (or with an empty one) the track is ideal, so a record
 /// should cover the piece and the run-in plus the vehicle's length (a wheelset crossing its end

@@ -1,0 +1,111 @@
+// The time-domain pieces of a vehicle run: the irregularities each one runs over and the states
+// its simulation gives the collective.
+#include <cmath>
+#include <cstdio>
+
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/pipeline/vehicle_run.hpp"
+
+namespace wheelwear::pipeline {
+
+namespace {
+
+// Spacing of a generated record [m]: a twelfth of the shortest wavelength (3 m), far below
+// the dynamics' slope stencil of +-0.25 m, so the record's linear interpolation adds nothing.
+constexpr double kRecordSpacing_m = 0.25;
+
+// Whether a wheelset at `distance` runs through the piece's stretch; the ends' tolerance takes
+// the rounding of the samples' distances.
+bool in_stretch(const DynamicPiece& piece, double distance) {
+  const double tolerance = 1e-9 * (1.0 + std::abs(piece.start_m + piece.length_m));
+  return distance >= piece.start_m - tolerance &&
+         distance <= piece.start_m + piece.length_m + tolerance;
+}
+
+std::string sample_label(const DynamicPiece& piece, int k, double distance) {
+  char text[64];
+  std::snprintf(text, sizeof text, ", wheelset %d, s = %.1f m", k + 1, distance);
+  return piece.label + text;
+}
+
+}  // namespace
+
+vehicle::TrackIrregularities piece_irregularities(const DynamicPiece& piece,
+                                                  const TimeDomainKeys& time_domain,
+                                                  const vehicle::Vehicle& vehicle) {
+  switch (time_domain.irregularities) {
+    case IrregularitySource::none:
+      return {};
+    case IrregularitySource::file:
+      return time_domain.measured;
+    case IrregularitySource::erri_low:
+    case IrregularitySource::erri_high:
+      break;
+  }
+  vehicle::IrregularitySpec spec;
+  spec.spectrum = time_domain.irregularities == IrregularitySource::erri_high
+                      ? vehicle::ErriSpectrum::high()
+                      : vehicle::ErriSpectrum::low();
+  spec.run_in = time_domain.run_in;
+  // From where the leading wheelset starts to past where it ends, with room for the slope's
+  // stencil; the trailing wheelsets enter the record after the leading one.
+  const double lead = vehicle.wheelset_x(0);
+  const double from = piece.sim_start_m - time_domain.run_in + lead;
+  const double to = piece.sim_start_m + piece.sim_length_m + lead + 1.0;
+  vehicle::TrackIrregularities record =
+      vehicle::generate_irregularities(spec, to - from, kRecordSpacing_m, piece.seed);
+  for (double& s : record.distance) s += from;
+  return record;
+}
+
+std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
+                                            const vehicle::VehicleMotion& motion,
+                                            const RouteCase& start_case,
+                                            const vehicle::VehicleCurving& start,
+                                            const std::vector<int>& worn, PieceRun& summary) {
+  summary = {};
+  summary.completed = motion.completed;
+  summary.message = motion.message;
+  summary.time_step = motion.time_step;
+  summary.steps = motion.steps;
+  for (int k = 0; k < vehicle::kWheelsets; ++k) {
+    const auto K = static_cast<std::size_t>(k);
+    double dy2 = 0.0, yaw2 = 0.0;
+    for (const vehicle::VehicleSample& sample : motion.samples) {
+      const vehicle::WheelsetMotionSample& w = sample.wheelsets[K];
+      if (!in_stretch(piece, w.distance)) continue;
+      ++summary.samples[K];
+      dy2 += w.state.dy * w.state.dy;
+      yaw2 += w.state.yaw * w.state.yaw;
+      summary.dy_max[K] = std::max(summary.dy_max[K], std::abs(w.state.dy));
+      for (const vehicle::WheelForces& wheel : w.forces.wheels)
+        if (wheel.Q > 0.0) summary.y_over_q[K] = std::max(summary.y_over_q[K], wheel.Y / wheel.Q);
+    }
+    const double n = std::max(1, summary.samples[K]);
+    summary.dy_rms[K] = std::sqrt(dy2 / n);
+    summary.yaw_rms[K] = std::sqrt(yaw2 / n);
+  }
+
+  std::vector<WheelsetStateSpec> states;
+  const double per_wheelset = piece.share / static_cast<double>(worn.size());
+  for (int k : worn) {
+    const int n = summary.samples[static_cast<std::size_t>(k)];
+    if (n == 0) {
+      // Stopped before this wheelset reached the stretch: its start state stands in.
+      WheelsetStateSpec s = wheelset_state(start_case, start, k, per_wheelset);
+      s.label = piece.label + ", wheelset " + std::to_string(k + 1) + " (start state)";
+      states.push_back(std::move(s));
+      continue;
+    }
+    const double weight = per_wheelset / n;
+    for (const vehicle::VehicleSample& sample : motion.samples) {
+      const vehicle::WheelsetMotionSample& w = sample.wheelsets[static_cast<std::size_t>(k)];
+      if (!in_stretch(piece, w.distance)) continue;
+      states.push_back(
+          motion_state(w.state, w.forces, w.running, sample_label(piece, k, w.distance), weight));
+    }
+  }
+  return states;
+}
+
+}  // namespace wheelwear::pipeline
