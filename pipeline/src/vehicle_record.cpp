@@ -257,7 +257,7 @@ void add_vehicle_pieces(GroupRecord& g, const VehicleCollective& v) {
   };
   using D = DynamicPiece;
   per_piece(
-      "section", [](const D& d, const PieceRun&) { return d.section + 1.0; }, "1",
+      "section", [](const D& d, const PieceRun&) { return static_cast<double>(d.section) + 1.0; }, "1",
       "the route section (1-based)");
   per_piece(
       "start_m", [](const D& d, const PieceRun&) { return d.start_m; }, "m",
