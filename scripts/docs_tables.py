@@ -307,8 +307,38 @@ def performance_tangential_methods():
 
 
 # ---------------------------------------------------------------------------------------------
+# bench/results/time_domain_study.csv (studies/time_domain_study.cpp)
+
+
+def vehicle_time_domain_study():
+    labels = {"reference": "reference", "sample": "sample distance", "tangent": "tangent stretch",
+              "run_in": "run-in", "seed": "seed", "quasi_static": "no time domain"}
+    out = []
+    for r in read_csv("time_domain_study.csv"):
+        variant = r["variant"]
+        if variant == "quasi_static":
+            choice = "tangents centred, transitions at their midpoint"
+        else:
+            choice = (f"{sig(r['tangent_length_m'], 3)} m, {sig(r['sample_distance_m'], 2)} m, "
+                      f"{sig(r['run_in_m'], 3)} m, seed {r['seed']}")
+        reference = variant == "reference"
+        out.append([
+            labels[variant], choice, r["states"], f"{sig(r['vehicle_s'], 2)} s",
+            f"{sig(r['wear_s'], 2)} s", sig(r["worn_area_mm2_per_1e5km"], 4),
+            f"{percent(r['piece_share'], 2)} %",
+            "–" if reference else f"{percent(r['max_rate_difference'], 2)} %",
+            "–" if reference else f"{percent(r['l1_rate_difference'], 2)} %",
+        ])
+    return table(["varied", "tangent stretch, sample distance, run-in, seed", "states",
+                  "vehicle solve", "wear evaluation", "worn area [mm² per 10⁵ km]",
+                  "from the pieces", "wear rate vs reference: largest difference / peak",
+                  "L1 / area"], out)
+
+
+# ---------------------------------------------------------------------------------------------
 
 GENERATORS = {
+    "vehicle-time-domain-study": ("docs/vehicle.md", vehicle_time_domain_study),
     "readme-accuracy": ("README.md", readme_accuracy),
     "validation-pure-spin": ("docs/validation.md", validation_pure_spin),
     "validation-linear": ("docs/validation.md", validation_linear),
