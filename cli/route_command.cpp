@@ -103,6 +103,11 @@ void print_text(const pipeline::VehicleCollective& v, double seconds) {
                 e.contact_angle * 180.0 / std::numbers::pi);
   }
   if (!v.pieces.empty()) print_pieces(v);
+  if (std::isfinite(v.critical_speed))
+    std::printf("\nlinear critical speed on tangent track: %.1f m/s (%.0f km/h)\n",
+                v.critical_speed, v.critical_speed * 3.6);
+  else
+    std::printf("\nlinear critical speed on tangent track: none between 5 and 100 m/s\n");
   std::printf(
       "%zu conditions and %zu time-domain pieces in %.1f s; %d conditions did not "
       "converge (their last iterate is shown), %d pieces stopped early\n",
@@ -181,6 +186,7 @@ void print_json(const pipeline::VehicleCollective& v, double seconds) {
                    .add("elapsed", seconds)
                    .add("unconverged", v.unconverged)
                    .add("incomplete_pieces", v.incomplete)
+                   .add("critical_speed", v.critical_speed)
                    .add("states", static_cast<int>(v.states.size()))
                    .add_raw("cases", json_array(cases))
                    .add_raw("pieces", json_array(pieces))
@@ -230,7 +236,8 @@ void add_route_command(CLI::App& app) {
       "track's irregularities through a stretch of every tangent and through every transition\n"
       "(the scene's [time_domain]; --quasi-static: every section quasi-statically, each\n"
       "transition at its midpoint). Prints per curve the leading wheelset's shift and angle of\n"
-      "attack, the largest Y/Q and contact angle, and per piece its motion's rms and extremes;\n"
+      "attack, the largest Y/Q and contact angle, per piece its motion's rms and extremes, and\n"
+      "the vehicle's linear critical speed on tangent track ([vehicle] critical_speed);\n"
       "-o writes the load collective the states make (CSV, the columns of docs/scenes.md) for a\n"
       "scene or a study.\n"
       "Without SCENE, or when it has no [vehicle]: the built-in coach on the built-in route.\n"

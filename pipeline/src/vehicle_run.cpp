@@ -1,13 +1,16 @@
 #include "wheelwear/pipeline/vehicle_run.hpp"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <tuple>
 
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/vehicle/vehicle_stability.hpp"
 
 namespace wheelwear::pipeline {
 
@@ -62,6 +65,50 @@ RouteCase section_case(const vehicle::Route& route, std::size_t i, double start,
   const vehicle::TrackPoint point = vehicle::track_at(route, start + 0.5 * section.length_m);
   return {case_label(section, i, point), condition_at(point, point.speed_m_s),
           section.length_m / total};
+}
+
+// The linear critical speed of `run`'s vehicle with `models`, the contacts its dynamics uses;
+// searched from the previous solve's where it was found (the profiles change little between
+// solves), to 0.1 % (the table's interpolation moves it by more, docs/vehicle.md).
+double critical_speed(const VehicleRun& run,
+                      const std::array<vehicle::WheelsetModel, vehicle::kWheelsets>& models,
+                      const VehicleCollective* previous) {
+  vehicle::VehicleStabilityOptions options;
+  options.speed_step = 5.0;
+  options.tolerance = 1e-3;
+  if (previous && std::isfinite(previous->critical_speed)) {
+    options.start_speed = previous->critical_speed;
+    options.speed_step = 2.0;
+  }
+  const vehicle::CriticalSpeed c = vehicle::vehicle_critical_speed(run.vehicle, models, options);
+  return c.found ? c.speed : std::numeric_limits<double>::quiet_NaN();
+}
+
+// Simulates `out`'s pieces from their start cases' solutions, independently of each other, and
+// appends their states to out.states in the pieces' order.
+void simulate_pieces(const VehicleRun& run,
+                     const std::array<vehicle::WheelsetModel, vehicle::kWheelsets>& models,
+                     const std::vector<int>& worn, VehicleCollective& out) {
+  out.piece_runs.resize(out.pieces.size());
+  std::vector<std::vector<WheelsetStateSpec>> sampled(out.pieces.size());
+  tbb::parallel_for(std::size_t{0}, out.pieces.size(), [&](std::size_t p) {
+    const DynamicPiece& piece = out.pieces[p];
+    vehicle::VehicleMotionOptions options;
+    options.run_in = run.time_domain.run_in;
+    options.sample_distance = run.time_domain.sample_distance;
+    options.speed = piece.speed;
+    const vehicle::VehicleCurving& start = out.curving[piece.start_case];
+    const vehicle::VehicleMotion motion = vehicle::simulate_vehicle(
+        run.vehicle, models, run.route, piece.sim_start_m, piece.sim_length_m,
+        piece_irregularities(piece, run.time_domain, run.vehicle), vehicle::placement_of(start),
+        options);
+    sampled[p] =
+        piece_states(piece, motion, out.cases[piece.start_case], start, worn, out.piece_runs[p]);
+  });
+  for (std::size_t p = 0; p < out.pieces.size(); ++p) {
+    if (!out.piece_runs[p].completed) ++out.incomplete;
+    for (WheelsetStateSpec& s : sampled[p]) out.states.push_back(std::move(s));
+  }
 }
 
 }  // namespace
@@ -218,29 +265,12 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
     for (int k : worn)
       out.states.push_back(wheelset_state(out.cases[i], out.curving[i], k, weight));
   }
-  if (out.pieces.empty()) return out;
-
-  // Each piece is simulated from its start case's solution, independently of the others.
-  out.piece_runs.resize(out.pieces.size());
-  std::vector<std::vector<WheelsetStateSpec>> sampled(out.pieces.size());
-  tbb::parallel_for(std::size_t{0}, out.pieces.size(), [&](std::size_t p) {
-    const DynamicPiece& piece = out.pieces[p];
-    vehicle::VehicleMotionOptions options;
-    options.run_in = run.time_domain.run_in;
-    options.sample_distance = run.time_domain.sample_distance;
-    options.speed = piece.speed;
-    const vehicle::VehicleCurving& start = out.curving[piece.start_case];
-    const vehicle::VehicleMotion motion = vehicle::simulate_vehicle(
-        run.vehicle, models, run.route, piece.sim_start_m, piece.sim_length_m,
-        piece_irregularities(piece, run.time_domain, run.vehicle), vehicle::placement_of(start),
-        options);
-    sampled[p] =
-        piece_states(piece, motion, out.cases[piece.start_case], start, worn, out.piece_runs[p]);
-  });
-  for (std::size_t p = 0; p < out.pieces.size(); ++p) {
-    if (!out.piece_runs[p].completed) ++out.incomplete;
-    for (WheelsetStateSpec& s : sampled[p]) out.states.push_back(std::move(s));
-  }
+  // The critical speed's search (serial) beside the pieces' simulations (parallel).
+  tbb::parallel_invoke(
+      [&] {
+        if (run.critical_speed) out.critical_speed = critical_speed(run, models, previous);
+      },
+      [&] { simulate_pieces(run, models, worn, out); });
   return out;
 }
 

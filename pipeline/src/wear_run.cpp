@@ -298,6 +298,10 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
                                   static_cast<double>(carry.last.incomplete), "1",
                                   "time-domain pieces whose simulation stopped early (the "
                                   "vehicle left the rails); their samples up to there are used"));
+      g.arrays.push_back(scalar("vehicle/critical_speed", carry.last.critical_speed, "m/s",
+                                "linear critical speed on tangent track on the profiles of the "
+                                "vehicle's last solve; NaN: not computed, or none between 5 and "
+                                "100 m/s"));
       detail::add_collective(g, "collective/", carry.last.states);
       detail::add_vehicle_cases(g, carry.last);
       detail::add_vehicle_pieces(g, carry.last);
@@ -437,6 +441,7 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
     carry.last.unconverged =
         static_cast<int>(file.read_step_array(last, "vehicle/unconverged_cases").at(0));
     carry.last.kept = static_cast<int>(file.read_step_array(last, "vehicle/kept_cases").at(0));
+    carry.last.critical_speed = file.read_step_array(last, "vehicle/critical_speed").at(0);
     carry.depth_since_solve = file.read_step_array(last, "vehicle/depth_since_solve").at(0);
   }
   return loop(scene, evaluator, file, std::move(start), *directory, builtin, options);

@@ -154,6 +154,7 @@ class TimeDomainCollective : public ::testing::Test {
     run_.vehicle = vehicle::default_vehicle();
     run_.route = vehicle::parse_route(kShortRoute, "test route");
     run_.time_domain = short_keys();
+    run_.critical_speed = false;
   }
 
   // The simulation of piece `p` exactly as the collective runs it.

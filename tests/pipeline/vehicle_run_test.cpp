@@ -21,14 +21,17 @@
 namespace wheelwear::pipeline {
 namespace {
 
-// Without `time_domain` keys every section is solved quasi-statically.
+// Without `time_domain` keys every section is solved quasi-statically; the critical speed only
+// when asked.
 std::string vehicle_scene(double distance, double step, double resolve_depth,
-                          const std::string& time_domain = "enabled = false\n") {
+                          const std::string& time_domain = "enabled = false\n",
+                          bool critical_speed = false) {
   return "[contact]\ngrid_nx = 12\ngrid_ny = 12\n[run]\ndistance_m = " + std::to_string(distance) +
          "\nstep_distance_m = " + std::to_string(step) +
          "\nmax_depth_step_m = 1e-3\n[vehicle]\nfile = \"default\"\nresolve_depth_m = " +
-         std::to_string(resolve_depth) + "\n[route]\nfile = \"route.toml\"\n[time_domain]\n" +
-         time_domain;
+         std::to_string(resolve_depth) +
+         "\ncritical_speed = " + (critical_speed ? "true" : "false") +
+         "\n[route]\nfile = \"route.toml\"\n[time_domain]\n" + time_domain;
 }
 
 TEST(RouteCases, DefaultRouteKeepsEverySectionsShare) {
@@ -66,6 +69,7 @@ void expect_kernel_meets_vehicle(bool contact_table, double slack) {
   run.route = vehicle::parse_route(kShortRoute, "test route");
   run.contact_table = contact_table;
   run.time_domain.enabled = false;
+  run.critical_speed = false;
   const StateKernel kernel(scene);
   const profiles::Profile wheel = profiles::wheel_profile("S1002", 0.46, {});
   const VehicleCollective v = solve_vehicle_collective(run, kernel, {&wheel});
@@ -193,8 +197,8 @@ TEST_F(VehicleRunTest, RecordsTheVehicleAndResumesToIdenticalResults) {
   write("route.toml", kShortRoute);
   // Solved at every step (resolve depth 0), three steps of 1 km; the transition and a short
   // stretch of the tangent simulated in time, sampled every 2 m.
-  const std::string text =
-      vehicle_scene(2e3, 1e3, 0.0, "tangent_length_m = 20\nrun_in_m = 10\nsample_distance_m = 2\n");
+  const std::string text = vehicle_scene(
+      2e3, 1e3, 0.0, "tangent_length_m = 20\nrun_in_m = 10\nsample_distance_m = 2\n", true);
   const fs::path reference = dir_ / "reference.h5", killed = dir_ / "killed.h5";
   run(text, reference);
   const ResultsFile ref = ResultsFile::read(reference);
@@ -207,6 +211,9 @@ TEST_F(VehicleRunTest, RecordsTheVehicleAndResumesToIdenticalResults) {
     EXPECT_EQ(ref.read_step_array(step, "vehicle/cases/Q").size(), 16u);
     EXPECT_EQ(ref.read_step_array(step, "vehicle/pieces/completed"),
               (std::vector<double>{1.0, 1.0}));
+    // Searched at every solve, from the last solve's on: 95.3 m/s on the new profiles as
+    // `wheelwear route` finds it (route_command_test.cpp), moving little over 2 km of wear.
+    EXPECT_NEAR(ref.read_step_array(step, "vehicle/critical_speed").at(0), 95.3, 1.0) << step;
     // Every wheelset through the 60 m transition at most 2 m apart: 30 or 31 samples, as the
     // car body's spacing (81.5 m over 41 intervals) falls on the stretch; the tangent's 20 m
     // (41.5 m over 21 intervals): 10 or 11.

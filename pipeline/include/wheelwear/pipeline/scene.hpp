@@ -116,6 +116,9 @@ struct VehicleRun {
   bool contact_table = true;
   /// Tangents and transitions simulated in time with the track's irregularities.
   TimeDomainKeys time_domain;
+  /// The vehicle's linear critical speed on tangent track at each solve, on its profiles
+  /// (vehicle::vehicle_critical_speed with the run's contact models).
+  bool critical_speed = true;
 
   /// The wheelsets (0..3, in order of travel) that wear the profile(s).
   std::vector<int> worn_wheelsets() const;

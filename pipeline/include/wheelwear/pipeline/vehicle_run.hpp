@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -122,11 +123,15 @@ struct VehicleCollective {
   /// which they keep (its states on the earlier profiles).
   int kept = 0;
   int incomplete = 0;  ///< pieces whose simulation stopped early
+  /// The linear critical speed on tangent track on the solve's profiles [m/s] (VehicleRun::
+  /// critical_speed); NaN where not computed or not found between 5 and 100 m/s.
+  double critical_speed = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Solves `run`'s vehicle in every case of its route on `wheels` (one profile for both wheels
 /// of every wheelset, or left and right), then simulates it through every piece from its start
-/// case's solution, TBB-parallel over the cases and over the pieces. With `previous` (the
+/// case's solution, TBB-parallel over the cases and over the pieces, and finds its linear
+/// critical speed (searched from the previous solution's where there is one). With `previous` (the
 /// same route's solution on earlier profiles) each case starts where it was, and is not solved
 /// afresh where that fails: a case that converged then keeps that solution (counted in `kept`),
 /// one that did not goes on from its last iterate. Deterministic for any number of threads.
