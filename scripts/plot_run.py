@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Plots of a wheelwear results file: profile evolution, wear depth per step, wheel parameters
-and conicity, T gamma maps where the run recorded them, and a vehicle run's curving states.
+and conicity, T gamma maps where the run recorded them, and a vehicle run's curving states,
+time-domain pieces and linear critical speed.
 
     scripts/plot_run.py RUN.h5 [--out DIR]
 
@@ -148,15 +149,17 @@ def plot_vehicle(f, out):
     markers = ("o", "s", "^", "v")
     for g, style, when in ((groups[0], "-", "first step"), (groups[-1], "--", "last step")):
         c = g["vehicle"]["cases"]
-        radius = np.asarray(c["curve_radius_m"])
+        # The worn conditions only: those of share 0 just start a time-domain piece.
+        worn = np.asarray(c["share"]) > 0
+        radius = np.asarray(c["curve_radius_m"])[worn]
         hand = np.sign(radius)  # + right-hand: the left rail outer
         curvature = np.where(radius != 0.0, 1e3 / np.where(radius == 0.0, 1.0, np.abs(radius)), 0.0)
         order = np.argsort(curvature)
-        converged = np.asarray(c["converged"]) > 0
-        dy = np.asarray(c["dy"]) * 1e3
-        aoa = np.asarray(c["angle_of_attack"]) * 1e3
-        Q = np.asarray(c["Q"])
-        Y = np.asarray(c["Y"])
+        converged = np.asarray(c["converged"])[worn] > 0
+        dy = np.asarray(c["dy"])[worn] * 1e3
+        aoa = np.asarray(c["angle_of_attack"])[worn] * 1e3
+        Q = np.asarray(c["Q"])[worn]
+        Y = np.asarray(c["Y"])[worn]
         for k in range(dy.shape[1]):
             colour = plt.cm.tab10(k)
             label = f"wheelset {k + 1}, {when}"
@@ -209,6 +212,52 @@ def plot_vehicle(f, out):
     return path
 
 
+def plot_vehicle_motion(f, out):
+    """A vehicle run's time-domain pieces and linear critical speed against the distance run:
+    per piece the leading wheelset's rms and largest shift and the largest Y/Q, at every step
+    that solved the vehicle."""
+    groups = steps(f)
+    if "vehicle" not in groups[0] or "pieces" not in groups[0]["vehicle"]:
+        return None
+    solved = [g for g in groups if float(g["vehicle"]["solved"][()]) > 0]
+    distance = np.array([float(g["distance"][()]) for g in solved]) / 1e3
+    fig, axes = plt.subplots(2, 2, figsize=(11, 8))
+    speed = np.array([float(g["vehicle"]["critical_speed"][()]) if "critical_speed" in
+                      g["vehicle"] else np.nan for g in solved])
+    axes[0, 0].plot(distance, speed * 3.6, "o-")
+    axes[0, 0].set_ylabel("linear critical speed [km/h]")
+    axes[0, 0].set_title("linear critical speed on tangent track (none: stable to 360 km/h)")
+    first = solved[0]["vehicle"]["pieces"]
+    labels = first["label"][()].decode().splitlines()
+    tangent = np.array(["tangent" in label.lower() for label in labels])
+    for g, style, when in ((solved[0], "o", "first solve"), (solved[-1], "s", "last solve")):
+        p = g["vehicle"]["pieces"]
+        start = np.asarray(p["start_m"]) / 1e3
+        rms = np.asarray(p["dy_rms"])[:, 0] * 1e3
+        peak = np.asarray(p["dy_max"])[:, 0] * 1e3
+        ratio = np.asarray(p["Y_over_Q_max"]).max(axis=1)
+        axes[0, 1].plot(start[tangent], rms[tangent], style, label=f"tangents, rms, {when}")
+        axes[0, 1].plot(start[tangent], peak[tangent], style, mfc="none",
+                        label=f"tangents, largest, {when}")
+        axes[1, 0].plot(start[~tangent], peak[~tangent], style, label=f"transitions, {when}")
+        axes[1, 1].plot(start, ratio, style, label=when)
+    axes[0, 1].set_ylabel("leading wheelset |dy| [mm]")
+    axes[0, 1].set_title("motion over the track's irregularities")
+    axes[1, 0].set_ylabel("leading wheelset largest |dy| [mm]")
+    axes[1, 1].set_ylabel("largest Y/Q of any wheel")
+    for ax in (axes[0, 1], axes[1, 0], axes[1, 1]):
+        ax.set_xlabel("piece's place along the route [km]")
+        ax.legend(fontsize=7)
+        ax.grid(alpha=0.3)
+    axes[0, 0].set_xlabel("distance run [km]")
+    axes[0, 0].grid(alpha=0.3)
+    path = os.path.join(out, "vehicle_motion.png")
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("run", help="results file written by `wheelwear run`")
@@ -223,7 +272,8 @@ def main():
     with f:
         if "steps" not in f or len(f["steps"]) == 0:
             sys.exit(f"plot_run.py: {args.run} holds no steps")
-        for plot in (plot_profiles, plot_wear_depth, plot_parameters, plot_tgamma, plot_vehicle):
+        for plot in (plot_profiles, plot_wear_depth, plot_parameters, plot_tgamma, plot_vehicle,
+                     plot_vehicle_motion):
             path = plot(f, out)
             if path:
                 print(path)

@@ -71,6 +71,7 @@ Measured measure(const pipeline::Scene& scene, const pipeline::CollectiveEvaluat
                  const profiles::Profile& wheel, const pipeline::TimeDomainKeys& keys) {
   pipeline::VehicleRun run = *scene.vehicle_run;
   run.time_domain = keys;
+  run.critical_speed = false;  // the time-domain choices alone
   Measured m;
   auto t0 = Clock::now();
   const pipeline::VehicleCollective v =
