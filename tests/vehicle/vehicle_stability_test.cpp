@@ -33,6 +33,13 @@ std::array<WheelsetModel, kWheelsets> tabulated_cone(double lambda) {
   return four(m);
 }
 
+// The critical speed of `models`, scanned from 5 m/s in steps of 5 m/s.
+CriticalSpeed scanned_critical_speed(const std::array<WheelsetModel, kWheelsets>& models) {
+  VehicleStabilityOptions search;
+  search.speed_step = 5.0;
+  return vehicle_critical_speed(default_vehicle(), models, search);
+}
+
 Route tangent(double speed) {
   RouteSection section;
   section.kind = SectionKind::tangent;
@@ -103,9 +110,7 @@ TEST(VehicleStability, HuntingGrowsAndDecaysAtTheEigenvaluesRate) {
   // linearised model's least stable mode.
   const Vehicle v = default_vehicle();
   const auto models = tabulated_cone(0.2);
-  VehicleStabilityOptions search;
-  search.speed_step = 5.0;
-  const CriticalSpeed critical = vehicle_critical_speed(v, models, search);
+  const CriticalSpeed critical = scanned_critical_speed(models);
   ASSERT_TRUE(critical.found);
   std::printf("whole vehicle, lambda 0.2: linear critical speed %.2f m/s\n", critical.speed);
   int compared = 0;
@@ -165,10 +170,10 @@ TEST(VehicleStability, AStartSpeedFindsTheSameCrossing) {
   // same crossing, within the tolerance (1e-4 of the speed) of the scan from the lowest speed.
   const Vehicle v = default_vehicle();
   const auto models = tabulated_cone(0.2);
+  const CriticalSpeed scanned = scanned_critical_speed(models);
+  ASSERT_TRUE(scanned.found);
   VehicleStabilityOptions options;
   options.speed_step = 5.0;
-  const CriticalSpeed scanned = vehicle_critical_speed(v, models, options);
-  ASSERT_TRUE(scanned.found);
   for (double start : {scanned.speed - 7.0, scanned.speed + 7.0}) {
     options.start_speed = start;
     const CriticalSpeed c = vehicle_critical_speed(v, models, options);
