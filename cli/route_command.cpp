@@ -104,10 +104,10 @@ void print_text(const pipeline::VehicleCollective& v, double seconds) {
   }
   if (!v.pieces.empty()) print_pieces(v);
   if (std::isfinite(v.critical_speed))
-    std::printf("\nlinear critical speed on tangent track: %.1f m/s (%.0f km/h)\n",
-                v.critical_speed, v.critical_speed * 3.6);
+    std::printf("\nlinear critical speed on tangent track: %.1f m/s (%.0f km/h), %s\n",
+                v.critical_speed, v.critical_speed * 3.6, v.critical_speed_note.c_str());
   else
-    std::printf("\nlinear critical speed on tangent track: none between 5 and 100 m/s\n");
+    std::printf("\nlinear critical speed on tangent track: %s\n", v.critical_speed_note.c_str());
   std::printf(
       "%zu conditions and %zu time-domain pieces in %.1f s; %d conditions did not "
       "converge (their last iterate is shown), %d pieces stopped early\n",
@@ -187,6 +187,7 @@ void print_json(const pipeline::VehicleCollective& v, double seconds) {
                    .add("unconverged", v.unconverged)
                    .add("incomplete_pieces", v.incomplete)
                    .add("critical_speed", v.critical_speed)
+                   .add("critical_speed_note", v.critical_speed_note)
                    .add("states", static_cast<int>(v.states.size()))
                    .add_raw("cases", json_array(cases))
                    .add_raw("pieces", json_array(pieces))

@@ -227,9 +227,7 @@ def plot_vehicle_motion(f, out):
     axes[0, 0].plot(distance, speed * 3.6, "o-")
     axes[0, 0].set_ylabel("linear critical speed [km/h]")
     axes[0, 0].set_title("linear critical speed on tangent track (none: stable to 360 km/h)")
-    first = solved[0]["vehicle"]["pieces"]
-    labels = first["label"][()].decode().splitlines()
-    tangent = np.array(["tangent" in label.lower() for label in labels])
+    tangent = np.asarray(solved[0]["vehicle"]["pieces"]["tangent"]) > 0
     for g, style, when in ((solved[0], "o", "first solve"), (solved[-1], "s", "last solve")):
         p = g["vehicle"]["pieces"]
         start = np.asarray(p["start_m"]) / 1e3

@@ -1,7 +1,10 @@
 // The time-domain pieces of a vehicle run: the irregularities each one runs over and the states
 // its simulation gives the collective.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <utility>
 
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/vehicle_run.hpp"
@@ -28,6 +31,32 @@ std::string sample_label(const DynamicPiece& piece, int k, double distance) {
   return piece.label + text;
 }
 
+// Where the wheelsets of `piece` run, from the trailing one's start to the leading one's end.
+std::pair<double, double> wheelsets_range(const DynamicPiece& piece, double run_in,
+                                          const vehicle::Vehicle& vehicle) {
+  return {piece.sim_start_m - run_in + vehicle.wheelset_x(vehicle::kWheelsets - 1),
+          piece.sim_start_m + piece.sim_length_m + vehicle.wheelset_x(0)};
+}
+
+// A measured record must cover the piece: outside it the track would be ideal, and a wheelset
+// crossing its end would see a step.
+void check_coverage(const DynamicPiece& piece, const TimeDomainKeys& keys,
+                    const vehicle::Vehicle& vehicle) {
+  const auto [from, to] = wheelsets_range(piece, keys.run_in, vehicle);
+  const std::vector<double>& s = keys.measured.distance;
+  if (!s.empty() && s.front() <= from && s.back() >= to) return;
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "covers %.1f ... %.1f m of the route, but the wheelsets of the piece of %s run "
+                "from %.1f to %.1f m",
+                s.empty() ? 0.0 : s.front(), s.empty() ? 0.0 : s.back(), piece.label.c_str(), from,
+                to);
+  throw InputError(
+      "[time_domain] irregularities = \"" + keys.irregularity_file + "\": " + text +
+      "; give a record of the whole route (distance along it, from before its start by "
+      "the run-in and half the vehicle's length), or generate one (erri-low)");
+}
+
 }  // namespace
 
 vehicle::TrackIrregularities piece_irregularities(const DynamicPiece& piece,
@@ -37,6 +66,7 @@ vehicle::TrackIrregularities piece_irregularities(const DynamicPiece& piece,
     case IrregularitySource::none:
       return {};
     case IrregularitySource::file:
+      check_coverage(piece, time_domain, vehicle);
       return time_domain.measured;
     case IrregularitySource::erri_low:
     case IrregularitySource::erri_high:
@@ -81,7 +111,12 @@ std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
       for (const vehicle::WheelForces& wheel : w.forces.wheels)
         if (wheel.Q > 0.0) summary.y_over_q[K] = std::max(summary.y_over_q[K], wheel.Y / wheel.Q);
     }
-    const double n = std::max(1, summary.samples[K]);
+    const double n = summary.samples[K];
+    if (n == 0.0) {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      summary.dy_rms[K] = summary.dy_max[K] = summary.yaw_rms[K] = summary.y_over_q[K] = nan;
+      continue;
+    }
     summary.dy_rms[K] = std::sqrt(dy2 / n);
     summary.yaw_rms[K] = std::sqrt(yaw2 / n);
   }
@@ -91,7 +126,8 @@ std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
   for (int k : worn) {
     const int n = summary.samples[static_cast<std::size_t>(k)];
     if (n == 0) {
-      // Stopped before this wheelset reached the stretch: its start state stands in.
+      // Stopped before this wheelset reached the stretch: its state where the car body started
+      // stands in.
       WheelsetStateSpec s = wheelset_state(start_case, start, k, per_wheelset);
       s.label = piece.label + ", wheelset " + std::to_string(k + 1) + " (start state)";
       states.push_back(std::move(s));

@@ -257,8 +257,11 @@ void add_vehicle_pieces(GroupRecord& g, const VehicleCollective& v) {
   };
   using D = DynamicPiece;
   per_piece(
-      "section", [](const D& d, const PieceRun&) { return static_cast<double>(d.section) + 1.0; }, "1",
-      "the route section (1-based)");
+      "section", [](const D& d, const PieceRun&) { return static_cast<double>(d.section) + 1.0; },
+      "1", "the route section (1-based)");
+  per_piece(
+      "tangent", [](const D& d, const PieceRun&) { return d.tangent ? 1.0 : 0.0; }, "1",
+      "1 for a tangent's stretch, 0 for a whole transition");
   per_piece(
       "start_m", [](const D& d, const PieceRun&) { return d.start_m; }, "m",
       "where the simulated stretch starts along the route");

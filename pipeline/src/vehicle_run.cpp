@@ -44,6 +44,12 @@ vehicle::SteadyCurve condition_at(const vehicle::TrackPoint& point, double speed
   return curve;
 }
 
+std::string format_speed(double speed) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", speed);
+  return text;
+}
+
 // Adds `c` to `cases`, or its share to the case of the same condition already there (which takes
 // its label if it was only a piece's start). Returns the case's index.
 std::size_t add_case(std::vector<RouteCase>& cases, RouteCase c) {
@@ -67,12 +73,14 @@ RouteCase section_case(const vehicle::Route& route, std::size_t i, double start,
           section.length_m / total};
 }
 
-// The linear critical speed of `run`'s vehicle with `models`, the contacts its dynamics uses;
-// searched from the previous solve's where it was found (the profiles change little between
-// solves), to 0.1 % (the table's interpolation moves it by more, docs/vehicle.md).
-double critical_speed(const VehicleRun& run,
-                      const std::array<vehicle::WheelsetModel, vehicle::kWheelsets>& models,
-                      const VehicleCollective* previous) {
+// The linear critical speed of `run`'s vehicle with `models`, the contacts its dynamics uses,
+// into out.critical_speed and out.critical_speed_note; searched from the previous solve's where
+// it was found (the profiles change little between solves: the crossing nearest it), to 0.1 %
+// (the table's interpolation moves it by more, docs/vehicle.md). A search that fails (no steady
+// state on tangent track at some speed) leaves NaN and says why, and does not stop the run.
+void find_critical_speed(const VehicleRun& run,
+                         const std::array<vehicle::WheelsetModel, vehicle::kWheelsets>& models,
+                         const VehicleCollective* previous, VehicleCollective& out) {
   vehicle::VehicleStabilityOptions options;
   options.speed_step = 5.0;
   options.tolerance = 1e-3;
@@ -80,8 +88,19 @@ double critical_speed(const VehicleRun& run,
     options.start_speed = previous->critical_speed;
     options.speed_step = 2.0;
   }
-  const vehicle::CriticalSpeed c = vehicle::vehicle_critical_speed(run.vehicle, models, options);
-  return c.found ? c.speed : std::numeric_limits<double>::quiet_NaN();
+  try {
+    const vehicle::CriticalSpeed c = vehicle::vehicle_critical_speed(run.vehicle, models, options);
+    if (c.found) {
+      out.critical_speed = c.speed;
+      out.critical_speed_note = options.start_speed > 0.0 ? "the crossing nearest the last solve's"
+                                                          : "the lowest crossing from 5 m/s";
+    } else {
+      out.critical_speed_note = "none found between " + format_speed(options.speed_step) +
+                                " and 100 m/s (stable up to 100 m/s, or unstable at the lowest)";
+    }
+  } catch (const InputError& e) {
+    out.critical_speed_note = std::string("not found: ") + e.what();
+  }
 }
 
 // Simulates `out`'s pieces from their start cases' solutions, independently of each other, and
@@ -131,11 +150,11 @@ RoutePlan route_plan(const vehicle::Route& route, const TimeDomainKeys& time_dom
                      const vehicle::Vehicle& vehicle) {
   if (!time_domain.enabled) return {route_cases(route), {}};
   require(std::isfinite(time_domain.tangent_length) && time_domain.tangent_length > 0.0,
-          "time-domain tangent length", time_domain.tangent_length, "must be positive (m)");
-  require(std::isfinite(time_domain.run_in) && time_domain.run_in >= 0.0, "time-domain run-in",
+          "[time_domain] tangent_length_m", time_domain.tangent_length, "must be positive (m)");
+  require(std::isfinite(time_domain.run_in) && time_domain.run_in >= 0.0, "[time_domain] run_in_m",
           time_domain.run_in, "must not be negative (m)");
   require(std::isfinite(time_domain.sample_distance) && time_domain.sample_distance > 0.0,
-          "time-domain sample distance", time_domain.sample_distance, "must be positive (m)");
+          "[time_domain] sample_distance_m", time_domain.sample_distance, "must be positive (m)");
   const std::vector<double> starts = route.section_starts();
   const double total = route.total_length();
   // The leading and the trailing wheelset's places ahead of the car body's centre.
@@ -158,11 +177,14 @@ RoutePlan route_plan(const vehicle::Route& route, const TimeDomainKeys& time_dom
     piece.share = section.length_m / total;
     piece.speed = section.speed_m_s;
     piece.seed = vehicle::seed_for_section(time_domain.seed, i);
-    piece.sim_start_m = std::max(0.0, piece.start_m - lead);
-    piece.sim_length_m = piece.start_m + piece.length_m - trail - piece.sim_start_m;
+    // Before the route's start (a piece at its very start) the track is its first section's.
+    piece.sim_start_m = piece.start_m - lead;
+    piece.sim_length_m = piece.length_m + lead - trail;
     const vehicle::TrackPoint start_point =
         vehicle::track_at(route, std::max(0.0, piece.sim_start_m - time_domain.run_in));
-    piece.label = case_label(section, i, vehicle::track_at(route, piece.start_m));
+    piece.tangent = section.kind == vehicle::SectionKind::tangent;
+    piece.label =
+        case_label(section, i, vehicle::track_at(route, piece.start_m + 0.5 * piece.length_m));
     piece.start_case = add_case(
         plan.cases, {"start of " + piece.label, condition_at(start_point, piece.speed), 0.0});
     plan.pieces.push_back(std::move(piece));
@@ -268,7 +290,7 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
   // The critical speed's search (serial) beside the pieces' simulations (parallel).
   tbb::parallel_invoke(
       [&] {
-        if (run.critical_speed) out.critical_speed = critical_speed(run, models, previous);
+        if (run.critical_speed) find_critical_speed(run, models, previous, out);
       },
       [&] { simulate_pieces(run, models, worn, out); });
   return out;

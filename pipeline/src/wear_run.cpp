@@ -300,8 +300,10 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
                                   "vehicle left the rails); their samples up to there are used"));
       g.arrays.push_back(scalar("vehicle/critical_speed", carry.last.critical_speed, "m/s",
                                 "linear critical speed on tangent track on the profiles of the "
-                                "vehicle's last solve; NaN: not computed, or none between 5 and "
-                                "100 m/s"));
+                                "vehicle's last solve; NaN: not computed or not found "
+                                "(vehicle/critical_speed_note)"));
+      g.texts.push_back({"vehicle/critical_speed_note", carry.last.critical_speed_note,
+                         "how the critical speed was found, or why not"});
       detail::add_collective(g, "collective/", carry.last.states);
       detail::add_vehicle_cases(g, carry.last);
       detail::add_vehicle_pieces(g, carry.last);
@@ -442,6 +444,8 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
         static_cast<int>(file.read_step_array(last, "vehicle/unconverged_cases").at(0));
     carry.last.kept = static_cast<int>(file.read_step_array(last, "vehicle/kept_cases").at(0));
     carry.last.critical_speed = file.read_step_array(last, "vehicle/critical_speed").at(0);
+    carry.last.critical_speed_note =
+        file.read_text(ResultsFile::step_group(last) + "/vehicle/critical_speed_note").value_or("");
     carry.depth_since_solve = file.read_step_array(last, "vehicle/depth_since_solve").at(0);
   }
   return loop(scene, evaluator, file, std::move(start), *directory, builtin, options);

@@ -133,10 +133,19 @@ TEST(PieceIrregularities, FadedInOverTheStretchAndSeededPerSection) {
   keys.irregularities = IrregularitySource::none;
   EXPECT_TRUE(piece_irregularities(piece, keys, car).distance.empty());
   keys.irregularities = IrregularitySource::file;
-  keys.measured.distance = {0.0, 1e5};
+  keys.irregularity_file = "measured.csv";
+  keys.measured.distance = {-100.0, 1.1e5};
   keys.measured.alignment = {1e-3, -1e-3};
   keys.measured.cross_level = {0.0, 0.0};
   EXPECT_EQ(piece_irregularities(piece, keys, car).alignment, keys.measured.alignment);
+  // A record that stops short of where a piece's wheelsets run is refused, naming the file.
+  keys.measured.distance = {0.0, 1000.0};
+  try {
+    piece_irregularities(piece, keys, car);
+    ADD_FAILURE() << "a record short of the piece was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("measured.csv"), std::string::npos) << e.what();
+  }
 }
 
 // The short route's collective with its pieces simulated in time, each state's kernel forces
@@ -267,19 +276,64 @@ TEST_F(TimeDomainCollective, IdealTrackGivesTheQuasiStaticStateAndThreadsDoNotMa
   }
   EXPECT_GE(compared, 4 * 10);
 
-  // One thread gives the same collective as many, to the last bit.
+  // One thread gives the same collective as many, to the last bit, the critical speed's search
+  // running beside the pieces.
+  run_.critical_speed = true;
+  const VehicleCollective many = solve_vehicle_collective(run_, kernel_, {&wheel_});
   VehicleCollective one;
   {
     tbb::global_control single(tbb::global_control::max_allowed_parallelism, 1);
     one = solve_vehicle_collective(run_, kernel_, {&wheel_});
   }
-  ASSERT_EQ(one.states.size(), v.states.size());
-  for (std::size_t i = 0; i < v.states.size(); ++i) {
-    EXPECT_EQ(one.states[i].dy, v.states[i].dy) << i;
-    EXPECT_EQ(one.states[i].yaw, v.states[i].yaw) << i;
-    EXPECT_EQ(one.states[i].load_left, v.states[i].load_left) << i;
-    EXPECT_EQ(one.states[i].weight, v.states[i].weight) << i;
+  ASSERT_EQ(one.states.size(), many.states.size());
+  for (std::size_t i = 0; i < many.states.size(); ++i) {
+    EXPECT_EQ(one.states[i].dy, many.states[i].dy) << i;
+    EXPECT_EQ(one.states[i].yaw, many.states[i].yaw) << i;
+    EXPECT_EQ(one.states[i].load_left, many.states[i].load_left) << i;
+    EXPECT_EQ(one.states[i].weight, many.states[i].weight) << i;
   }
+  EXPECT_TRUE(std::isfinite(many.critical_speed)) << many.critical_speed_note;
+  EXPECT_EQ(one.critical_speed, many.critical_speed);
+}
+
+TEST_F(TimeDomainCollective, APieceAtTheRoutesStartSamplesEveryWheelset) {
+  // A 10 m tangent first, shorter than the vehicle's half length (10.75 m to the leading
+  // wheelset): the car body starts before the route (on its first section's track), so every
+  // wheelset still runs the whole stretch after the run-in.
+  run_.route = vehicle::parse_route(R"(
+[route]
+speed_m_s = 30
+[[section]]
+kind = "tangent"
+length_m = 10
+[[section]]
+kind = "transition"
+length_m = 60
+radius_m = 3000
+cant_m = 0.03
+[[section]]
+kind = "curve"
+length_m = 500
+radius_m = 3000
+cant_m = 0.03
+)",
+                                    "test route");
+  const VehicleCollective v = solve_vehicle_collective(run_, kernel_, {&wheel_});
+  ASSERT_EQ(v.pieces.size(), 2u);
+  EXPECT_LT(v.pieces[0].sim_start_m, 0.0);
+  int compared = 0;
+  for (std::size_t p = 0; p < 2; ++p) {
+    EXPECT_TRUE(v.piece_runs[p].completed) << v.piece_runs[p].message;
+    for (int samples : v.piece_runs[p].samples) {
+      // 10 m at most 2 m apart: 5 or 6 samples; 60 m: 30 or 31.
+      EXPECT_GE(samples, p == 0 ? 5 : 30) << p;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 8);
+  double total = 0.0;
+  for (const WheelsetStateSpec& s : v.states) total += s.weight;
+  EXPECT_NEAR(total, 1.0, 1e-12);
 }
 
 TEST(TimeDomainScene, KeysAndTheirErrors) {

@@ -285,5 +285,45 @@ TEST_F(VehicleRunTest, ResolvesOnlyOnceTheWearReachesTheDepth) {
     EXPECT_EQ(again.read_step_array(step, "vehicle/solved").at(0), 1.0) << step;
 }
 
+TEST_F(VehicleRunTest, ResumedBetweenSolvesKeepsThePiecesAndTheCriticalSpeed) {
+  write("route.toml", kShortRoute);
+  // Solved once (1 mm of wear is not reached in 2 km): a run resumed after step 1 records the
+  // pieces and the critical speed of that one solve, read back from the file, until its end.
+  const std::string text = vehicle_scene(
+      2e3, 1e3, 1e-3, "tangent_length_m = 20\nrun_in_m = 10\nsample_distance_m = 2\n", true);
+  const fs::path reference = dir_ / "reference.h5", killed = dir_ / "killed.h5";
+  run(text, reference);
+  RunOptions stop;
+  stop.progress = [](const RunProgress& p) {
+    if (p.step == 1) throw std::runtime_error("interrupted");
+  };
+  EXPECT_THROW(run_scene(parse_scene(text, dir_), text, dir_, false, killed, stop),
+               std::runtime_error);
+  resume_run(killed, {});
+  const ResultsFile ref = ResultsFile::read(reference), res = ResultsFile::read(killed);
+  ASSERT_EQ(res.completed_steps(), 3);
+  int compared = 0;
+  for (int step = 0; step < 3; ++step) {
+    EXPECT_EQ(ref.read_step_array(step, "vehicle/solved").at(0), step == 0 ? 1.0 : 0.0);
+    for (const std::string& name : ref.step_array_names(step)) {
+      if (name.rfind("vehicle/", 0) != 0) continue;
+      const auto a = ref.read_step_array(step, name), b = res.read_step_array(step, name);
+      ASSERT_EQ(a.size(), b.size()) << name;
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        if (std::isnan(a[i]) && std::isnan(b[i])) continue;
+        ASSERT_EQ(a[i], b[i]) << "step " << step << ' ' << name << '[' << i << ']';
+        ++compared;
+      }
+    }
+    for (const char* text_name :
+         {"vehicle/pieces/label", "vehicle/pieces/message", "vehicle/critical_speed_note"}) {
+      const std::string path = ResultsFile::step_group(step) + "/" + text_name;
+      EXPECT_EQ(ref.read_text(path), res.read_text(path)) << path;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 200);
+}
+
 }  // namespace
 }  // namespace wheelwear::pipeline

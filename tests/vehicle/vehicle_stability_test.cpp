@@ -95,12 +95,12 @@ Oscillation observed(const VehicleMotion& m, double settle) {
   return o;
 }
 
-// The eigenvalue whose frequency is nearest `frequency` [rad/s].
-std::complex<double> mode_at(const VehicleModes& modes, double frequency) {
-  std::complex<double> best = modes.eigenvalues.front();
+// The least damped eigenvalue oscillating faster than 10 rad/s: the wheelsets' and bogies'
+// hunting, not the car body's sway and yaw (about 4 rad/s on its soft secondary suspension).
+std::complex<double> hunting_mode(const VehicleModes& modes) {
+  std::complex<double> best(-INFINITY, 0.0);
   for (const std::complex<double>& e : modes.eigenvalues)
-    if (std::abs(std::abs(e.imag()) - frequency) < std::abs(std::abs(best.imag()) - frequency))
-      best = e;
+    if (std::abs(e.imag()) > 10.0 && e.real() > best.real()) best = e;
   return best;
 }
 
@@ -132,16 +132,17 @@ TEST(VehicleStability, HuntingGrowsAndDecaysAtTheEigenvaluesRate) {
         simulate_vehicle(v, models, tangent(speed), 1000.0, 4.0 * speed, {}, start, options);
     ASSERT_TRUE(m.completed) << m.message;
     const Oscillation seen = observed(m, 1.0);
-    const std::complex<double> mode = mode_at(modes, seen.frequency);
+    const std::complex<double> mode = hunting_mode(modes);
     std::printf(
         "V %.1f m/s: hunting in time %.4f 1/s at %.3f rad/s; eigenvalue %.4f %+.3fi "
         "(largest growth rate %.4f)\n",
         speed, seen.growth_rate, seen.frequency, mode.real(), mode.imag(), modes.growth_rate);
     EXPECT_EQ(seen.growth_rate > 0.0, factor > 1.0);
-    // Measured: the frequency within 1.2 %, the growth rate within 1.8 % (the other modes'
-    // remainders and the samples' resolution of the peaks); about 4 times that.
+    // Measured: the frequency within 1.6 %, the growth rate within 1.8 % above the critical
+    // speed and 5.2 % below it, where the two bogies' hunting modes lie close together (-2.22
+    // and -2.33 1/s at 28 rad/s) and the leading wheelset follows both: 5 % and 10 %.
     EXPECT_NEAR(seen.frequency, std::abs(mode.imag()), 0.05 * std::abs(mode.imag()));
-    EXPECT_NEAR(seen.growth_rate, mode.real(), 0.075 * std::abs(mode.real()));
+    EXPECT_NEAR(seen.growth_rate, mode.real(), 0.1 * std::abs(mode.real()));
     if (factor > 1.0) {
       EXPECT_EQ(mode.real(), modes.growth_rate);  // hunting is the unstable mode
     }

@@ -22,9 +22,10 @@ VehicleMotion simulate_vehicle(const Vehicle& vehicle,
                                const VehiclePlacement& start, const VehicleMotionOptions& options) {
   vehicle.validate();
   route.validate();
-  require(std::isfinite(start_m) && start_m >= 0.0 && start_m <= route.total_length(), "start",
-          start_m, "must lie on the route (0 ... its length, m)");
   require(std::isfinite(length_m) && length_m > 0.0, "length", length_m, "must be positive (m)");
+  require(std::isfinite(start_m) && start_m <= route.total_length() && start_m + length_m > 0.0,
+          "start", start_m,
+          "must lie before the route's end with the piece reaching onto the route (m)");
   require(std::isfinite(options.time_step) && options.time_step >= 0.0 && options.time_step <= 0.01,
           "time step", options.time_step, "must lie in [0, 0.01] s (0: automatic)");
   require(std::isfinite(options.sample_distance) && options.sample_distance > 0.0,
@@ -39,7 +40,8 @@ VehicleMotion simulate_vehicle(const Vehicle& vehicle,
           "must be positive for the time-domain simulation (kg m^2)");
   require(std::isfinite(options.speed) && options.speed >= 0.0 && options.speed <= 100.0, "speed",
           options.speed, "must lie in [0, 100] m/s (0: the route's)");
-  const double speed = options.speed > 0.0 ? options.speed : track_at(route, start_m).speed_m_s;
+  const double speed =
+      options.speed > 0.0 ? options.speed : track_at(route, std::max(0.0, start_m)).speed_m_s;
   // Samples at equal intervals no longer than the sample distance, both ends included.
   const double intervals = std::ceil(length_m / options.sample_distance - 1e-9);
   require(intervals < 1e7, "samples", intervals,

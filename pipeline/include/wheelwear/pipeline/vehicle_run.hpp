@@ -47,9 +47,11 @@ struct DynamicPiece {
   double speed = 0.0;          ///< its section's speed [m/s]
   std::size_t start_case = 0;  ///< the RouteCase whose solution starts the simulation
   std::uint64_t seed = 0;      ///< of its generated irregularities (seed_for_section)
+  bool tangent = false;        ///< a tangent's stretch, else a whole transition
   /// The car body's centre runs from sim_start_m (every body at rest in the start case's
   /// state) over sim_length_m (samples after the first run_in of it), so that each wheelset
-  /// runs through the whole stretch after at least the run-in.
+  /// runs through the whole stretch after at least the run-in; sim_start_m < 0 for a piece at
+  /// the route's start (the track before it is the first section's).
   double sim_start_m = 0.0;
   double sim_length_m = 0.0;
 };
@@ -74,7 +76,8 @@ RoutePlan route_plan(const vehicle::Route& route, const TimeDomainKeys& time_dom
 
 /// A piece's irregularities: the measured record, none, or generated over the stretch the
 /// wheelsets run through with the piece's seed, faded in over the run-in from where the leading
-/// wheelset starts (IrregularitySpec::run_in), in route distance.
+/// wheelset starts (IrregularitySpec::run_in), in route distance. Throws InputError naming the
+/// file when a measured record does not cover where the piece's wheelsets run.
 vehicle::TrackIrregularities piece_irregularities(const DynamicPiece& piece,
                                                   const TimeDomainKeys& time_domain,
                                                   const vehicle::Vehicle& vehicle);
@@ -93,9 +96,12 @@ struct PieceRun {
 };
 
 /// The states of the wheelsets `worn` (in order of travel) where each runs through `piece`,
-/// every one weighted share / (its samples) / (worn wheelsets), and the piece's summary. A
-/// wheelset without a sample there (a simulation that stopped before) gives the start's state
-/// at the stretch's start, with the piece's share, so that the weights still sum to the share.
+/// every one weighted share / (its samples) / (worn wheelsets), and the piece's summary (its
+/// rms and extremes NaN for a wheelset without samples). A wheelset without a sample there (a
+/// simulation that stopped before it reached the stretch) gives its state in the start case
+/// (where the car body started) with its whole part of the share, so that the weights still sum
+/// to the share; a simulation that stopped early otherwise puts the share on the states it
+/// reached.
 std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
                                             const vehicle::VehicleMotion& motion,
                                             const RouteCase& start_case,
@@ -124,8 +130,9 @@ struct VehicleCollective {
   int kept = 0;
   int incomplete = 0;  ///< pieces whose simulation stopped early
   /// The linear critical speed on tangent track on the solve's profiles [m/s] (VehicleRun::
-  /// critical_speed); NaN where not computed or not found between 5 and 100 m/s.
+  /// critical_speed); NaN where not computed or not found (critical_speed_note says which).
   double critical_speed = std::numeric_limits<double>::quiet_NaN();
+  std::string critical_speed_note = "not computed";
 };
 
 /// Solves `run`'s vehicle in every case of its route on `wheels` (one profile for both wheels

@@ -106,7 +106,9 @@ struct VehicleMotion {
 
 /// The piece of `route` the car body's centre runs from `start_m` over `length_m` [m] (plus
 /// options.run_in before the first sample, so the simulation starts at start_m - run_in), at
-/// one speed. Each wheelset's track (curvature, cant, friction) is the
+/// one speed. `start_m` may lie before the route's start (a piece whose leading wheelset starts
+/// at the route's start), the piece reaching onto the route. Each wheelset's track (curvature,
+/// cant, friction) is the
 /// route's at its own distance, clamped to the route's ends. `irregularities` (route distance)
 /// moves the rails; outside the record (or with an empty one) the track is ideal, so a record
 /// should cover the piece and the run-in plus the vehicle's length (a wheelset crossing its end
