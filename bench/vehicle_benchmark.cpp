@@ -10,6 +10,7 @@
 #include "wheelwear/vehicle/quasi_static_curving.hpp"
 #include "wheelwear/vehicle/vehicle_file.hpp"
 #include "wheelwear/vehicle/vehicle_motion.hpp"
+#include "wheelwear/vehicle/vehicle_stability.hpp"
 
 namespace {
 
@@ -133,6 +134,34 @@ void BM_VehicleMotion(benchmark::State& state) {
 }
 // Argument: the FASTSIM grid of the dynamics (cells per strip and strips; 0: the model's 50).
 BENCHMARK(BM_VehicleMotion)->Arg(20)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The whole vehicle's linearised motion at one speed (the Jacobian of its 32 states by central
+// differences and its eigenvalues), and the search for its linear critical speed from 5 m/s in
+// steps of 5 m/s (argument 0) or from 2 m/s below it in steps of 2 m/s (argument 1, a run's
+// later solves), with the contact table on new S1002/60E1.
+void BM_VehicleModes(benchmark::State& state) {
+  const vehicle::Vehicle v = vehicle::default_vehicle();
+  const vehicle::WheelsetModel m = tabulated(standard_wheelset());
+  for (auto _ : state) benchmark::DoNotOptimize(vehicle::vehicle_modes(v, {m, m, m, m}, 44.44));
+}
+BENCHMARK(BM_VehicleModes)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_VehicleCriticalSpeed(benchmark::State& state) {
+  const vehicle::Vehicle v = vehicle::default_vehicle();
+  const vehicle::WheelsetModel m = tabulated(standard_wheelset());
+  vehicle::VehicleStabilityOptions options;
+  options.speed_step = 5.0;
+  options.tolerance = 1e-3;
+  if (state.range(0) == 1) {
+    options.start_speed = vehicle::vehicle_critical_speed(v, {m, m, m, m}, options).speed - 2.0;
+    options.speed_step = 2.0;
+  }
+  vehicle::CriticalSpeed c;
+  for (auto _ : state) c = vehicle::vehicle_critical_speed(v, {m, m, m, m}, options);
+  if (!c.found) state.SkipWithError("no critical speed below 100 m/s");
+  state.counters["critical_speed_m_s"] = c.speed;
+}
+BENCHMARK(BM_VehicleCriticalSpeed)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 BENCHMARK_MAIN();
