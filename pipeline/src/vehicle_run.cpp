@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 #include "wheelwear/vehicle/vehicle_stability.hpp"
 
 namespace wheelwear::pipeline {
@@ -42,12 +43,6 @@ vehicle::SteadyCurve condition_at(const vehicle::TrackPoint& point, double speed
   curve.running.friction_flange = point.friction_flange;
   curve.cant = point.cant_m;
   return curve;
-}
-
-std::string format_speed(double speed) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", speed);
-  return text;
 }
 
 // Adds `c` to `cases`, or its share to the case of the same condition already there (which takes
@@ -95,7 +90,7 @@ void find_critical_speed(const VehicleRun& run,
       out.critical_speed_note = options.start_speed > 0.0 ? "the crossing nearest the last solve's"
                                                           : "the lowest crossing from 5 m/s";
     } else {
-      out.critical_speed_note = "none found between " + format_speed(options.speed_step) +
+      out.critical_speed_note = "none found between " + core::format_number(options.speed_step) +
                                 " and 100 m/s (stable up to 100 m/s, or unstable at the lowest)";
     }
   } catch (const InputError& e) {
