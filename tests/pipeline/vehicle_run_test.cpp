@@ -191,7 +191,36 @@ TEST(VehicleScene, KeysAndTheirErrors) {
   EXPECT_NE(message("title = \"x\"\n").find("[vehicle] file"), std::string::npos);
 }
 
-class VehicleRunTest : public WearRunTest {};
+class VehicleRunTest : public WearRunTest {
+ protected:
+  // Runs `text` into `killed`, interrupted after its second step (step 1), then resumes it.
+  void interrupted_then_resumed(const std::string& text, const fs::path& killed) {
+    RunOptions stop;
+    stop.progress = [](const RunProgress& p) {
+      if (p.step == 1) throw std::runtime_error("interrupted");
+    };
+    EXPECT_THROW(run_scene(parse_scene(text, dir_), text, dir_, false, killed, stop),
+                 std::runtime_error);
+    ASSERT_EQ(ResultsFile::read(killed).completed_steps(), 2);
+    resume_run(killed, {});
+  }
+};
+
+// Every array of step `step` whose name starts with `prefix` holds the same values in `res` as
+// in `ref`, NaN where NaN; `compared` counts the values.
+void expect_same_arrays(const ResultsFile& ref, const ResultsFile& res, int step,
+                        const std::string& prefix, int& compared) {
+  for (const std::string& name : ref.step_array_names(step)) {
+    if (name.rfind(prefix, 0) != 0) continue;
+    const auto a = ref.read_step_array(step, name), b = res.read_step_array(step, name);
+    ASSERT_EQ(a.size(), b.size()) << name;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      if (std::isnan(a[i]) && std::isnan(b[i])) continue;
+      ASSERT_EQ(a[i], b[i]) << "step " << step << ' ' << name << '[' << i << ']';
+      ++compared;
+    }
+  }
+}
 
 TEST_F(VehicleRunTest, RecordsTheVehicleAndResumesToIdenticalResults) {
   write("route.toml", kShortRoute);
@@ -232,28 +261,15 @@ TEST_F(VehicleRunTest, RecordsTheVehicleAndResumesToIdenticalResults) {
     EXPECT_NEAR(total, 1.0, 1e-12);
   }
 
-  // Interrupted after its second step (step 1), then resumed.
-  RunOptions stop;
-  stop.progress = [](const RunProgress& p) {
-    if (p.step == 1) throw std::runtime_error("interrupted");
-  };
-  EXPECT_THROW(run_scene(parse_scene(text, dir_), text, dir_, false, killed, stop),
-               std::runtime_error);
-  ASSERT_EQ(ResultsFile::read(killed).completed_steps(), 2);
-  resume_run(killed, {});
+  interrupted_then_resumed(text, killed);
+  ASSERT_FALSE(HasFatalFailure());
   const ResultsFile res = ResultsFile::read(killed);
   ASSERT_EQ(res.completed_steps(), 3);
   int compared = 0;
-  for (int step = 0; step < 3; ++step)
-    for (const std::string& name : ref.step_array_names(step)) {
-      const auto a = ref.read_step_array(step, name), b = res.read_step_array(step, name);
-      ASSERT_EQ(a.size(), b.size()) << name;
-      for (std::size_t i = 0; i < a.size(); ++i) {
-        if (std::isnan(a[i]) && std::isnan(b[i])) continue;
-        ASSERT_EQ(a[i], b[i]) << "step " << step << ' ' << name << '[' << i << ']';
-        ++compared;
-      }
-    }
+  for (int step = 0; step < 3; ++step) {
+    expect_same_arrays(ref, res, step, "", compared);
+    ASSERT_FALSE(HasFatalFailure());
+  }
   EXPECT_GT(compared, 1000);
 }
 
@@ -293,28 +309,15 @@ TEST_F(VehicleRunTest, ResumedBetweenSolvesKeepsThePiecesAndTheCriticalSpeed) {
       2e3, 1e3, 1e-3, "tangent_length_m = 20\nrun_in_m = 10\nsample_distance_m = 2\n", true);
   const fs::path reference = dir_ / "reference.h5", killed = dir_ / "killed.h5";
   run(text, reference);
-  RunOptions stop;
-  stop.progress = [](const RunProgress& p) {
-    if (p.step == 1) throw std::runtime_error("interrupted");
-  };
-  EXPECT_THROW(run_scene(parse_scene(text, dir_), text, dir_, false, killed, stop),
-               std::runtime_error);
-  resume_run(killed, {});
+  interrupted_then_resumed(text, killed);
+  ASSERT_FALSE(HasFatalFailure());
   const ResultsFile ref = ResultsFile::read(reference), res = ResultsFile::read(killed);
   ASSERT_EQ(res.completed_steps(), 3);
   int compared = 0;
   for (int step = 0; step < 3; ++step) {
     EXPECT_EQ(ref.read_step_array(step, "vehicle/solved").at(0), step == 0 ? 1.0 : 0.0);
-    for (const std::string& name : ref.step_array_names(step)) {
-      if (name.rfind("vehicle/", 0) != 0) continue;
-      const auto a = ref.read_step_array(step, name), b = res.read_step_array(step, name);
-      ASSERT_EQ(a.size(), b.size()) << name;
-      for (std::size_t i = 0; i < a.size(); ++i) {
-        if (std::isnan(a[i]) && std::isnan(b[i])) continue;
-        ASSERT_EQ(a[i], b[i]) << "step " << step << ' ' << name << '[' << i << ']';
-        ++compared;
-      }
-    }
+    expect_same_arrays(ref, res, step, "vehicle/", compared);
+    ASSERT_FALSE(HasFatalFailure());
     for (const char* text_name :
          {"vehicle/pieces/label", "vehicle/pieces/message", "vehicle/critical_speed_note"}) {
       const std::string path = ResultsFile::step_group(step) + "/" + text_name;
