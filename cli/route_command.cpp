@@ -111,7 +111,7 @@ void print_text(const pipeline::VehicleCollective& v, double seconds) {
   std::printf(
       "%zu conditions and %zu time-domain pieces in %.1f s; %d conditions did not "
       "converge (their last iterate is shown), %d pieces stopped early\n",
-      v.cases.size(), v.pieces.size(), seconds, v.unconverged, v.incomplete);
+      v.cases.size(), v.pieces.size(), seconds, v.unconverged, v.incomplete());
 }
 
 void print_json(const pipeline::VehicleCollective& v, double seconds) {
@@ -185,7 +185,7 @@ void print_json(const pipeline::VehicleCollective& v, double seconds) {
   std::cout << JsonObject()
                    .add("elapsed", seconds)
                    .add("unconverged", v.unconverged)
-                   .add("incomplete_pieces", v.incomplete)
+                   .add("incomplete_pieces", v.incomplete())
                    .add("critical_speed", v.critical_speed)
                    .add("critical_speed_note", v.critical_speed_note)
                    .add("states", static_cast<int>(v.states.size()))

@@ -119,13 +119,16 @@ void simulate_pieces(const VehicleRun& run,
     sampled[p] =
         piece_states(piece, motion, out.cases[piece.start_case], start, worn, out.piece_runs[p]);
   });
-  for (std::size_t p = 0; p < out.pieces.size(); ++p) {
-    if (!out.piece_runs[p].completed) ++out.incomplete;
-    for (WheelsetStateSpec& s : sampled[p]) out.states.push_back(std::move(s));
-  }
+  for (std::vector<WheelsetStateSpec>& states : sampled)
+    for (WheelsetStateSpec& s : states) out.states.push_back(std::move(s));
 }
 
 }  // namespace
+
+int VehicleCollective::incomplete() const {
+  return static_cast<int>(std::count_if(piece_runs.begin(), piece_runs.end(),
+                                        [](const PieceRun& r) { return !r.completed; }));
+}
 
 std::vector<int> VehicleRun::worn_wheelsets() const {
   if (wheelsets == WheelsetSelection::leading) return {0, 2};

@@ -295,7 +295,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
                                 "included (an upper bound: the steps' deepest increments summed)"));
       if (!carry.last.pieces.empty())
         g.arrays.push_back(scalar("vehicle/incomplete_pieces",
-                                  static_cast<double>(carry.last.incomplete), "1",
+                                  static_cast<double>(carry.last.incomplete()), "1",
                                   "time-domain pieces whose simulation stopped early (the "
                                   "vehicle left the rails); their samples up to there are used"));
       g.arrays.push_back(scalar("vehicle/critical_speed", carry.last.critical_speed, "m/s",
@@ -435,7 +435,6 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
     carry.last.cases = std::move(plan.cases);
     carry.last.pieces = std::move(plan.pieces);
     carry.last.piece_runs = detail::read_vehicle_pieces(file, last, carry.last.pieces.size());
-    for (const PieceRun& r : carry.last.piece_runs) carry.last.incomplete += r.completed ? 0 : 1;
     carry.last.states = detail::read_collective(file, last, "collective/");
     // The cases' solved states as recorded: the records of the steps until the next solve,
     // and where that solve starts.

@@ -190,7 +190,7 @@ class TimeDomainCollective : public ::testing::Test {
 TEST_F(TimeDomainCollective, KernelMeetsTheDynamicsForcesAtEverySample) {
   const VehicleCollective v = solve_vehicle_collective(run_, kernel_, {&wheel_});
   ASSERT_EQ(v.pieces.size(), 2u);  // the transition and the tangent
-  EXPECT_EQ(v.incomplete, 0);
+  EXPECT_EQ(v.incomplete(), 0);
   double total = 0.0;
   for (const WheelsetStateSpec& s : v.states) total += s.weight;
   EXPECT_NEAR(total, 1.0, 1e-12);

@@ -128,7 +128,8 @@ struct VehicleCollective {
   /// Cases whose solve on the current profiles did not converge from the last converged one,
   /// which they keep (its states on the earlier profiles).
   int kept = 0;
-  int incomplete = 0;  ///< pieces whose simulation stopped early
+  /// Pieces whose simulation stopped early.
+  int incomplete() const;
   /// The linear critical speed on tangent track on the solve's profiles [m/s] (VehicleRun::
   /// critical_speed); NaN where not computed or not found (critical_speed_note says which).
   double critical_speed = std::numeric_limits<double>::quiet_NaN();
