@@ -6,7 +6,7 @@
 namespace wheelwear::cli {
 
 namespace {
-std::string quoted(std::string_view text) {
+std::string json_quoted(std::string_view text) {
   std::string out(1, '"');
   out += json_escape(text);
   out += '"';
@@ -60,11 +60,11 @@ JsonObject& JsonObject::add(std::string_view key, bool value) {
 }
 
 JsonObject& JsonObject::add(std::string_view key, std::string_view value) {
-  return add_raw(key, quoted(value));
+  return add_raw(key, json_quoted(value));
 }
 
 JsonObject& JsonObject::add_raw(std::string_view key, std::string_view json) {
-  members_.push_back(quoted(key) + ": " + std::string(json));
+  members_.push_back(json_quoted(key) + ": " + std::string(json));
   return *this;
 }
 
@@ -83,7 +83,7 @@ std::string json_array(const std::vector<std::string>& elements) {
 std::string json_strings(const std::vector<std::string>& texts) {
   std::vector<std::string> elements;
   elements.reserve(texts.size());
-  for (const std::string& text : texts) elements.push_back(quoted(text));
+  for (const std::string& text : texts) elements.push_back(json_quoted(text));
   return json_array(elements);
 }
 
