@@ -88,6 +88,23 @@ vehicle::TrackIrregularities piece_irregularities(const DynamicPiece& piece,
   return record;
 }
 
+namespace {
+
+// The samples wheelset k would have had in the stretch had the simulation completed: the car
+// body's samples fall sample_spacing apart from the first, so the wheelset's do from its first.
+// At least 1, so that a wheelset that was never sampled gets the whole of its part.
+long planned_in_stretch(const DynamicPiece& piece, const vehicle::VehicleMotion& motion,
+                        std::size_t k) {
+  if (motion.samples.empty()) return 1;
+  const double first = motion.samples.front().wheelsets[k].distance;
+  long count = 0;
+  for (long i = 0; i < motion.planned_samples; ++i)
+    if (in_stretch(piece, first + static_cast<double>(i) * motion.sample_spacing)) ++count;
+  return std::max(count, 1L);
+}
+
+}  // namespace
+
 std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
                                             const vehicle::VehicleMotion& motion,
                                             const RouteCase& start_case,
@@ -124,21 +141,27 @@ std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
   std::vector<WheelsetStateSpec> states;
   const double per_wheelset = piece.share / static_cast<double>(worn.size());
   for (int k : worn) {
-    const int n = summary.samples[static_cast<std::size_t>(k)];
-    if (n == 0) {
-      // Stopped before this wheelset reached the stretch: its state where the car body started
-      // stands in.
-      WheelsetStateSpec s = wheelset_state(start_case, start, k, per_wheelset);
-      s.label = piece.label + ", wheelset " + std::to_string(k + 1) + " (start state)";
-      states.push_back(std::move(s));
-      continue;
-    }
-    const double weight = per_wheelset / n;
+    const auto K = static_cast<std::size_t>(k);
+    const int n = summary.samples[K];
+    const long planned =
+        std::max<long>({1L, n, motion.completed ? 0L : planned_in_stretch(piece, motion, K)});
+    const double weight = per_wheelset / static_cast<double>(planned);
     for (const vehicle::VehicleSample& sample : motion.samples) {
-      const vehicle::WheelsetMotionSample& w = sample.wheelsets[static_cast<std::size_t>(k)];
+      const vehicle::WheelsetMotionSample& w = sample.wheelsets[K];
       if (!in_stretch(piece, w.distance)) continue;
       states.push_back(
           motion_state(w.state, w.forces, w.running, sample_label(piece, k, w.distance), weight));
+    }
+    if (planned > n) {
+      // The part of the stretch the stopped simulation did not reach: the wheelset's state where
+      // the car body started stands in, rather than the last states before the stop (which
+      // lead up to it) carrying more than their own share.
+      const double rest =
+          per_wheelset * static_cast<double>(planned - n) / static_cast<double>(planned);
+      WheelsetStateSpec s = wheelset_state(start_case, start, k, rest);
+      s.label = piece.label + ", wheelset " + std::to_string(k + 1) +
+                (n == 0 ? " (start state)" : " (start state, for the part not simulated)");
+      states.push_back(std::move(s));
     }
   }
   return states;

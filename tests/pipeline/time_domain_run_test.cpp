@@ -336,6 +336,59 @@ cant_m = 0.03
   EXPECT_NEAR(total, 1.0, 1e-12);
 }
 
+// A simulation that stops early: each sample it reached keeps the weight it has in the
+// completed run, and the start state carries the rest of each wheelset's part, so the piece's
+// states still weigh its share and the states before the stop are not inflated.
+TEST_F(TimeDomainCollective, AStoppedPieceWeightsItsSamplesAsTheCompletedRunDoes) {
+  const VehicleCollective v = solve_vehicle_collective(run_, kernel_, {&wheel_});
+  const std::vector<int> worn = run_.worn_wheelsets();
+  const std::size_t p = 0;
+  const DynamicPiece& piece = v.pieces[p];
+  const vehicle::VehicleMotion full = simulate(v, p);
+  ASSERT_TRUE(full.completed);
+  PieceRun full_summary;
+  const std::vector<WheelsetStateSpec> complete = piece_states(
+      piece, full, v.cases[piece.start_case], v.curving[piece.start_case], worn, full_summary);
+
+  vehicle::VehicleMotion stopped = full;
+  stopped.completed = false;
+  stopped.message = "stopped for the test";
+  stopped.samples.resize(full.samples.size() / 2);
+  PieceRun summary;
+  const std::vector<WheelsetStateSpec> states = piece_states(
+      piece, stopped, v.cases[piece.start_case], v.curving[piece.start_case], worn, summary);
+
+  const double per_wheelset = piece.share / static_cast<double>(worn.size());
+  double total = 0.0;
+  int compared = 0;
+  for (const WheelsetStateSpec& s : states) total += s.weight;
+  EXPECT_NEAR(total, piece.share, 1e-15);
+  for (int k : worn) {
+    const auto K = static_cast<std::size_t>(k);
+    const int planned = full_summary.samples[K], reached = summary.samples[K];
+    ASSERT_GT(planned, reached) << k;
+    const std::string prefix = piece.label + ", wheelset " + std::to_string(k + 1);
+    double sampled = 0.0, rest = 0.0;
+    for (const WheelsetStateSpec& s : states) {
+      if (s.label.rfind(prefix + ",", 0) == 0) {
+        // The completed run's weight for the same sample.
+        const auto same =
+            std::find_if(complete.begin(), complete.end(),
+                         [&](const WheelsetStateSpec& c) { return c.label == s.label; });
+        ASSERT_NE(same, complete.end()) << s.label;
+        EXPECT_EQ(s.weight, same->weight) << s.label;
+        sampled += s.weight;
+        ++compared;
+      } else if (s.label.rfind(prefix + " (start state", 0) == 0) {
+        rest += s.weight;
+      }
+    }
+    EXPECT_NEAR(sampled, per_wheelset * reached / planned, 1e-15) << k;
+    EXPECT_NEAR(rest, per_wheelset * (planned - reached) / planned, 1e-15) << k;
+  }
+  EXPECT_GT(compared, 10);
+}
+
 TEST(TimeDomainScene, KeysAndTheirErrors) {
   const std::string head = "[vehicle]\nfile = \"default\"\n[route]\nfile = \"default\"\n";
   const Scene s = parse_scene(head +

@@ -60,6 +60,8 @@ VehicleMotion simulate_vehicle(const Vehicle& vehicle,
   VehicleSystem system(vehicle, models, route, irregularities, s0, speed);
   State x = initial_state(start);
   VehicleMotion motion;
+  motion.planned_samples = samples_wanted;
+  motion.sample_spacing = spacing;
   try {
     VehicleSample first;
     State dxdt{};

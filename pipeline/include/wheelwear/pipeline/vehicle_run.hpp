@@ -97,11 +97,11 @@ struct PieceRun {
 
 /// The states of the wheelsets `worn` (in order of travel) where each runs through `piece`,
 /// every one weighted share / (its samples) / (worn wheelsets), and the piece's summary (its
-/// rms and extremes NaN for a wheelset without samples). A wheelset without a sample there (a
-/// simulation that stopped before it reached the stretch) gives its state in the start case
-/// (where the car body started) with its whole part of the share, so that the weights still sum
-/// to the share; a simulation that stopped early otherwise puts the share on the states it
-/// reached.
+/// rms and extremes NaN for a wheelset without samples). A simulation that stopped early
+/// weights each sample it reached as a completed one would (share / samples planned / worn
+/// wheelsets), and the wheelset's state in the start case (where the car body started) stands
+/// for the part of the stretch it did not reach, with the rest of its part of the share (all of
+/// it for a wheelset never sampled there); the weights always sum to the share.
 std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
                                             const vehicle::VehicleMotion& motion,
                                             const RouteCase& start_case,

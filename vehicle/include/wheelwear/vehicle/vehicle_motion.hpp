@@ -102,6 +102,10 @@ struct VehicleMotion {
   double time_step = 0.0;         ///< used [s]
   long steps = 0;                 ///< integration steps
   long wheelset_evaluations = 0;  ///< calls of wheelset_forces
+  /// The samples a completed simulation has, at equal intervals of sample_spacing [m] of the
+  /// car body's travel (a stopped one has fewer).
+  long planned_samples = 0;
+  double sample_spacing = 0.0;
 };
 
 /// The piece of `route` the car body's centre runs from `start_m` over `length_m` [m] (plus
