@@ -23,7 +23,7 @@ constexpr double kGoldenLengthTolerance = 1e-12;
 // Everything else, relative to the largest magnitude in the same array (so entries near zero
 // are judged on the array's scale): 1e-8. Measured between builds of the same commit: native
 // and portable at most 2.6e-10 (states/roll), -O1 and -O3 2.0e-9 (states/psi, the SDEC's
-// orientation, fitted to a nearly round patch); profile coordinates 3.6e-13 m.
+// orientation); profile coordinates 3.6e-13 m.
 constexpr double kGoldenRelativeTolerance = 1e-8;
 // The unsmoothed wear rate per 0.1 mm bin, relative to its peak: 1e-8. A bin at a patch's edge
 // takes cells whose centres move across the bin border with the last digits of the patch's
