@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs every test: the optimised build, then a short
 # fuzzing run of the input readers under AddressSanitizer and UndefinedBehaviorSanitizer.
-# With --sanitizers the whole suite is also built and run under both sanitizers (about 25 more
+# With --sanitizers the whole suite is also built and run under both sanitizers (about 19 more
 # minutes on two cores, which would take CI past its budget; run it before a release and after
 # changes to memory handling). Each stage prints its elapsed time, and a summary of all of them
 # closes the output.
