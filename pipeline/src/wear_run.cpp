@@ -294,10 +294,11 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
                                 "deepest wear since the vehicle's last solve, this step's "
                                 "included (an upper bound: the steps' deepest increments summed)"));
       if (!carry.last.pieces.empty())
-        g.arrays.push_back(scalar("vehicle/incomplete_pieces",
-                                  static_cast<double>(carry.last.incomplete()), "1",
-                                  "time-domain pieces whose simulation stopped early (the "
-                                  "vehicle left the rails); their samples up to there are used"));
+        g.arrays.push_back(
+            scalar("vehicle/incomplete_pieces", static_cast<double>(carry.last.incomplete()), "1",
+                   "time-domain pieces whose simulation stopped early (the "
+                   "vehicle left the rails); their samples up to there keep their weight, and "
+                   "the start state stands for the rest"));
       g.arrays.push_back(scalar("vehicle/critical_speed", carry.last.critical_speed, "m/s",
                                 "linear critical speed on tangent track on the profiles of the "
                                 "vehicle's last solve; NaN: not computed or not found "
