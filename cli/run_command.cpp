@@ -31,6 +31,7 @@ struct RunArgs {
   std::string resume;
   int threads = 0;
   bool overwrite = false;
+  bool allow_hook = false;
   bool quiet = false;
   bool json = false;
   std::string export_default;
@@ -243,6 +244,7 @@ void run(const RunArgs& args) {
   const auto threads = thread_limit(args.threads);
   pipeline::RunOptions options;
   options.overwrite = args.overwrite;
+  options.allow_hook = args.allow_hook;
   if (!args.quiet) options.progress = show_progress;
 
   if (!args.resume.empty()) {
@@ -289,6 +291,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 4096));
   cmd->add_flag("--overwrite", args->overwrite, "replace an existing output file");
+  cmd->add_flag("--allow-hook", args->allow_hook,
+                "let the scene's co-simulation hook ([hook] command) run its program at its steps "
+                "(with --resume too); its files go to OUTPUT.hook/ (docs/scenes.md)");
   cmd->add_flag("-q,--quiet", args->quiet, "no progress on stderr");
   cmd->add_flag("--json", args->json, "print the summary as JSON");
   cmd->add_option("--export-default-scene", args->export_default,

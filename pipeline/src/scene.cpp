@@ -63,6 +63,13 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   std::string law_table;
   std::optional<int> vehicle_line, route_line;
   // [vehicle] and [route] fill one VehicleRun, made on first use.
+  auto hook = [&]() -> CosimulationHook& {
+    if (!s.hook) {
+      s.hook.emplace();
+      s.hook->working_directory = base_directory;
+    }
+    return *s.hook;
+  };
   auto vehicle_run = [&]() -> VehicleRun& {
     if (!s.vehicle_run) s.vehicle_run.emplace();
     return *s.vehicle_run;
@@ -350,6 +357,15 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                    vehicle_run().time_domain.tangent_length =
                        number(n, k, 10.0, 1e5, "the simulated stretch of each tangent in m");
                  }},
+                {"transitions",
+                 [&](const auto& n, const auto& k) {
+                   const std::string name = text(n, k);
+                   if (name != "time" && name != "quasi-static")
+                     throw InputError(where(n.source(), k) + " = \"" + name +
+                                      "\": use time (simulated whole, with the tangents) or "
+                                      "quasi-static (each at its midpoint, as the curves)");
+                   vehicle_run().time_domain.simulate_transitions = name == "time";
+                 }},
                 {"run_in_m",
                  [&](const auto& n, const auto& k) {
                    vehicle_run().time_domain.run_in =
@@ -359,6 +375,28 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                  [&](const auto& n, const auto& k) {
                    vehicle_run().time_domain.sample_distance =
                        number(n, k, 0.01, 100.0, "the distance between two samples in m");
+                 }}})},
+      {"hook",
+       section("hook",
+               {{"command",
+                 [&](const auto& n, const auto& k) {
+                   CosimulationHook& h = hook();
+                   h.command = detail::hook_command(n, k, base_directory);
+                   h.line = static_cast<int>(n.source().begin.line);
+                 }},
+                {"resolve_depth_m",
+                 [&](const auto& n, const auto& k) {
+                   hook().resolve_depth =
+                       number(n, k, 0.0, 0.01, "the wear depth between two calls in m");
+                 }},
+                {"timeout_s",
+                 [&](const auto& n, const auto& k) {
+                   hook().timeout =
+                       number(n, k, 0.1, 1e6, "the longest run of one call in s");
+                 }},
+                {"profile_format",
+                 [&](const auto& n, const auto& k) {
+                   hook().profile_format = detail::hook_profile_format(n, k);
                  }}})},
       {"load_collective",
        section("load_collective",
@@ -421,6 +459,18 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   }
   s.wear_law_table = law_table;
   s.step_distance = std::min(s.step_distance, s.distance);  // one step need not exceed the run
+  if (s.hook) {
+    if (s.hook->command.empty())
+      throw InputError(
+          "scene: [hook] has no command; give command = [\"program\", \"args\", "
+          "..., \"{collective}\"]");
+    if (s.vehicle_run || collective_line)
+      throw InputError("scene line " + std::to_string(s.hook->line) + ": [hook] and " +
+                       (s.vehicle_run ? "[vehicle]" : "[load_collective]") +
+                       " both give the run's states; give one: the hook's program makes the "
+                       "collective of every step");
+    return s;
+  }
   if (s.vehicle_run) {
     if (!vehicle_line || !route_line) {
       throw InputError(std::string("scene: a vehicle run needs both [vehicle] file and [route] "
@@ -437,10 +487,11 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   if (s.states.empty()) {
     throw InputError(collective_line ? "scene line " + std::to_string(*collective_line) +
                                            ": load_collective: no states"
-                                     : "scene: no [load_collective] and no [vehicle]; give "
-                                       "[load_collective] file = \"states.csv\" (or "
+                                     : "scene: no [load_collective], no [vehicle] and no [hook]; "
+                                       "give [load_collective] file = \"states.csv\" (or "
                                        "[[load_collective.state]] tables), or [vehicle] file and "
-                                       "[route] file (\"default\" for the built-in ones)");
+                                       "[route] file (\"default\" for the built-in ones), or a "
+                                       "co-simulation [hook] command");
   }
   double total = 0.0;
   for (const auto& state : s.states) total += state.weight;

@@ -106,6 +106,44 @@ double max_drop(const toml::node& node, const std::string& key) {
                 "the share of points the cleaning may discard (merged duplicates do not count)");
 }
 
+std::vector<std::string> hook_command(const toml::node& node, const std::string& key,
+                                      const std::filesystem::path& base) {
+  const toml::array* array = node.as_array();
+  std::vector<std::string> command;
+  if (array)
+    for (const toml::node& element : *array) {
+      const auto argument = element.value<std::string>();
+      if (!argument) {
+        command.clear();
+        break;
+      }
+      command.push_back(*argument);
+    }
+  if (!array || command.size() != array->size() || command.empty() || command.front().empty())
+    throw InputError(where(node.source(), key) +
+                     ": expected the program and its arguments as a list of strings, run without "
+                     "a shell, e.g. [\"python3\", \"mbs_batch.py\", \"{wheel}\", \"{rail}\", "
+                     "\"{collective}\"]");
+  try {
+    validate_hook_command(command);
+  } catch (const InputError& e) {
+    throw InputError(where(node.source(), key) + ": " + e.what());
+  }
+  const std::filesystem::path program(command.front());
+  if (program.is_relative() && command.front().find('/') != std::string::npos)
+    command.front() = resolve(base, command.front()).string();
+  return command;
+}
+
+HookProfileFormat hook_profile_format(const toml::node& node, const std::string& key) {
+  const std::string name = text(node, key);
+  if (name == "csv") return HookProfileFormat::csv;
+  if (name == "simpack") return HookProfileFormat::simpack;
+  if (name == "miniprof") return HookProfileFormat::miniprof;
+  throw InputError(where(node.source(), key) + " = \"" + name +
+                   "\": use csv (y, z in mm), simpack (.prw/.prr) or miniprof (.whl/.ban)");
+}
+
 std::vector<WheelsetStateSpec> inline_states(const toml::node& node, const std::string& key) {
   const toml::array* array = node.as_array();
   if (!array || !array->is_array_of_tables()) {

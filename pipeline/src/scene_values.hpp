@@ -51,6 +51,14 @@ profiles::WheelOrigin wheel_origin(const toml::node& node, const std::string& ke
 // The share of a file's points the cleaning may discard.
 double max_drop(const toml::node& node, const std::string& key);
 
+// [hook] command: a list of strings, the program first; a relative program name with a '/' is
+// taken from `base` (a bare name is looked up on PATH).
+std::vector<std::string> hook_command(const toml::node& node, const std::string& key,
+                                      const std::filesystem::path& base);
+
+// [hook] profile_format: "csv", "simpack" or "miniprof".
+HookProfileFormat hook_profile_format(const toml::node& node, const std::string& key);
+
 // [[load_collective.state]] tables.
 std::vector<WheelsetStateSpec> inline_states(const toml::node& node, const std::string& key);
 

@@ -160,7 +160,8 @@ RoutePlan route_plan(const vehicle::Route& route, const TimeDomainKeys& time_dom
   RoutePlan plan;
   for (std::size_t i = 0; i < route.sections.size(); ++i) {
     const vehicle::RouteSection& section = route.sections[i];
-    if (section.kind == vehicle::SectionKind::curve) {
+    if (section.kind == vehicle::SectionKind::curve ||
+        (section.kind == vehicle::SectionKind::transition && !time_domain.simulate_transitions)) {
       add_case(plan.cases, section_case(route, i, starts[i], total));
       continue;
     }

@@ -84,6 +84,25 @@ TEST(RoutePlan, DefaultRoutePiecesCoverTangentsAndTransitions) {
   EXPECT_TRUE(quasi_static.pieces.empty());
   ASSERT_EQ(quasi_static.cases.size(), route_cases(route).size());
 
+  // Transitions quasi-statically: only the 5 tangents simulated; the 14 transitions join the
+  // curves as conditions at their midpoints, so the shares still sum to the whole route.
+  TimeDomainKeys tangents_only;
+  tangents_only.simulate_transitions = false;
+  const RoutePlan mixed = route_plan(route, tangents_only, car);
+  ASSERT_EQ(mixed.pieces.size(), 5u);
+  double total = 0.0;
+  int transitions = 0;
+  for (const DynamicPiece& p : mixed.pieces) {
+    EXPECT_EQ(route.sections[p.section].kind, vehicle::SectionKind::tangent);
+    total += p.share;
+  }
+  for (const RouteCase& c : mixed.cases) {
+    total += c.share;
+    transitions += c.label.find("transition") != std::string::npos && c.share > 0.0 ? 1 : 0;
+  }
+  EXPECT_NEAR(total, 1.0, 1e-12);
+  EXPECT_GT(transitions, 0);
+
   for (auto bad : {&TimeDomainKeys::tangent_length, &TimeDomainKeys::sample_distance}) {
     TimeDomainKeys k;
     k.*bad = 0.0;
@@ -422,6 +441,10 @@ TEST(TimeDomainScene, KeysAndTheirErrors) {
   EXPECT_NE(message("tangent_length_m = 0\n").find("tangent_length_m"), std::string::npos);
   EXPECT_NE(message("sample_distance_m = 0\n").find("sample_distance_m"), std::string::npos);
   EXPECT_NE(message("run_in = 5\n").find("run_in"), std::string::npos);  // the unit missing
+  EXPECT_NE(message("transitions = \"whole\"\n").find("quasi-static"), std::string::npos);
+  EXPECT_TRUE(d.simulate_transitions);
+  EXPECT_FALSE(parse_scene(head + "[time_domain]\ntransitions = \"quasi-static\"\n", {})
+                   .vehicle_run->time_domain.simulate_transitions);
 }
 
 }  // namespace

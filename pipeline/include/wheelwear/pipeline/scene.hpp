@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "wheelwear/pipeline/cosimulation_hook.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
 #include "wheelwear/tangential/contact_model.hpp"
@@ -96,8 +97,11 @@ struct TimeDomainKeys {
   std::string irregularity_file;          ///< its resolved path, else empty
   std::uint64_t seed = 1;                 ///< base seed; each section draws its own from it
   double tangent_length = 200.0;          ///< simulated stretch of each tangent [m]
-  double run_in = 50.0;                   ///< run before a stretch's first sample [m]
-  double sample_distance = 0.5;           ///< longest distance between two samples [m]
+  /// Transitions simulated in time, whole; false: each a quasi-static condition at its
+  /// midpoint's curvature and cant, as with enabled = false.
+  bool simulate_transitions = true;
+  double run_in = 50.0;          ///< run before a stretch's first sample [m]
+  double sample_distance = 0.5;  ///< longest distance between two samples [m]
 };
 
 /// A vehicle on a route, whose own steady states make each step's collective
@@ -178,6 +182,8 @@ struct Scene {
   std::vector<WheelsetStateSpec> states;
   /// The vehicle and its route ([vehicle] and [route]), instead of a hand-written collective.
   std::optional<VehicleRun> vehicle_run;
+  /// An outside program that makes every step's collective ([hook]), instead of the above.
+  std::optional<CosimulationHook> hook;
 };
 
 /// Reads a file named in a scene (a profile, the collective, a wear table) as text.

@@ -27,7 +27,10 @@ struct RunProgress {
 
 /// How a run is driven.
 struct RunOptions {
-  bool overwrite = false;                            ///< replace an existing output file
+  bool overwrite = false;  ///< replace an existing output file
+  /// Let a scene's co-simulation hook ([hook] command) run its program; a scene with a hook is
+  /// refused without it.
+  bool allow_hook = false;
   std::function<void(const RunProgress&)> progress;  ///< called after every step
 };
 
@@ -43,6 +46,10 @@ struct RunSummary {
   std::size_t table_patches = 0;    ///< of them, with totals from the book of tables ("best")
   int vehicle_solves = 0;           ///< a vehicle run's solves of its vehicle by this process
 };
+
+/// The directory beside `output` where a co-simulation hook's calls keep their files
+/// (`output` + ".hook", a step_NNNNNN directory per call).
+std::filesystem::path hook_directory(const std::filesystem::path& output);
 
 /// Runs `scene` from its new profile and writes `output` (see README, "Results file").
 /// `scene_text` is recorded in the file; `scene_directory` resolves its relative file names on
