@@ -30,6 +30,7 @@ struct CurvingArgs {
   double cant = 0.0;
   double speed = 0.0;
   std::optional<double> friction;
+  double traction = 0.0;
   bool json = false;
   bool contact_table = false;
   std::string export_vehicle;
@@ -151,6 +152,7 @@ void curving(const CurvingArgs& args) {
   curve.running = {args.speed, args.radius, args.friction.value_or(scene.friction)};
   if (!args.friction) curve.running.friction_flange = scene.friction_flange;
   curve.cant = args.cant;
+  curve.traction = args.traction;
   require(std::isfinite(args.speed) && args.speed > 0.0, "--speed", args.speed,
           "the speed must be positive (m/s)");
   require(std::isfinite(args.radius) && (args.radius == 0.0 || std::abs(args.radius) >= 50.0),
@@ -206,6 +208,11 @@ void add_curving_command(CLI::App& app) {
   cmd->add_option("--friction", args->friction,
                   "friction coefficient, top of rail and flange alike (default: the scene's)")
       ->check(CLI::Range(0.01, 1.0));
+  cmd->add_option("--traction", args->traction,
+                  "longitudinal force per powered axle [N]: > 0 traction, < 0 braking (default 0, "
+                  "coasting); the vehicle file's powered_wheelsets carry it, the others roll "
+                  "freely")
+      ->check(CLI::Range(-5e5, 5e5));
   cmd->add_flag("--json", args->json, "print the result as JSON");
   cmd->add_flag("--contact-table", args->contact_table,
                 "interpolate the contacts from a look-up table built first (as a run does; "

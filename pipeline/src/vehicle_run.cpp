@@ -18,11 +18,15 @@ namespace wheelwear::pipeline {
 namespace {
 
 // What makes two running conditions the same.
-using CaseKey = std::tuple<double, double, double, double, double>;
+using CaseKey = std::tuple<double, double, double, double, double, double>;
 
 CaseKey case_key(const vehicle::SteadyCurve& c) {
-  return {c.running.curve_radius, c.cant, c.running.speed, c.running.friction,
-          c.running.friction_flange.value_or(c.running.friction)};
+  return {c.running.curve_radius,
+          c.cant,
+          c.running.speed,
+          c.running.friction,
+          c.running.friction_flange.value_or(c.running.friction),
+          c.traction};
 }
 
 std::string case_label(const vehicle::RouteSection& section, std::size_t index,
@@ -42,6 +46,7 @@ vehicle::SteadyCurve condition_at(const vehicle::TrackPoint& point, double speed
   curve.running.friction = point.friction_top;
   curve.running.friction_flange = point.friction_flange;
   curve.cant = point.cant_m;
+  curve.traction = point.traction_N;
   return curve;
 }
 

@@ -58,8 +58,9 @@ TEST(RouteCases, DefaultRouteKeepsEverySectionsShare) {
 }
 
 // The wear kernel's forces at the vehicle's states against the vehicle's own, with `slack` [N]
-// added to the tolerances of the direct solve (the contact table's miss).
-void expect_kernel_meets_vehicle(bool contact_table, double slack) {
+// added to the tolerances of the direct solve (the contact table's miss); `braking` [N] per axle
+// on the route's curve (all four axles of the built-in coach are powered).
+void expect_kernel_meets_vehicle(bool contact_table, double slack, double braking = 0.0) {
   Scene scene = parse_scene(
       "[load_collective]\n[[load_collective.state]]\naxle_load_N = 1e5\n"
       "speed_m_s = 40\n",
@@ -67,6 +68,7 @@ void expect_kernel_meets_vehicle(bool contact_table, double slack) {
   VehicleRun run;
   run.vehicle = vehicle::default_vehicle();
   run.route = vehicle::parse_route(kShortRoute, "test route");
+  run.route.sections.front().traction_N = braking;
   run.contact_table = contact_table;
   run.time_domain.enabled = false;
   run.critical_speed = false;
@@ -105,15 +107,23 @@ void expect_kernel_meets_vehicle(bool contact_table, double slack) {
                   1e-6 * 55e3 + 1e-3 + slack);
       ++compared;
     }
-    // Free rolling: the axle torque within the curving solver's tolerance of 1e-7 of the sum of
-    // |Fx| r (1e-6 as the equilibrium test states it), plus what the load tolerance carries.
-    EXPECT_LE(std::abs(torque), 1e-6 * scale + (1e-3 + slack) * 0.46) << s.label;
+    // Free rolling (or the brake's torque F r0 in the curve): the axle torque within the curving
+    // solver's tolerance of 1e-7 of the sum of |Fx| r (1e-6 as the equilibrium test states it),
+    // plus what the load tolerance carries.
+    const double drive = i / 4 == 0 ? braking * 0.46 : 0.0;
+    EXPECT_LE(std::abs(torque - drive), 1e-6 * scale + (1e-3 + slack) * 0.46) << s.label;
   }
   EXPECT_EQ(compared, 24);
 }
 
 TEST(VehicleCollective, KernelMeetsTheVehiclesForcesAndFreeRolling) {
   expect_kernel_meets_vehicle(false, 0.0);
+}
+
+// Braking in the curve: the states carry the braked axles' spin, so the wear's creep forces brake
+// as the vehicle's do.
+TEST(VehicleCollective, KernelMeetsTheVehiclesForcesUnderBraking) {
+  expect_kernel_meets_vehicle(false, 0.0, -10e3);
 }
 
 TEST(VehicleCollective, KernelMeetsTheTabulatedVehiclesForces) {

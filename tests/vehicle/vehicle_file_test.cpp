@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <string>
 
 #include "wheelwear/core/input_error.hpp"
@@ -87,7 +88,30 @@ TEST(VehicleFile, BadInputIsRefusedNamingTheKey) {
   refused("0.0, 600.0, 1760.0", "0.0, 600.0, 100.0", "must not decrease");
   refused("lateral_clearance_m = 0.025", "lateral_clearance_m = 0.02", "lateral_clearance_m");
   refused("[car_body]", "[car_body", "vehicle file test.toml line");
-  EXPECT_EQ(checked, 10);
+  refused("powered_wheelsets = [1, 2, 3, 4]", "powered_wheelsets = [1, 5]", "wheelset.powered");
+  refused("powered_wheelsets = [1, 2, 3, 4]", "powered_wheelsets = [1, 1]", "once");
+  refused("powered_wheelsets = [1, 2, 3, 4]", "powered_wheelsets = 2", "list of wheelset");
+  refused("powered_wheelsets = [1, 2, 3, 4]", "powered_wheelsets = [1.5]", "once");
+  EXPECT_EQ(checked, 14);
+}
+
+// The axles a route's traction acts on: all four in the built-in coach (its brakes), any subset
+// in a file, none with [].
+TEST(VehicleFile, PoweredWheelsetsAreReadInOrderOfTravel) {
+  const std::array<bool, 4> all{true, true, true, true};
+  EXPECT_EQ(default_vehicle().powered, all);
+  const std::array<bool, 4> leading_bogie{true, true, false, false};
+  EXPECT_EQ(parse_vehicle(edited("powered_wheelsets = [1, 2, 3, 4]", "powered_wheelsets = [2, 1]"),
+                          "test")
+                .powered,
+            leading_bogie);
+  const std::array<bool, 4> none{false, false, false, false};
+  EXPECT_EQ(
+      parse_vehicle(edited("powered_wheelsets = [1, 2, 3, 4]", "powered_wheelsets = []"), "test")
+          .powered,
+      none);
+  // A file without the key: every axle, as before the key existed.
+  EXPECT_EQ(parse_vehicle(edited("powered_wheelsets = [1, 2, 3, 4]", ""), "test").powered, all);
 }
 
 }  // namespace

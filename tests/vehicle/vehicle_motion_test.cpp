@@ -141,6 +141,40 @@ TEST(VehicleMotion, InASteadyCurveSettlesAtTheQuasiStaticState) {
   EXPECT_NEAR(end.car_body.y, qs.car_body.y, 1e-8);  // 2 nm measured
 }
 
+// A braking section: the motion settles at the quasi-static state with the same brake force on
+// every powered axle (the default coach: all four).
+TEST(VehicleMotion, BrakingSettlesAtTheQuasiStaticStateWithItsBrakeForce) {
+  const double radius = 1200.0, cant = 0.1, speed = 30.0, force = -12e3;
+  SteadyCurve curve;
+  curve.running = {speed, radius, 0.3};
+  curve.cant = cant;
+  curve.traction = force;
+  const VehicleCurving qs =
+      solve_vehicle_curving(default_vehicle(), testing::four(wheelset()), curve);
+  ASSERT_TRUE(qs.converged) << qs.message;
+  Route route = one_section(radius, cant, speed);
+  route.sections.front().traction_N = force;
+  VehicleMotionOptions options;
+  options.fastsim_grid = 0;  // the quasi-static solver's creep model
+  const VehicleMotion m = simulate(route, 600.0, {}, perturbed(qs), options);
+  const VehicleSample& end = m.samples.back();
+  for (int k = 0; k < kWheelsets; ++k) {
+    const WheelsetMotionSample& w = end.wheelsets[k];
+    const WheelsetMotionState& q = qs.wheelsets[k].state;
+    // As for coasting (InASteadyCurveSettlesAtTheQuasiStaticState).
+    EXPECT_NEAR(w.state.dy, q.dy, 1e-7) << "wheelset " << k + 1;
+    EXPECT_NEAR(w.state.spin, q.spin, 3e-7 * q.spin) << "wheelset " << k + 1;
+    // The brake torque F r0 is what the contact carries, and its force is about F.
+    EXPECT_NEAR(w.forces.axle_torque, force * 0.46, 1e-3 * std::abs(force) * 0.46)
+        << "wheelset " << k + 1;
+    EXPECT_NEAR(w.forces.Fx_axle, force, 0.02 * std::abs(force)) << "wheelset " << k + 1;
+  }
+  // Braking slows the wheels: every axle spins slower than when coasting.
+  const VehicleCurving coasting = steady(radius, cant, speed);
+  for (int k = 0; k < kWheelsets; ++k)
+    EXPECT_LT(qs.wheelsets[k].state.spin, coasting.wheelsets[k].state.spin) << k + 1;
+}
+
 TEST(VehicleMotion, LeftAndRightHandCurvesMirror) {
   const double cant = 0.08, speed = 25.0;
   const VehicleCurving right = steady(1000.0, cant, speed);

@@ -39,6 +39,8 @@ void SteadyCurve::validate() const {
           "the outer rail's height above the inner must lie in 0 ... cant_base / 4 (m)");
   require(running.curve_radius != 0.0 || cant == 0.0, "cant", cant,
           "tangent track (curve radius 0) has no cant");
+  require(std::isfinite(traction) && std::abs(traction) <= 5e5, "traction", traction,
+          "the longitudinal force per powered axle must lie in [-5e5, 5e5] N");
 }
 
 namespace {
@@ -66,7 +68,8 @@ FreeWheelsetCurving solve_free_wheelset_curving(const WheelsetModel& model, doub
   const auto evaluate = [&](const WheelsetMotionState& s) {
     Residual out;
     out.forces = wheelset_forces(model, s, wheel_load, wheel_load, running);
-    out.r << out.forces.lateral - required, out.forces.yaw_moment, out.forces.axle_torque;
+    out.r << out.forces.lateral - required, out.forces.yaw_moment,
+        out.forces.axle_torque - curve.traction * model.track.left.wheel_radius;
     return out;
   };
   // Residuals in units of their tolerances: one is converged.

@@ -168,7 +168,10 @@ class CurvingProblem {
       const int w = wheelset_index(k);
       e.residual[w] += ws.forces.lateral;
       e.residual[w + 1] += ws.forces.yaw_moment;
-      e.residual[w + 2] = ws.forces.axle_torque;
+      // A powered axle's contact torque carries its drive (or brake) torque.
+      const double drive =
+          v_.powered[k] ? curve_.traction * models_[k].track.left.wheel_radius : 0.0;
+      e.residual[w + 2] = ws.forces.axle_torque - drive;
       ws.balance = {e.residual[w], e.residual[w + 1]};
     }
     return e;

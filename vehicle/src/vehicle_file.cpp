@@ -99,6 +99,26 @@ class VehicleReader {
       seen_.insert(key);
     };
   }
+  // A list of wheelset numbers, 1 to 4 in order of travel, each at most once.
+  TomlKeyHandler wheelsets(std::array<bool, kWheelsets>& target, std::string meaning) {
+    return [this, &target, meaning](const toml::node& node, const std::string& key) {
+      const toml::array* values = node.as_array();
+      if (!values)
+        throw InputError(keys_.where(node.source(), key) +
+                         ": expected a list of wheelset numbers, 1 to 4 in order of travel (" +
+                         meaning + "), e.g. [1, 2, 3, 4]; [] for none");
+      target.fill(false);
+      for (const toml::node& value : *values) {
+        const double number = keys_.number(value, key, 1, kWheelsets, meaning);
+        const auto k = static_cast<int>(number);
+        if (k != number || target[k - 1])
+          throw InputError(keys_.where(node.source(), key) +
+                           ": give each wheelset's number (a whole number, 1 to 4) once");
+        target[k - 1] = true;
+      }
+      seen_.insert(key);
+    };
+  }
   TomlKeyHandler table(Handlers handlers) {
     return [this, handlers](const toml::node& node, const std::string& key) {
       const toml::table* t = node.as_table();
@@ -162,7 +182,9 @@ class VehicleReader {
               {"wheel_radius_m", number(v.wheelset.wheel_radius, 0.2, 0.8, "nominal radius")},
               {"back_to_back_m", number(v.wheelset.back_to_back, 1.0, 2.0, "back-to-back")},
               {"taping_line_from_back_m", checked(0.0, 0.2, "taping line from the internal face")},
-              {"lateral_arm_m", number(v.wheelset.lateral_arm, 0.3, 1.2, "contact arm e0")}})},
+              {"lateral_arm_m", number(v.wheelset.lateral_arm, 0.3, 1.2, "contact arm e0")},
+              {"powered_wheelsets",
+               wheelsets(v.powered, "the motored or braked axles a route's traction_N acts on")}})},
         {"primary", table(stage(v.primary, "per_axlebox", false))},
         {"secondary", table(stage(v.secondary, "per_bogie_side", true))},
         {"stops",

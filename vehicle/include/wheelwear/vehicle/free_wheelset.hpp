@@ -18,6 +18,9 @@ struct SteadyCurve {
   /// Distance over which the cant is measured [m]: sin(cant angle) = cant / cant_base (1.5 m,
   /// the rail-centre distance of standard gauge, EN 13803).
   double cant_base = 1.5;
+  /// Longitudinal force per powered axle [N]: > 0 traction, < 0 braking, 0 coasting. A powered
+  /// axle's contact torque balances traction x the wheels' nominal radius instead of zero.
+  double traction = 0.0;
 
   double cant_angle() const;  ///< [rad]
   /// The in-plane force towards the curve centre that a body of mass m needs [N]:

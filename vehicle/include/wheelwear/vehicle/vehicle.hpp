@@ -3,6 +3,7 @@
 /// geometry and the primary (wheelset-bogie) and secondary (bogie-car body) suspension, as a
 /// vehicle file gives them (vehicle_file.hpp). SI units throughout.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,9 @@ struct Vehicle {
   SuspensionStage secondary;      ///< per bogie side; one joint per bogie (2 sides)
   LateralStop lateral_stop;       ///< per bogie, between bogie frame and car body
   VehicleContactDefaults contact;
+  /// The wheelsets (in order of travel) a route's traction_N acts on: motored or braked axles.
+  /// The others roll freely.
+  std::array<bool, 4> powered{true, true, true, true};
   /// The longitudinal position of wheelset k (0..3, in order of travel) from the car body's
   /// centre [m], + forward.
   double wheelset_x(int k) const;
