@@ -218,8 +218,13 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
              [&](const auto& n, const auto& k) {
                s.strip_width = number(n, k, 1e-5, 2e-3, "the strip width in m");
              }},
-            {"virtual_penetration", [&](const auto& n, const auto& k) {
+            {"virtual_penetration",
+             [&](const auto& n, const auto& k) {
                s.virtual_penetration = number(n, k, 0.05, 1.0, "Kik-Piotrowski's epsilon");
+             }},
+            {"max_contact_angle_rad", [&](const auto& n, const auto& k) {
+               s.max_contact_angle = number(n, k, 1.0, 1.56,
+                                            "the steepest contact angle taken as contact, in rad");
              }}})},
       {"wear", section("wear",
                        {{"law",

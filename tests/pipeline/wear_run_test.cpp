@@ -290,6 +290,39 @@ TEST_F(WearRunTest, ExactSolvesEveryPatchWithTheExactTheory) {
   EXPECT_GE(patches, 8);
 }
 
+// [contact] max_contact_angle_rad: a position-prescribed contact on S1002's 70 degree flank is
+// dropped for Nadal's limit by default (1.35 rad), and as climbing once the limit is below it.
+TEST_F(WearRunTest, TheSteepestContactAngleSortsFlankContactsAsClimbing) {
+  const std::string states =
+      "[[load_collective.state]]\ndy_m = -0.0064\nyaw_rad = -2e-3\nload_left_N = 50e3\n"
+      "load_right_N = 60e3\nspeed_m_s = 22\ncurve_radius_m = -500\n";
+  std::vector<double> reasons;
+  for (const char* limit : {"", "max_contact_angle_rad = 1.0\n"}) {
+    const std::string text = "[contact]\ngrid_nx = 12\ngrid_ny = 12\n" + std::string(limit) +
+                             "[run]\ndistance_m = 1000\n" + states;
+    const fs::path out = dir_ / (std::string(limit).empty() ? "default.h5" : "limit.h5");
+    run(text, out);
+    const ResultsFile file = ResultsFile::read(out);
+    const auto reason = file.read_step_array(0, "states/drop_reason");
+    ASSERT_EQ(reason.size(), 2u);
+    EXPECT_EQ(reason[0], 0.0);  // the left wheel on its tread
+    reasons.push_back(reason[1]);
+  }
+  EXPECT_EQ(reasons, (std::vector<double>{4.0, 2.0}));  // Nadal, then climbing
+  EXPECT_EQ(parse_scene(
+                "[contact]\nmax_contact_angle_rad = 1.5\n[run]\ndistance_m = 1000\n" + states, dir_)
+                .max_contact_angle,
+            1.5);
+  for (const char* bad : {"0.5", "1.6", "nan"}) {
+    try {
+      parse_scene("[contact]\nmax_contact_angle_rad = " + std::string(bad) + "\n" + states, dir_);
+      ADD_FAILURE() << bad;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("max_contact_angle_rad"), std::string::npos);
+    }
+  }
+}
+
 TEST_F(WearRunTest, SeparateWheelsOfAMirroredCollectiveWearAlike) {
   // A state and its mirror image: the left wheel of one is the right wheel of the other, so
   // separately evolved left and right profiles stay identical, and equal the shared profile.

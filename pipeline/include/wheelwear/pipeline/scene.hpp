@@ -168,16 +168,19 @@ struct Scene {
   TangentialMethod tangential = TangentialMethod::fastsim;
   double strip_width = 0.2e-3;        ///< [m]
   double virtual_penetration = 0.55;  ///< Kik-Piotrowski epsilon [-]
-  std::string wear_law = "usfd";      ///< usfd or archard
-  std::string wear_law_table;         ///< resolved path of the user's table, empty: built-in
-  double distance = 100e3;            ///< running distance of the run [m]
-  double step_distance = 5e3;         ///< longest step [m]
-  double max_depth_step = 0.1e-3;     ///< deepest wear increment of one step [m]
-  double smoothing_length = 2e-3;     ///< smoothing of a step's depth along the profile [m]
-  bool separate_wheels = false;       ///< evolve left and right profiles separately
-  LimitKeys limits;                   ///< in-service limits, and whether reaching one stops
-  bool state_summaries = true;        ///< write per-state summaries
-  bool tgamma_maps = false;           ///< write per-cell T gamma maps of every contact
+  /// A contact steeper than this is flange climb, its state not worn [rad]
+  /// (contactgeom::WheelRailOptions::max_contact_angle).
+  double max_contact_angle = 1.35;
+  std::string wear_law = "usfd";   ///< usfd or archard
+  std::string wear_law_table;      ///< resolved path of the user's table, empty: built-in
+  double distance = 100e3;         ///< running distance of the run [m]
+  double step_distance = 5e3;      ///< longest step [m]
+  double max_depth_step = 0.1e-3;  ///< deepest wear increment of one step [m]
+  double smoothing_length = 2e-3;  ///< smoothing of a step's depth along the profile [m]
+  bool separate_wheels = false;    ///< evolve left and right profiles separately
+  LimitKeys limits;                ///< in-service limits, and whether reaching one stops
+  bool state_summaries = true;     ///< write per-state summaries
+  bool tgamma_maps = false;        ///< write per-cell T gamma maps of every contact
   /// The hand-written collective; empty when the vehicle makes it (vehicle_run).
   std::vector<WheelsetStateSpec> states;
   /// The vehicle and its route ([vehicle] and [route]), instead of a hand-written collective.
