@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "wheelwear/core/input_error.hpp"
 
@@ -9,9 +10,46 @@ namespace wheelwear::vehicle {
 
 namespace {
 
+// The solved-for vertical forces of a wheel whose Q fell below (above) its load, nearest it; Q
+// grows with the force (a wheel's Q that does not is left to the secant steps).
+struct LoadBracket {
+  double below = -std::numeric_limits<double>::infinity(), Q_below = 0.0;
+  double above = std::numeric_limits<double>::infinity(), Q_above = 0.0;
+
+  void add(double force, double Q, double load) {
+    if (Q < load && force > below) {
+      below = force;
+      Q_below = Q;
+    } else if (Q >= load && force < above) {
+      above = force;
+      Q_above = Q;
+    }
+  }
+  bool closed() const { return std::isfinite(below) && std::isfinite(above) && below < above; }
+  double width() const {
+    return closed() ? above - below : std::numeric_limits<double>::infinity();
+  }
+  // `proposal`, or the bracket's midpoint where it falls outside.
+  double inside(double proposal) const {
+    if (!closed() || (proposal > below && proposal < above)) return proposal;
+    return 0.5 * (below + above);
+  }
+  double nearer(double load) const { return load - Q_below <= Q_above - load ? below : above; }
+  // Narrower than `width` with Q differing across it by a hundred times the width: Q grows with
+  // the force at a rate near 1 where it is continuous, so this is a jump.
+  bool jumps(double width) const {
+    return closed() && above - below < width && Q_above - Q_below > 100.0 * (above - below);
+  }
+};
+
 // The contact's vertical force is corrected by the creep forces' vertical part until Q meets
 // the load to WheelsetModel::load_tolerance.
-constexpr int kMaxLoadIterations = 30;
+constexpr int kMaxLoadIterations = 40;
+// A bracket of a wheel's Q narrower than this share of its load across which Q changes far more
+// than the force is a jump of Q (contact regions that merge or part): no vertical force in
+// between meets the load. Q that moves by less than this while the force moves is the flat side
+// of such a jump.
+constexpr double kJumpWidth = 1e-5;
 
 void validate(const RunningConditions& running) {
   require(std::isfinite(running.speed) && running.speed > 0.0, "speed", running.speed,
@@ -108,6 +146,10 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
   // The previous iterate per wheel, for secant steps: Q grows with the solved-for force at a
   // rate near 1 (less the creep forces' share), which the secant finds in one step.
   std::array<double, 2> previous_for{0.0, 0.0}, previous_Q{0.0, 0.0};
+  // Where the secant steps cycle (a kink of Q) or cannot arrive (a jump), bisection in the
+  // bracket of forces whose Q fell below and above the load.
+  std::array<LoadBracket, 2> bracket;
+  std::array<bool, 2> at_jump{false, false};
   WheelsetForces out;
   for (int iteration = 0; iteration < kMaxLoadIterations; ++iteration) {
     contactgeom::WheelsetState geometry;
@@ -138,8 +180,14 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
       if (!contactgeom::carries_load(c.status)) continue;
       const double Q = out.wheels[k].Q;
       const double miss = loads[k] - Q;
-      if (std::abs(miss) > model.load_tolerance * loads[k]) {
+      if (std::abs(miss) > model.load_tolerance * loads[k] && !at_jump[k]) {
         met = false;
+        bracket[k].add(solved_for[k], Q, loads[k]);
+        // Q that stays put while the force moves: the contact solve answers from one side of a
+        // jump of its own (contactgeom's load_jump) whatever force inside it is asked.
+        const bool flat = c.status == contactgeom::WheelRailStatus::load_jump && iteration > 0 &&
+                          solved_for[k] != previous_for[k] &&
+                          std::abs(Q - previous_Q[k]) <= kJumpWidth * loads[k];
         double rate = 1.0;
         if (iteration > 0 && solved_for[k] != previous_for[k]) {
           rate = (Q - previous_Q[k]) / (solved_for[k] - previous_for[k]);
@@ -147,11 +195,20 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
         }
         previous_for[k] = solved_for[k];
         previous_Q[k] = Q;
-        solved_for[k] = std::max(0.01 * loads[k], solved_for[k] + miss / rate);
+        if (flat) {
+          at_jump[k] = true;  // keep this side
+        } else if (bracket[k].jumps(kJumpWidth * loads[k])) {
+          // A jump: the wheel keeps the side whose Q is nearer its load.
+          at_jump[k] = true;
+          solved_for[k] = bracket[k].nearer(loads[k]);
+        } else {
+          solved_for[k] = bracket[k].inside(std::max(0.01 * loads[k], solved_for[k] + miss / rate));
+        }
       }
     }
     if (met) {
       out.loads_met = true;
+      out.load_jump = at_jump[0] || at_jump[1];
       break;
     }
   }

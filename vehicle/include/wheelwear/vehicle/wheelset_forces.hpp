@@ -114,6 +114,9 @@ struct WheelsetForces {
   double axle_torque = 0.0;  ///< torque of both wheels [N m]; 0 for a free-rolling axle
   int load_iterations = 0;   ///< contact solves made to meet the wheels' loads Q
   bool loads_met = false;    ///< every wheel carrying load meets its Q to the model's tolerance
+  /// A wheel's Q jumps across its load (contact regions merge or part, contactgeom's load_jump):
+  /// no vertical force meets it, and the wheel keeps the side nearer its load; loads_met holds.
+  bool load_jump = false;
   /// The vertical forces (left, right) the last contact was solved for [N]: the loads less
   /// the creep forces' vertical parts; a good start for a nearby state (vertical_start).
   std::array<double, 2> vertical_forces{};
