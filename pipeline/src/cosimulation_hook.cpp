@@ -24,25 +24,14 @@ namespace {
 constexpr std::size_t kLogTail = 64 * 1024;  // bytes of the program's output kept
 constexpr const char* kLogName = "hook.log";
 
-std::string extension(HookProfileFormat format) {
+// The file name's extension for `body`: MiniProf and SIMPACK name the body in it.
+std::string extension(HookProfileFormat format, profiles::Body body) {
+  const bool wheel = body == profiles::Body::wheel;
   switch (format) {
     case HookProfileFormat::simpack:
-      return ".prw";
+      return wheel ? ".prw" : ".prr";
     case HookProfileFormat::miniprof:
-      return ".whl";
-    case HookProfileFormat::csv:
-      break;
-  }
-  return ".csv";
-}
-
-// The rail's file name: MiniProf and SIMPACK name the body in the extension.
-std::string rail_extension(HookProfileFormat format) {
-  switch (format) {
-    case HookProfileFormat::simpack:
-      return ".prr";
-    case HookProfileFormat::miniprof:
-      return ".ban";
+      return wheel ? ".whl" : ".ban";
     case HookProfileFormat::csv:
       break;
   }
@@ -195,9 +184,9 @@ HookCall call_hook(const CosimulationHook& hook, const fs::path& directory, int 
     throw InputError("[hook]: cannot create its directory " + directory.string() + ": " +
                      error.message());
   const fs::path absolute = fs::absolute(directory);
-  const std::string ext = extension(hook.profile_format);
+  const std::string ext = extension(hook.profile_format, profiles::Body::wheel);
   const fs::path left = absolute / ("wheel_left" + ext), right = absolute / ("wheel_right" + ext);
-  const fs::path rail = absolute / ("rail" + rail_extension(hook.profile_format));
+  const fs::path rail = absolute / ("rail" + extension(hook.profile_format, profiles::Body::rail));
   const fs::path collective = absolute / "collective.csv";
   const fs::path log = absolute / kLogName;
   // An earlier call's collective must not pass for this one's.

@@ -108,6 +108,30 @@ TEST_F(HookRunTest, TheProgramIsGivenTheStepsOwnProfiles) {
   EXPECT_GT(compared, 1000u);
 }
 
+// profile_format = "simpack": the program gets SIMPACK files (.prw, .prr) that the project's
+// own reader takes back to the run's profile.
+TEST_F(HookRunTest, SimpackFilesCarryTheSameProfile) {
+  write("states.csv", kStatesCsv);
+  run_hook(hook_scene(10e3, 10e3, 1e-3,
+                      "[hook]\ncommand = [\"cp\", \"states.csv\", \"{collective}\"]\n"
+                      "profile_format = \"simpack\"\n"),
+           dir_ / "run.h5");
+  const fs::path step = hook_directory(dir_ / "run.h5") / "step_000000";
+  ASSERT_TRUE(fs::exists(step / "wheel_left.prw"));
+  ASSERT_TRUE(fs::exists(step / "rail.prr"));
+  const ResultsFile file = ResultsFile::read(dir_ / "run.h5");
+  const auto y = file.read_step_array(0, "wheel/y"), z = file.read_step_array(0, "wheel/z");
+  const profiles::RawProfile seen = profiles::read_profile_file(step / "wheel_left.prw");
+  ASSERT_EQ(seen.points.size(), y.size());
+  EXPECT_TRUE(seen.body == profiles::Body::wheel);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < y.size(); ++i)
+    worst =
+        std::max({worst, std::abs(seen.points[i].x() - y[i]), std::abs(seen.points[i].y() - z[i])});
+  EXPECT_LT(worst, 1e-12);  // shortest round-trip decimals in mm
+  EXPECT_TRUE(profiles::read_profile_file(step / "rail.prr").body == profiles::Body::rail);
+}
+
 TEST_F(HookRunTest, ItIsCalledAgainOnlyOnceTheWearReachesItsDepth) {
   write("states.csv", kStatesCsv);
   // About 8 um of wear per 20 km step: a depth of 20 um lets two steps pass between calls.
