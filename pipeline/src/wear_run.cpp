@@ -77,11 +77,13 @@ struct LoopStart {
 };
 
 // Calls the scene's hook on the current profiles when the wear since its last call reaches its
-// depth (at every step for depth 0). Returns the call, if one was made.
+// depth (at every step for depth 0), but not at the run's end, whose step only records the
+// final profile. Returns the call, if one was made.
 std::optional<HookCall> update_hook(const CosimulationHook& hook, const fs::path& directory,
-                                    int step, double distance, const std::vector<WornProfile>& worn,
+                                    int step, double distance, bool at_end,
+                                    const std::vector<WornProfile>& worn,
                                     const profiles::Profile& rail, HookCarry& carry) {
-  if (carry.called && carry.depth_since_call < hook.resolve_depth) return std::nullopt;
+  if (carry.called && (at_end || carry.depth_since_call < hook.resolve_depth)) return std::nullopt;
   char name[32];
   std::snprintf(name, sizeof name, "step_%06d", step);
   const HookProfiles profiles{worn.front().points, worn.back().points, rail.knot_points()};
@@ -234,7 +236,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     }
     std::optional<HookCall> hook_call;
     if (scene.hook)
-      hook_call = update_hook(*scene.hook, start.hook_directory, step, distance, worn,
+      hook_call = update_hook(*scene.hook, start.hook_directory, step, distance,
+                              scene.distance - distance <= 1e-9 * scene.distance, worn,
                               evaluator.kernel().rail(), hook);
     const std::vector<WheelsetStateSpec>& specs = scene.vehicle_run ? carry.last.states
                                                   : scene.hook      ? hook.states

@@ -69,8 +69,11 @@ TEST_F(HookRunTest, TheHooksCollectiveWearsAsTheSameCollectiveGivenDirectly) {
       for (std::size_t i = 0; i < va.size(); ++i, ++compared)
         ASSERT_EQ(va[i], vb[i]) << "step " << step << ' ' << name << '[' << i << ']';
     }
-    EXPECT_EQ(b.read_step_array(step, "hook/called").at(0), 1.0);
-    EXPECT_EQ(b.read_text(ResultsFile::step_group(step) + "/hook/output").value_or(""), kStatesCsv);
+    // Called at every step but the last, which only records the final profile.
+    EXPECT_EQ(b.read_step_array(step, "hook/called").at(0), step < 2 ? 1.0 : 0.0);
+    if (step < 2)
+      EXPECT_EQ(b.read_text(ResultsFile::step_group(step) + "/hook/output").value_or(""),
+                kStatesCsv);
     EXPECT_EQ(b.read_step_array(step, "collective/weight").size(), 4u);
   }
   EXPECT_GT(compared, 1000u);
@@ -87,7 +90,8 @@ TEST_F(HookRunTest, TheProgramIsGivenTheStepsOwnProfiles) {
   const ResultsFile file = ResultsFile::read(dir_ / "run.h5");
   ASSERT_EQ(file.completed_steps(), 3);
   std::size_t compared = 0;
-  for (int step = 0; step < 3; ++step) {
+  EXPECT_FALSE(fs::exists(dir_ / "seen_wheel_2.csv"));  // the last step makes no call
+  for (int step = 0; step < 2; ++step) {
     const auto y = file.read_step_array(step, "wheel/y"), z = file.read_step_array(step, "wheel/z");
     const profiles::RawProfile seen =
         profiles::read_profile_file(dir_ / ("seen_wheel_" + std::to_string(step) + ".csv"));
@@ -99,7 +103,7 @@ TEST_F(HookRunTest, TheProgramIsGivenTheStepsOwnProfiles) {
     }
   }
   // The wheel does wear between the calls, so the files differ from step to step.
-  const auto z0 = file.read_step_array(0, "wheel/z"), z2 = file.read_step_array(2, "wheel/z");
+  const auto z0 = file.read_step_array(0, "wheel/z"), z2 = file.read_step_array(1, "wheel/z");
   double moved = 0.0;
   for (std::size_t i = 0; i < std::min(z0.size(), z2.size()); ++i)
     moved = std::max(moved, std::abs(z2[i] - z0[i]));
@@ -146,7 +150,8 @@ TEST_F(HookRunTest, ItIsCalledAgainOnlyOnceTheWearReachesItsDepth) {
   for (int step = 0; step < file.completed_steps(); ++step) {
     const bool called = file.read_step_array(step, "hook/called").at(0) == 1.0;
     calls += called ? 1 : 0;
-    EXPECT_EQ(called, step == 0 || since >= 20e-6) << "step " << step;
+    const bool last = step == file.completed_steps() - 1;
+    EXPECT_EQ(called, step == 0 || (since >= 20e-6 && !last)) << "step " << step;
     if (called) since = 0.0;
     const double depth = file.read_step_array(step, "hook/depth_since_call").at(0);
     EXPECT_GE(depth, since) << "step " << step;
