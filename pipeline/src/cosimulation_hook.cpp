@@ -5,10 +5,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstring>
+#include <optional>
 #include <thread>
 
 #include "wheelwear/core/input_error.hpp"
@@ -49,15 +51,9 @@ std::string replaced(std::string argument,
   return argument;
 }
 
-std::string joined(const std::vector<std::string>& arguments) {
-  std::string out;
-  for (const std::string& a : arguments) out += (out.empty() ? "" : " ") + a;
-  return out;
-}
-
 std::string tail(const fs::path& log) {
   std::error_code error;
-  if (!fs::is_regular_file(log) || fs::file_size(log, error) == 0 || error) return {};
+  if (!fs::is_regular_file(log, error) || fs::file_size(log, error) == 0 || error) return {};
   std::string text = core::read_text_file(log);
   if (text.size() > kLogTail) text.erase(0, text.size() - kLogTail);
   return text;
@@ -79,19 +75,90 @@ std::string last_lines(const std::string& log, int count) {
   return lines.empty() ? "(no output)" : lines;
 }
 
-// Runs `arguments` in `working_directory` with standard output and error into `log`; returns the
-// wait status, or throws when it cannot start or runs past `timeout`.
-int run_program(const std::vector<std::string>& arguments, const fs::path& working_directory,
-                const fs::path& log, double timeout) {
+// The program's process group while it runs: killed and reaped when the call ends early (an
+// exception, or the run itself interrupted), so no program outlives the run that started it.
+class ProgramGroup {
+ public:
+  explicit ProgramGroup(pid_t pid) : pid_(pid) {}
+  ProgramGroup(const ProgramGroup&) = delete;
+  ProgramGroup& operator=(const ProgramGroup&) = delete;
+  ~ProgramGroup() {
+    if (pid_ > 0) end();
+  }
+  // Kills the whole group and reaps the program; returns its wait status.
+  int end() {
+    kill(-pid_, SIGKILL);
+    int status = 0;
+    while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    }
+    pid_ = 0;
+    return status;
+  }
+  // The program's wait status once it has exited, else nullopt.
+  std::optional<int> poll() {
+    int status = 0;
+    const pid_t done = waitpid(pid_, &status, WNOHANG);
+    if (done == pid_) {
+      pid_ = 0;
+      return status;
+    }
+    if (done < 0 && errno != EINTR)
+      throw InputError(std::string("[hook] command: lost the program: ") + std::strerror(errno));
+    return std::nullopt;
+  }
+
+ private:
+  pid_t pid_;
+};
+
+// SIGINT, SIGTERM and SIGHUP while a program runs in its own process group (which the terminal's
+// Ctrl-C does not reach): noted here, the program's group killed, and the signal raised again
+// with its former disposition, so the run ends as it would have.
+volatile std::sig_atomic_t interrupted = 0;
+extern "C" void note_interrupt(int signal) {
+  interrupted = signal;
+}
+
+class InterruptForwarding {
+ public:
+  InterruptForwarding() {
+    interrupted = 0;
+    struct sigaction action {};
+    action.sa_handler = note_interrupt;
+    sigemptyset(&action.sa_mask);
+    for (std::size_t i = 0; i < kSignals.size(); ++i) sigaction(kSignals[i], &action, &former_[i]);
+  }
+  InterruptForwarding(const InterruptForwarding&) = delete;
+  InterruptForwarding& operator=(const InterruptForwarding&) = delete;
+  ~InterruptForwarding() { restore(); }
+  // Puts the former dispositions back.
+  void restore() {
+    for (std::size_t i = 0; i < kSignals.size(); ++i) sigaction(kSignals[i], &former_[i], nullptr);
+  }
+
+ private:
+  static constexpr std::array<int, 3> kSignals{SIGINT, SIGTERM, SIGHUP};
+  std::array<struct sigaction, 3> former_{};
+};
+
+// Starts `arguments` in `working_directory`, in a process group of its own, with standard
+// output and error into `log`; throws InputError naming what failed.
+pid_t start_program(const std::vector<std::string>& arguments, const fs::path& working_directory,
+                    const fs::path& log) {
+  if (!fs::is_directory(working_directory))
+    throw InputError("[hook] command: its working directory " + working_directory.string() +
+                     " (the scene's) does not exist");
+  const int out = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (out < 0)
+    throw InputError("[hook]: cannot write its log " + log.string() + ": " + std::strerror(errno));
   std::vector<char*> argv;
   for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, out, STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, out, STDERR_FILENO);
   // The program runs in the scene's directory, where relative names in a scene are taken from;
   // the run's own working directory stays as it is.
   posix_spawn_file_actions_addchdir_np(&actions, working_directory.c_str());
@@ -104,21 +171,33 @@ int run_program(const std::vector<std::string>& arguments, const fs::path& worki
   const int started = posix_spawnp(&pid, argv[0], &actions, &attributes, argv.data(), environ);
   posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
+  close(out);
   if (started != 0)
     throw InputError("[hook] command: cannot start " + arguments.front() + ": " +
                      std::strerror(started) + " (give the program's path or put it on PATH)");
+  return pid;
+}
+
+// Runs `arguments` (start_program) and returns its wait status; throws when it runs past
+// `timeout`, and passes an interrupt of the run on to the program's group.
+int run_program(const std::vector<std::string>& arguments, const fs::path& working_directory,
+                const fs::path& log, double timeout) {
+  InterruptForwarding forwarding;
+  ProgramGroup program(start_program(arguments, working_directory, log));
   const auto t0 = std::chrono::steady_clock::now();
-  int status = 0;
   while (true) {
-    const pid_t done = waitpid(pid, &status, WNOHANG);
-    if (done == pid) return status;
-    if (done < 0 && errno != EINTR)
-      throw InputError(std::string("[hook] command: lost the program: ") + std::strerror(errno));
+    if (const std::optional<int> status = program.poll()) return *status;
+    if (const int signal = interrupted) {
+      program.end();
+      forwarding.restore();
+      std::raise(signal);  // ends the run, unless someone else handles it
+      throw InputError("[hook]: the run was interrupted (signal " + std::to_string(signal) +
+                       ") while its program ran; the program was ended");
+    }
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > timeout) {
-      kill(-pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      throw InputError("[hook] command `" + joined(arguments) + "` ran past its timeout of " +
-                       core::format_number(timeout) +
+      program.end();
+      throw InputError("[hook] command `" + hook_command_line(arguments) +
+                       "` ran past its timeout of " + core::format_number(timeout) +
                        " s and was killed; raise [hook] timeout_s if it needs longer. Its last "
                        "output:\n" +
                        last_lines(tail(log), 10));
@@ -129,12 +208,18 @@ int run_program(const std::vector<std::string>& arguments, const fs::path& worki
 
 }  // namespace
 
+std::string hook_command_line(const std::vector<std::string>& arguments) {
+  std::string out;
+  for (const std::string& a : arguments) out += (out.empty() ? "" : " ") + a;
+  return out;
+}
+
 const std::vector<std::pair<std::string, std::string>>& hook_placeholders() {
   static const std::vector<std::pair<std::string, std::string>> names{
       {"wheel", "the wheel profile file (the left wheel's when the wheels are separate)"},
       {"wheel_left", "the left wheel's profile file"},
       {"wheel_right", "the right wheel's profile file"},
-      {"rail", "the rail profile file (both rails, uninclined, as the scene gives it)"},
+      {"rail", "the rail profile file (both rails, inclined as the run uses it)"},
       {"collective", "the file the program must write the step's collective to (CSV)"},
       {"step", "the step number, from 0"},
       {"distance_m", "the running distance at the step [m]"},
@@ -214,7 +299,7 @@ HookCall call_hook(const CosimulationHook& hook, const fs::path& directory, int 
   const int status = run_program(call.arguments, working, log, hook.timeout);
   call.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   call.log = tail(log);
-  const std::string command = "[hook] command `" + joined(call.arguments) + "`";
+  const std::string command = "[hook] command `" + hook_command_line(call.arguments) + "`";
   if (WIFSIGNALED(status))
     throw InputError(command + " was ended by signal " + std::to_string(WTERMSIG(status)) +
                      " at step " + std::to_string(step) + ". Its last output:\n" +

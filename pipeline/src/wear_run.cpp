@@ -106,11 +106,9 @@ std::optional<HookCall> update_hook(const CosimulationHook& hook, const fs::path
 // Refuses a scene whose hook the run was not allowed to start.
 void check_hook_allowed(const Scene& scene, const RunOptions& options) {
   if (!scene.hook || options.allow_hook) return;
-  std::string command;
-  for (const std::string& a : scene.hook->command) command += (command.empty() ? "" : " ") + a;
   throw InputError("scene line " + std::to_string(scene.hook->line) +
-                   ": [hook] command runs the program `" + command +
-                   "` at every step; pass --allow-hook to let the run start it");
+                   ": [hook] command runs the program `" + hook_command_line(scene.hook->command) +
+                   "` during the run; pass --allow-hook to let the run start it");
 }
 
 // Solves the vehicle again when the wear since its last solve reaches the scene's depth (at
@@ -234,10 +232,22 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       vehicle_solved = update_vehicle(*scene.vehicle_run, evaluator.kernel(), pointers, carry);
       if (vehicle_solved) ++summary.vehicle_solves;
     }
+    // The profiles' in-service parameters and limits, known before the step's states: a step
+    // that ends the run (its distance run, or a limit that stops it) only records.
+    std::vector<profiles::WheelParameters> parameters;
+    std::vector<std::size_t> limits_reached;  // per profile
+    bool reached = false;
+    for (const profiles::Profile& wheel : wheels) {
+      parameters.push_back(measured_parameters(wheel));
+      limits_reached.push_back(profiles::limits_reached(parameters.back(), limits).size());
+      reached = reached || limits_reached.back() > 0;
+    }
+    const double remaining = scene.distance - distance;
+    const bool stop = scene.limits.stop && reached && remaining > 1e-9 * scene.distance;
     std::optional<HookCall> hook_call;
     if (scene.hook)
       hook_call = update_hook(*scene.hook, start.hook_directory, step, distance,
-                              scene.distance - distance <= 1e-9 * scene.distance, worn,
+                              remaining <= 1e-9 * scene.distance || stop, worn,
                               evaluator.kernel().rail(), hook);
     const std::vector<WheelsetStateSpec>& specs = scene.vehicle_run ? carry.last.states
                                                   : scene.hook      ? hook.states
@@ -252,16 +262,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     double peak = 0.0;
     for (const auto& r : smooth_rate)
       for (double d : r.depth) peak = std::max(peak, d);
-    std::vector<profiles::WheelParameters> parameters;
-    std::vector<std::size_t> limits_reached;  // per profile
-    bool reached = false;
-    for (const profiles::Profile& wheel : wheels) {
-      parameters.push_back(measured_parameters(wheel));
-      limits_reached.push_back(profiles::limits_reached(parameters.back(), limits).size());
-      reached = reached || limits_reached.back() > 0;
-    }
-    const double remaining = scene.distance - distance;
-    const bool stop = scene.limits.stop && reached && remaining > 1e-9 * scene.distance;
+
     double step_distance = 0.0;
     if (remaining > 1e-9 * scene.distance && !stop) {
       step_distance = std::min(scene.step_distance, remaining);
@@ -375,10 +376,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
                                 "deepest wear since the hook's last call, this step's included "
                                 "(an upper bound: the steps' deepest increments summed)"));
       if (hook_call) {
-        std::string command;
-        for (const std::string& a : hook_call->arguments)
-          command += (command.empty() ? "" : " ") + a;
-        g.texts.push_back({"hook/command", command, "the command as run, placeholders replaced"});
+        g.texts.push_back({"hook/command", hook_command_line(hook_call->arguments),
+                           "the command as run, placeholders replaced"});
         g.texts.push_back({"hook/output", hook_call->collective,
                            "the collective file the program wrote, as it wrote it"});
         g.texts.push_back({"hook/log", hook_call->log,
@@ -538,9 +537,19 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
     carry.depth_since_solve = file.read_step_array(last, "vehicle/depth_since_solve").at(0);
   }
   if (scene.hook) {
+    // The last call's collective as the program wrote it: the step records' columns leave out
+    // creepages a hook may give directly.
     HookCarry& carry = start.hook;
+    int called = last;
+    while (called > 0 && file.read_step_array(called, "hook/called").at(0) == 0.0) --called;
+    const auto written = file.read_text(ResultsFile::step_group(called) + "/hook/output");
+    if (!written)
+      throw InputError("results file " + output.string() + ": step " + std::to_string(called) +
+                       " holds no hook/output to resume from");
     carry.called = true;
-    carry.states = detail::read_collective(file, last, "collective/");
+    carry.states = detail::read_collective_csv(
+        *written,
+        "the hook's collective of step " + std::to_string(called) + " in " + output.string());
     carry.depth_since_call = file.read_step_array(last, "hook/depth_since_call").at(0);
   }
   return loop(scene, evaluator, file, std::move(start), *directory, builtin, options);

@@ -3,16 +3,25 @@
 // the run's own recorded profiles (the files the program is given), and the refusals.
 
 #include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
 
+#include <chrono>
 #include <cmath>
+#include <csignal>
+#include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include "support/run_command.hpp"
 #include "wear_run_support.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/profiles/profile_io.hpp"
+
+extern char** environ;
 
 namespace wheelwear::pipeline {
 namespace {
@@ -218,7 +227,7 @@ TEST_F(HookRunTest, ProgramsThatHangDoNotStartOrWriteNothingAreNamed) {
        "cannot start no-such-program-of-wheelwear"},
       {shell_hook("echo {collective}"), "wrote no collective"},
       {shell_hook("echo label,weight > {collective}"), "no state with a weight > 0"},
-      {shell_hook("echo nonsense > {collective}"), "collective"},
+      {shell_hook("echo nonsense > {collective}"), "nonsense"},
   };
   int n = 0;
   for (const Case& c : cases) {
@@ -231,6 +240,109 @@ TEST_F(HookRunTest, ProgramsThatHangDoNotStartOrWriteNothingAreNamed) {
           << c.hook << "\n -> " << e.what();
     }
   }
+}
+
+// A program that runs past its timeout is ended with everything it started: its process group.
+TEST_F(HookRunTest, ATimeoutEndsWhatTheProgramStarted) {
+  write("states.csv", kStatesCsv);
+  try {
+    run_hook(hook_scene(20e3, 10e3, 1e-3,
+                        shell_hook("sleep 30 & echo $! > grandchild.pid; wait; "
+                                   "cp states.csv {collective}",
+                                   "timeout_s = 0.5\n")),
+             dir_ / "run.h5");
+    FAIL() << "the run went past a hook that hangs";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("timeout"), std::string::npos) << e.what();
+  }
+  std::ifstream in(dir_ / "grandchild.pid");
+  long pid = 0;
+  ASSERT_TRUE(in >> pid);
+  // Gone, or a zombie nobody has reaped yet (its parent, the shell, was killed with it); SIGKILL
+  // takes a moment to land, so look for up to 2 s.
+  const fs::path stat = fs::path("/proc") / std::to_string(pid) / "stat";
+  std::string state = "?";
+  for (int i = 0; i < 200 && !(state.empty() || state == "Z"); ++i) {
+    state.clear();
+    if (std::ifstream proc(stat); proc) {
+      std::string line;
+      std::getline(proc, line);
+      state = line.substr(line.rfind(')') + 2, 1);
+    }
+    if (!(state.empty() || state == "Z"))
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_TRUE(state.empty() || state == "Z") << "the program's child is still running: " << state;
+}
+
+// A killed run resumed between two calls wears with the last call's collective as the program
+// wrote it, creepage columns included (the step records leave those out), as the uninterrupted
+// run does.
+TEST_F(HookRunTest, AKilledRunResumedBetweenCallsKeepsTheProgramsCreepages) {
+  write("states.csv",
+        "label,dy_m,yaw_rad,axle_load_N,speed_m_s,vx_left,vy_left,spin_left_1_m,vx_right,"
+        "vy_right,spin_right_1_m,weight\n"
+        "tangent,0.001,2e-4,110e3,40,1e-3,-5e-4,0.1,-1e-3,5e-4,-0.1,3\n"
+        "curve,0.004,1e-3,110e3,30,2e-3,-1e-3,0.3,-2e-3,1e-3,-0.3,1\n");
+  // One call every 50 um of wear: several steps between calls.
+  const std::string text = hook_scene(
+      400e3, 10e3, 1e-3,
+      "[hook]\ncommand = [\"cp\", \"states.csv\", \"{collective}\"]\nresolve_depth_m = 50e-6\n");
+  const fs::path scene = write("hook.toml", text);
+  const fs::path reference = dir_ / "reference.h5", killed = dir_ / "killed.h5";
+  ASSERT_EQ(
+      testing::run_wheelwear("run " + scene.string() + " -q --allow-hook -o " + reference.string())
+          .exit_code,
+      0);
+  const ResultsFile whole = ResultsFile::read(reference);
+  const int total = whole.completed_steps();
+  ASSERT_GT(total, 10);
+  int calls = 0;
+  for (int step = 0; step < total; ++step)
+    calls += whole.read_step_array(step, "hook/called").at(0) > 0.0;
+  ASSERT_GE(calls, 2);
+  ASSERT_LE(calls, total / 3);
+
+  const std::string exe = WHEELWEAR_EXE, out = killed.string(), scene_path = scene.string();
+  std::vector<char*> argv = {const_cast<char*>(exe.c_str()),        const_cast<char*>("run"),
+                             const_cast<char*>(scene_path.c_str()), const_cast<char*>("-q"),
+                             const_cast<char*>("--allow-hook"),     const_cast<char*>("-o"),
+                             const_cast<char*>(out.c_str()),        nullptr};
+  pid_t pid = 0;
+  ASSERT_EQ(::posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv.data(), environ), 0);
+  // Kill it once two steps are published: the first call was at step 0, the next comes later.
+  int published = 0;
+  for (int i = 0; i < 3000 && published < 2; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (!fs::exists(killed)) continue;
+    try {
+      published = ResultsFile::read(killed).completed_steps();
+    } catch (const InputError&) {
+      // being replaced right now
+    }
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
+  const int kept = ResultsFile::read(killed).completed_steps();
+  ASSERT_GE(kept, 2);
+  ASSERT_LT(kept, total);
+  ASSERT_EQ(whole.read_step_array(kept, "hook/called").at(0), 0.0)
+      << "the resumed run's first step calls the program: the test compares nothing";
+  const auto resumed = testing::run_wheelwear("run -q --allow-hook --resume " + killed.string());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  const ResultsFile again = ResultsFile::read(killed);
+  ASSERT_EQ(again.completed_steps(), total);
+  std::size_t compared = 0;
+  for (int step = kept; step < total; ++step)
+    for (const char* name : {"wheel/wear_rate/depth", "wheel/z"}) {
+      const auto a = whole.read_step_array(step, name), b = again.read_step_array(step, name);
+      ASSERT_EQ(a.size(), b.size());
+      for (std::size_t i = 0; i < a.size(); ++i, ++compared)
+        ASSERT_EQ(a[i], b[i]) << "step " << step << ' ' << name << '[' << i << ']';
+    }
+  EXPECT_GT(compared, 1000u);
 }
 
 TEST(HookScene, BadHookTablesAreRefusedNamingTheKey) {

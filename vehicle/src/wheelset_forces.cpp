@@ -35,6 +35,7 @@ struct LoadBracket {
     return 0.5 * (below + above);
   }
   double nearer(double load) const { return load - Q_below <= Q_above - load ? below : above; }
+  double nearer_miss(double load) const { return std::min(load - Q_below, Q_above - load); }
   // Narrower than `width` with Q differing across it by a hundred times the width: Q grows with
   // the force at a rate near 1 where it is continuous, so this is a jump.
   bool jumps(double width) const {
@@ -50,6 +51,9 @@ constexpr int kMaxLoadIterations = 40;
 // between meets the load. Q that moves by less than this while the force moves is the flat side
 // of such a jump.
 constexpr double kJumpWidth = 1e-5;
+// The largest miss of a wheel's load a jump may leave, as a share of the load: beyond it the
+// loads count as not met (the contact is too far from the state asked for).
+constexpr double kLargestJumpMiss = 0.05;
 
 void validate(const RunningConditions& running) {
   require(std::isfinite(running.speed) && running.speed > 0.0, "speed", running.speed,
@@ -150,6 +154,7 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
   // bracket of forces whose Q fell below and above the load.
   std::array<LoadBracket, 2> bracket;
   std::array<bool, 2> at_jump{false, false};
+  double jump_too_large = 0.0;  // the miss a jump would leave, when beyond kLargestJumpMiss [N]
   WheelsetForces out;
   for (int iteration = 0; iteration < kMaxLoadIterations; ++iteration) {
     contactgeom::WheelsetState geometry;
@@ -195,24 +200,32 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
         }
         previous_for[k] = solved_for[k];
         previous_Q[k] = Q;
-        if (flat) {
-          at_jump[k] = true;  // keep this side
-        } else if (bracket[k].jumps(kJumpWidth * loads[k])) {
-          // A jump: the wheel keeps the side whose Q is nearer its load.
+        if (flat || bracket[k].jumps(kJumpWidth * loads[k])) {
+          // A jump: a flat side is kept as the contact answers it, a bracketed one at the side
+          // whose Q is nearer the load.
+          const double kept_miss = flat ? std::abs(miss) : bracket[k].nearer_miss(loads[k]);
+          if (kept_miss > kLargestJumpMiss * loads[k]) {
+            jump_too_large = kept_miss;
+            break;
+          }
           at_jump[k] = true;
-          solved_for[k] = bracket[k].nearer(loads[k]);
+          if (!flat) solved_for[k] = bracket[k].nearer(loads[k]);
         } else {
           solved_for[k] = bracket[k].inside(std::max(0.01 * loads[k], solved_for[k] + miss / rate));
         }
       }
     }
+    if (jump_too_large > 0.0) break;
     if (met) {
       out.loads_met = true;
       out.load_jump = at_jump[0] || at_jump[1];
       break;
     }
   }
-  if (!out.loads_met)
+  if (jump_too_large > 0.0)
+    out.message = "a wheel's Q jumps across its load, leaving it " +
+                  std::to_string(jump_too_large) + " N off (more than 5 %)";
+  else if (!out.loads_met)
     out.message = "the wheels' loads were not met in " + std::to_string(kMaxLoadIterations) +
                   " contact solves (a jump of the contact with the load?)";
   const WheelForces& left = out.wheels[0];

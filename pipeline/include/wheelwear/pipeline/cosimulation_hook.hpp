@@ -32,6 +32,9 @@ struct CosimulationHook {
   int line = 0;  ///< the scene line of [hook] command, for messages
 };
 
+/// The arguments joined by spaces, for messages and records.
+std::string hook_command_line(const std::vector<std::string>& arguments);
+
 /// The placeholders a hook's arguments may name, each with what it stands for.
 const std::vector<std::pair<std::string, std::string>>& hook_placeholders();
 
@@ -55,7 +58,9 @@ struct HookProfiles {
 };
 
 /// Writes the profiles into `directory` (created; an earlier call's collective there removed),
-/// runs the hook in its working directory and returns what it wrote. Throws InputError naming the
+/// runs the hook in its working directory and returns what it wrote. The program runs in a
+/// process group of its own; an interrupt of the run (SIGINT, SIGTERM, SIGHUP) kills that group
+/// and then ends the run as the signal would, so no program outlives its run. Throws InputError naming the
 /// command and the cause when the program cannot be started, exits with a non-zero status or a
 /// signal, runs past its timeout (it is killed), or writes no collective; the log's last lines are
 /// in the message.

@@ -113,9 +113,12 @@ struct WheelsetForces {
   double Fx_axle = 0.0;      ///< Fx of both wheels [N], + forward
   double axle_torque = 0.0;  ///< torque of both wheels [N m]; 0 for a free-rolling axle
   int load_iterations = 0;   ///< contact solves made to meet the wheels' loads Q
-  bool loads_met = false;    ///< every wheel carrying load meets its Q to the model's tolerance
-  /// A wheel's Q jumps across its load (contact regions merge or part, contactgeom's load_jump):
-  /// no vertical force meets it, and the wheel keeps the side nearer its load; loads_met holds.
+  /// Every wheel carrying load meets its Q to the model's tolerance, or (load_jump) the nearest
+  /// a jump of its Q lets it, within 5 % of its load.
+  bool loads_met = false;
+  /// A wheel's Q jumps across its load (contact regions that merge or part, or a jump of its
+  /// creep forces): no vertical force meets the load, and the wheel keeps a side of the jump
+  /// within 5 % of its load (the nearer side of a bracket, or the side the contact answers from).
   bool load_jump = false;
   /// The vertical forces (left, right) the last contact was solved for [N]: the loads less
   /// the creep forces' vertical parts; a good start for a nearby state (vertical_start).
