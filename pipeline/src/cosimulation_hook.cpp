@@ -126,7 +126,11 @@ class InterruptForwarding {
     struct sigaction action {};
     action.sa_handler = note_interrupt;
     sigemptyset(&action.sa_mask);
-    for (std::size_t i = 0; i < kSignals.size(); ++i) sigaction(kSignals[i], &action, &former_[i]);
+    // A signal the run ignores (as a shell's background job ignores SIGINT) stays ignored.
+    for (std::size_t i = 0; i < kSignals.size(); ++i) {
+      sigaction(kSignals[i], nullptr, &former_[i]);
+      if (former_[i].sa_handler != SIG_IGN) sigaction(kSignals[i], &action, nullptr);
+    }
   }
   InterruptForwarding(const InterruptForwarding&) = delete;
   InterruptForwarding& operator=(const InterruptForwarding&) = delete;
