@@ -21,8 +21,6 @@
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/profiles/profile_io.hpp"
 
-extern char** environ;
-
 namespace wheelwear::pipeline {
 namespace {
 
@@ -303,27 +301,9 @@ TEST_F(HookRunTest, AKilledRunResumedBetweenCallsKeepsTheProgramsCreepages) {
   ASSERT_GE(calls, 2);
   ASSERT_LE(calls, total / 3);
 
-  const std::string exe = WHEELWEAR_EXE, out = killed.string(), scene_path = scene.string();
-  std::vector<char*> argv = {const_cast<char*>(exe.c_str()),        const_cast<char*>("run"),
-                             const_cast<char*>(scene_path.c_str()), const_cast<char*>("-q"),
-                             const_cast<char*>("--allow-hook"),     const_cast<char*>("-o"),
-                             const_cast<char*>(out.c_str()),        nullptr};
-  pid_t pid = 0;
-  ASSERT_EQ(::posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv.data(), environ), 0);
-  // Kill it once two steps are published: the first call was at step 0, the next comes later.
-  int published = 0;
-  for (int i = 0; i < 3000 && published < 2; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    if (!fs::exists(killed)) continue;
-    try {
-      published = ResultsFile::read(killed).completed_steps();
-    } catch (const InputError&) {
-      // being replaced right now
-    }
-  }
-  ::kill(pid, SIGKILL);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
+  // Killed once two steps are published: the first call was at step 0, the next comes later.
+  const int status = kill_run_after_steps(
+      {"run", scene.string(), "-q", "--allow-hook", "-o", killed.string()}, killed, 2);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
   const int kept = ResultsFile::read(killed).completed_steps();
   ASSERT_GE(kept, 2);

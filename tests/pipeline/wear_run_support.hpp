@@ -3,15 +3,24 @@
 // geometry to check worn areas with.
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/pipeline/wear_run.hpp"
 #include "wheelwear/profiles/profile.hpp"
+
+extern char** environ;
 
 namespace wheelwear::pipeline {
 
@@ -56,6 +65,35 @@ class WearRunTest : public ::testing::Test {
   }
   fs::path dir_;
 };
+
+// Runs `wheelwear` with `arguments` (after the executable) writing `output`, and kills it
+// without warning once `steps` steps are published. Returns its wait status (WIFSIGNALED when it
+// was killed, not ended on its own).
+inline int kill_run_after_steps(const std::vector<std::string>& arguments, const fs::path& output,
+                                int steps) {
+  const std::string exe = WHEELWEAR_EXE;
+  std::vector<std::string> words{exe};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (::posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return 0;
+  int published = 0;
+  for (int i = 0; i < 3000 && published < steps; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (!fs::exists(output)) continue;
+    try {
+      published = ResultsFile::read(output).completed_steps();
+    } catch (const InputError&) {
+      // The file is being replaced right now: try again.
+    }
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return status;
+}
 
 inline profiles::PointList points(const std::vector<double>& y, const std::vector<double>& z) {
   profiles::PointList p;

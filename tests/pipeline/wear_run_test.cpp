@@ -29,8 +29,6 @@
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 #include "wheelwear/tangential/table_correction.hpp"
 
-extern char** environ;
-
 namespace wheelwear::pipeline {
 namespace {
 
@@ -133,30 +131,9 @@ TEST_F(WearRunTest, KilledRunResumesToIdenticalResults) {
   const int total = ResultsFile::read(reference).completed_steps();
   ASSERT_EQ(total, 41);
 
-  const std::string exe = WHEELWEAR_EXE, out = killed.string(), scene_path = scene.string();
-  std::vector<char*> argv = {const_cast<char*>(exe.c_str()),
-                             const_cast<char*>("run"),
-                             const_cast<char*>(scene_path.c_str()),
-                             const_cast<char*>("-q"),
-                             const_cast<char*>("-o"),
-                             const_cast<char*>(out.c_str()),
-                             nullptr};
-  pid_t pid = 0;
-  ASSERT_EQ(::posix_spawn(&pid, exe.c_str(), nullptr, nullptr, argv.data(), environ), 0);
-  // Wait until two steps are published, then kill the process without warning.
-  int published = 0;
-  for (int i = 0; i < 3000 && published < 2; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    if (!fs::exists(killed)) continue;
-    try {
-      published = ResultsFile::read(killed).completed_steps();
-    } catch (const InputError&) {
-      // The file is being replaced right now: try again.
-    }
-  }
-  ::kill(pid, SIGKILL);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
+  // Killed without warning once two steps are published.
+  const int status =
+      kill_run_after_steps({"run", scene.string(), "-q", "-o", killed.string()}, killed, 2);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
   const int kept = ResultsFile::read(killed).completed_steps();
   ASSERT_GE(kept, 2);
