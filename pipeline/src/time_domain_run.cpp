@@ -122,6 +122,7 @@ std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
       const vehicle::WheelsetMotionSample& w = sample.wheelsets[K];
       if (!in_stretch(piece, w.distance)) continue;
       ++summary.samples[K];
+      if (w.forces.load_jump) ++summary.load_jumps[K];
       dy2 += w.state.dy * w.state.dy;
       yaw2 += w.state.yaw * w.state.yaw;
       summary.dy_max[K] = std::max(summary.dy_max[K], std::abs(w.state.dy));

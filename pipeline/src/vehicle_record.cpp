@@ -302,6 +302,12 @@ void add_vehicle_pieces(GroupRecord& g, const VehicleCollective& v) {
       shaped(p + "Y_over_Q_max",
              per_piece_wheelset(v, [](const R& r, std::size_t k) { return r.y_over_q[k]; }), ws,
              "1", "largest Y/Q of the wheelset's two wheels [piece, wheelset]"));
+  g.arrays.push_back(
+      shaped(p + "load_jump_samples",
+             per_piece_wheelset(v, [](const R& r, std::size_t k) { return 1.0 * r.load_jumps[k]; }),
+             ws, "1",
+             "samples whose contact kept a side of a jump of Q across the wheel's load [piece, "
+             "wheelset]"));
 }
 
 std::vector<PieceRun> read_vehicle_pieces(const ResultsFile& file, int step, std::size_t pieces) {
@@ -326,6 +332,11 @@ std::vector<PieceRun> read_vehicle_pieces(const ResultsFile& file, int step, std
   const auto dy_max = read("dy_max", w);
   const auto yaw_rms = read("angle_of_attack_rms", w);
   const auto y_over_q = read("Y_over_Q_max", w);
+  // Files of earlier version-5 programs have no count of samples at a jump: none counted.
+  const bool jumps_recorded =
+      file.has(ResultsFile::step_group(step) + "/" + p + "load_jump_samples");
+  const auto load_jumps =
+      jumps_recorded ? read("load_jump_samples", w) : std::vector<double>(pieces * w, 0.0);
   std::vector<std::string> messages;
   std::istringstream text(
       file.read_text(ResultsFile::step_group(step) + "/" + p + "message").value_or(""));
@@ -344,6 +355,7 @@ std::vector<PieceRun> read_vehicle_pieces(const ResultsFile& file, int step, std
       r.dy_max[k] = dy_max[i * w + k];
       r.yaw_rms[k] = yaw_rms[i * w + k];
       r.y_over_q[k] = y_over_q[i * w + k];
+      r.load_jumps[k] = static_cast<int>(load_jumps[i * w + k]);
     }
   }
   return out;

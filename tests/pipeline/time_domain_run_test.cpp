@@ -408,6 +408,25 @@ TEST_F(TimeDomainCollective, AStoppedPieceWeightsItsSamplesAsTheCompletedRunDoes
   EXPECT_GT(compared, 10);
 }
 
+// A piece's summary counts the samples in its stretch whose contact kept a side of a jump of Q.
+TEST_F(TimeDomainCollective, APieceCountsItsSamplesAtAJumpOfQ) {
+  const VehicleCollective v = solve_vehicle_collective(run_, kernel_, {&wheel_});
+  const DynamicPiece& piece = v.pieces[0];
+  vehicle::VehicleMotion motion = simulate(v, 0);
+  const std::vector<int> worn = run_.worn_wheelsets();
+  PieceRun none;
+  piece_states(piece, motion, v.cases[piece.start_case], v.curving[piece.start_case], worn, none);
+  // Wheelset 2 at a jump in every sample, the others in none.
+  for (vehicle::VehicleSample& sample : motion.samples) sample.wheelsets[1].forces.load_jump = true;
+  PieceRun marked;
+  piece_states(piece, motion, v.cases[piece.start_case], v.curving[piece.start_case], worn, marked);
+  for (std::size_t k = 0; k < vehicle::kWheelsets; ++k) {
+    EXPECT_EQ(none.load_jumps[k], 0) << k;  // S1002 on 60E1: no jump on this tangent
+    EXPECT_EQ(marked.load_jumps[k], k == 1 ? marked.samples[k] : 0) << k;
+  }
+  EXPECT_GT(marked.samples[1], 10);
+}
+
 TEST(TimeDomainScene, KeysAndTheirErrors) {
   const std::string head = "[vehicle]\nfile = \"default\"\n[route]\nfile = \"default\"\n";
   const Scene s = parse_scene(head +

@@ -93,6 +93,8 @@ struct PieceRun {
   std::array<double, vehicle::kWheelsets> dy_max{};    ///< largest |dy| [m]
   std::array<double, vehicle::kWheelsets> yaw_rms{};   ///< angle of attack [rad]
   std::array<double, vehicle::kWheelsets> y_over_q{};  ///< largest Y/Q of its wheels [-]
+  /// Samples whose contact kept a side of a jump of Q (vehicle::WheelsetForces::load_jump).
+  std::array<int, vehicle::kWheelsets> load_jumps{};
 };
 
 /// The states of the wheelsets `worn` (in order of travel) where each runs through `piece`,
