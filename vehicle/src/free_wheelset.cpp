@@ -69,7 +69,7 @@ FreeWheelsetCurving solve_free_wheelset_curving(const WheelsetModel& model, doub
     Residual out;
     out.forces = wheelset_forces(model, s, wheel_load, wheel_load, running);
     out.r << out.forces.lateral - required, out.forces.yaw_moment,
-        out.forces.axle_torque - curve.traction * model.track.left.wheel_radius;
+        out.forces.axle_torque - drive_torque(model, curve.traction);
     return out;
   };
   // Residuals in units of their tolerances: one is converged.

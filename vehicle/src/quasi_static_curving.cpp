@@ -169,8 +169,7 @@ class CurvingProblem {
       e.residual[w] += ws.forces.lateral;
       e.residual[w + 1] += ws.forces.yaw_moment;
       // A powered axle's contact torque carries its drive (or brake) torque.
-      const double drive =
-          v_.powered[k] ? curve_.traction * models_[k].track.left.wheel_radius : 0.0;
+      const double drive = v_.powered[k] ? drive_torque(models_[k], curve_.traction) : 0.0;
       e.residual[w + 2] = ws.forces.axle_torque - drive;
       ws.balance = {e.residual[w], e.residual[w + 1]};
     }

@@ -141,9 +141,8 @@ void VehicleSystem::derivative(const State& x, State& dxdt, double t, VehicleSam
     const WheelsetMotionSample c = contact(x, tracks[b], rails, tilt, k);
     force[2 * b] += c.forces.lateral + carried_lateral(tracks[b], tilt);
     force[2 * b + 1] += c.forces.yaw_moment;
-    // A powered axle's motor or brake: the section's traction force times the wheel radius.
-    const double drive =
-        v_.powered[k] ? tracks[b].point.traction_N * models_[k].track.left.wheel_radius : 0.0;
+    // A powered axle's motor or brake, driving the section's traction force.
+    const double drive = v_.powered[k] ? drive_torque(models_[k], tracks[b].point.traction_N) : 0.0;
     dxdt[spin_index(k)] = (drive - c.forces.axle_torque) / v_.wheelset.spin_inertia;
     if (sample) sample->wheelsets[k] = c;
   }

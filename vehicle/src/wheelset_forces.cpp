@@ -126,6 +126,10 @@ contactgeom::WheelsetMotion wheel_motion(const WheelsetMotionState& state,
   return motion;
 }
 
+double drive_torque(const WheelsetModel& model, double traction) {
+  return traction * model.track.left.wheel_radius;
+}
+
 WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionState& state,
                                double load_left, double load_right,
                                const RunningConditions& running,

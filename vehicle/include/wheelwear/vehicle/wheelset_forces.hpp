@@ -142,6 +142,11 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
                                std::optional<contactgeom::KnownRoll> known_roll = std::nullopt,
                                std::optional<std::array<double, 2>> vertical_start = std::nullopt);
 
+/// The torque a motor or brake puts on a powered axle that drives `traction` [N] (> 0 traction,
+/// < 0 braking) through its wheels: traction times the wheels' nominal radius [N m]. In steady
+/// rolling the contact's axle_torque balances it.
+double drive_torque(const WheelsetModel& model, double traction);
+
 /// The motion of wheel `side` (0 left, 1 right) in its own frame for kinematic_creepages.
 contactgeom::WheelsetMotion wheel_motion(const WheelsetMotionState& state,
                                          const RunningConditions& running, int side,
