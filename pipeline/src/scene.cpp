@@ -11,6 +11,7 @@
 
 #include "load_collective.hpp"
 #include "scene_keys.hpp"
+#include "scene_tables.hpp"
 #include "scene_values.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
@@ -29,6 +30,7 @@ using detail::format;
 using detail::integer;
 using detail::KeyHandler;
 using detail::number;
+using detail::one_of;
 using detail::read_table;
 using detail::text;
 using detail::where;
@@ -39,7 +41,6 @@ using detail::max_drop;
 using detail::profile_spec;
 using detail::resolve;
 using detail::scene_tangential_method;
-using detail::time_domain_irregularities;
 using detail::wheel_origin;
 
 }  // namespace
@@ -63,16 +64,17 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   std::string law_table;
   std::optional<int> vehicle_line, route_line;
   // [vehicle] and [route] fill one VehicleRun, made on first use.
+  auto vehicle_run = [&]() -> VehicleRun& {
+    if (!s.vehicle_run) s.vehicle_run.emplace();
+    return *s.vehicle_run;
+  };
+  // [hook] fills one CosimulationHook, made on first use; its program runs where the scene is.
   auto hook = [&]() -> CosimulationHook& {
     if (!s.hook) {
       s.hook.emplace();
       s.hook->working_directory = base_directory;
     }
     return *s.hook;
-  };
-  auto vehicle_run = [&]() -> VehicleRun& {
-    if (!s.vehicle_run) s.vehicle_run.emplace();
-    return *s.vehicle_run;
   };
 
   auto section = [&](const std::string& name, std::map<std::string, KeyHandler> handlers) {
@@ -229,11 +231,10 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
       {"wear", section("wear",
                        {{"law",
                          [&](const auto& n, const auto& k) {
-                           s.wear_law = text(n, k);
-                           if (s.wear_law != "usfd" && s.wear_law != "archard") {
-                             throw InputError(where(n.source(), k) + " = \"" + s.wear_law +
-                                              "\": unknown wear law; use usfd or archard");
-                           }
+                           s.wear_law = one_of(n, k, {"usfd", "archard"},
+                                               "unknown wear law; use usfd or archard") == 0
+                                            ? "usfd"
+                                            : "archard";
                          }},
                         {"law_table", [&](const auto& n, const auto& k) {
                            const fs::path file = resolve(base_directory, text(n, k));
@@ -263,12 +264,9 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                s.smoothing_length = number(n, k, 0.0, 0.02, "the smoothing length in m");
              }},
             {"wheels", [&](const auto& n, const auto& k) {
-               const std::string mode = text(n, k);
-               if (mode != "shared" && mode != "separate") {
-                 throw InputError(where(n.source(), k) + " = \"" + mode +
-                                  "\": use shared (one profile worn by both wheels) or separate");
-               }
-               s.separate_wheels = mode == "separate";
+               s.separate_wheels =
+                   one_of(n, k, {"shared", "separate"},
+                          "use shared (one profile worn by both wheels) or separate") == 1;
              }}})},
       {"limits",
        section("limits",
@@ -307,13 +305,12 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                  }},
                 {"wheelsets",
                  [&](const auto& n, const auto& k) {
-                   const std::string name = text(n, k);
-                   if (name != "all" && name != "leading")
-                     throw InputError(where(n.source(), k) + " = \"" + name +
-                                      "\": use all (the four wheelsets) or leading (the "
-                                      "leading wheelset of each bogie)");
-                   vehicle_run().wheelsets = name == "all" ? WheelsetSelection::all
-                                                           : WheelsetSelection::leading;
+                   vehicle_run().wheelsets =
+                       one_of(n, k, {"all", "leading"},
+                              "use all (the four wheelsets) or leading (the leading wheelset of "
+                              "each bogie)") == 0
+                           ? WheelsetSelection::all
+                           : WheelsetSelection::leading;
                  }},
                 {"contact_table",
                  [&](const auto& n, const auto& k) {
@@ -341,68 +338,11 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                             run.route = file ? vehicle::read_route(*file) : vehicle::default_route();
                             run.route_file = file ? file->string() : std::string();
                           }}})},
-      {"time_domain",
-       section("time_domain",
-               {{"enabled",
-                 [&](const auto& n, const auto& k) {
-                   vehicle_run().time_domain.enabled = boolean(n, k);
-                 }},
-                {"irregularities",
-                 [&](const auto& n, const auto& k) {
-                   time_domain_irregularities(n, k, base_directory, vehicle_run().time_domain);
-                 }},
-                {"seed",
-                 [&](const auto& n, const auto& k) {
-                   vehicle_run().time_domain.seed = static_cast<std::uint64_t>(integer(
-                       n, k, 0, std::numeric_limits<int>::max(),
-                       "the base seed of the generated irregularities"));
-                 }},
-                {"tangent_length_m",
-                 [&](const auto& n, const auto& k) {
-                   vehicle_run().time_domain.tangent_length =
-                       number(n, k, 10.0, 1e5, "the simulated stretch of each tangent in m");
-                 }},
-                {"transitions",
-                 [&](const auto& n, const auto& k) {
-                   const std::string name = text(n, k);
-                   if (name != "time" && name != "quasi-static")
-                     throw InputError(where(n.source(), k) + " = \"" + name +
-                                      "\": use time (simulated whole, with the tangents) or "
-                                      "quasi-static (each at its midpoint, as the curves)");
-                   vehicle_run().time_domain.simulate_transitions = name == "time";
-                 }},
-                {"run_in_m",
-                 [&](const auto& n, const auto& k) {
-                   vehicle_run().time_domain.run_in =
-                       number(n, k, 0.0, 1e4, "the run before each stretch's first sample in m");
-                 }},
-                {"sample_distance_m",
-                 [&](const auto& n, const auto& k) {
-                   vehicle_run().time_domain.sample_distance =
-                       number(n, k, 0.01, 100.0, "the distance between two samples in m");
-                 }}})},
-      {"hook",
-       section("hook",
-               {{"command",
-                 [&](const auto& n, const auto& k) {
-                   CosimulationHook& h = hook();
-                   h.command = detail::hook_command(n, k, base_directory);
-                   h.line = static_cast<int>(n.source().begin.line);
-                 }},
-                {"resolve_depth_m",
-                 [&](const auto& n, const auto& k) {
-                   hook().resolve_depth =
-                       number(n, k, 0.0, 0.01, "the wear depth between two calls in m");
-                 }},
-                {"timeout_s",
-                 [&](const auto& n, const auto& k) {
-                   hook().timeout =
-                       number(n, k, 0.1, 1e6, "the longest run of one call in s");
-                 }},
-                {"profile_format",
-                 [&](const auto& n, const auto& k) {
-                   hook().profile_format = detail::hook_profile_format(n, k);
-                 }}})},
+      {"time_domain", section("time_domain",
+                              detail::time_domain_keys(
+                                  [&]() -> TimeDomainKeys& { return vehicle_run().time_domain; },
+                                  base_directory))},
+      {"hook", section("hook", detail::hook_keys(hook))},
       {"load_collective",
        section("load_collective",
                {{"file",

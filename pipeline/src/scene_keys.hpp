@@ -1,6 +1,12 @@
 #pragma once
 // The scene's key readers: core::TomlKeys with "scene" in every message.
 
+#include <cstddef>
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
+#include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/toml_keys.hpp"
 
 namespace wheelwear::pipeline::detail {
@@ -31,6 +37,18 @@ inline std::string text(const toml::node& node, const std::string& key) {
 }
 inline bool boolean(const toml::node& node, const std::string& key) {
   return scene_keys().boolean(node, key);
+}
+// The index in `names` of the text at `key`; any other text is refused, `hint` saying what to
+// give instead.
+inline std::size_t one_of(const toml::node& node, const std::string& key,
+                          std::initializer_list<std::string_view> names, std::string_view hint) {
+  const std::string name = text(node, key);
+  std::size_t index = 0;
+  for (std::string_view candidate : names) {
+    if (candidate == name) return index;
+    ++index;
+  }
+  throw InputError(where(node.source(), key) + " = \"" + name + "\": " + std::string(hint));
 }
 inline void read_table(const toml::table& table, const std::string& section,
                        const std::map<std::string, KeyHandler>& handlers) {

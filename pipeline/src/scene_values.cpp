@@ -1,5 +1,7 @@
 #include "scene_values.hpp"
 
+#include <array>
+
 #include "load_collective.hpp"
 #include "scene_keys.hpp"
 #include "wheelwear/core/input_error.hpp"
@@ -136,12 +138,10 @@ std::vector<std::string> hook_command(const toml::node& node, const std::string&
 }
 
 HookProfileFormat hook_profile_format(const toml::node& node, const std::string& key) {
-  const std::string name = text(node, key);
-  if (name == "csv") return HookProfileFormat::csv;
-  if (name == "simpack") return HookProfileFormat::simpack;
-  if (name == "miniprof") return HookProfileFormat::miniprof;
-  throw InputError(where(node.source(), key) + " = \"" + name +
-                   "\": use csv (y, z in mm), simpack (.prw/.prr) or miniprof (.whl/.ban)");
+  constexpr std::array formats{HookProfileFormat::csv, HookProfileFormat::simpack,
+                               HookProfileFormat::miniprof};
+  return formats[one_of(node, key, {"csv", "simpack", "miniprof"},
+                        "use csv (y, z in mm), simpack (.prw/.prr) or miniprof (.whl/.ban)")];
 }
 
 std::vector<WheelsetStateSpec> inline_states(const toml::node& node, const std::string& key) {
