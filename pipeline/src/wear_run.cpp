@@ -6,11 +6,10 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <ctime>
 #include <optional>
 
-#include "load_collective.hpp"
+#include "hook_run.hpp"
 #include "step_record.hpp"
 #include "vehicle_record.hpp"
 #include "wheelwear/contactgeom/equivalent_conicity.hpp"
@@ -58,58 +57,15 @@ struct VehicleCarry {
   double depth_since_solve = 0.0;  // deepest wear since the last solve [m], an upper bound
 };
 
-// What a run with a co-simulation hook carries from step to step: the collective of its last
-// call.
-struct HookCarry {
-  bool called = false;  // a call has been made (or read back on resume)
-  std::vector<WheelsetStateSpec> states;
-  double depth_since_call = 0.0;  // deepest wear since the last call [m], an upper bound
-};
-
 // Where the loop starts: a new run at step 0 or a resumed one.
 struct LoopStart {
   int step = 0;
   double distance = 0.0;
   std::vector<WornProfile> worn;
   VehicleCarry vehicle;
-  HookCarry hook;
+  detail::HookCarry hook;
   fs::path hook_directory;  // the hook's files, a directory per call
 };
-
-// Calls the scene's hook on the current profiles when the wear since its last call reaches its
-// depth (at every step for depth 0), but not at the run's end, whose step only records the
-// final profile. Returns the call, if one was made.
-std::optional<HookCall> update_hook(const CosimulationHook& hook, const fs::path& directory,
-                                    int step, double distance, bool at_end,
-                                    const std::vector<WornProfile>& worn,
-                                    const profiles::Profile& rail, HookCarry& carry) {
-  if (carry.called && (at_end || carry.depth_since_call < hook.resolve_depth)) return std::nullopt;
-  char name[32];
-  std::snprintf(name, sizeof name, "step_%06d", step);
-  const HookProfiles profiles{worn.front().points, worn.back().points, rail.knot_points()};
-  HookCall call = call_hook(hook, directory / name, step, distance, profiles);
-  const std::string source = "the hook's collective of step " + std::to_string(step) + " (" +
-                             (directory / name / "collective.csv").string() + ")";
-  std::vector<WheelsetStateSpec> states = detail::read_collective_csv(call.collective, source);
-  double total = 0.0;
-  for (const WheelsetStateSpec& state : states) total += state.weight;
-  if (states.empty() || !(total > 0.0))
-    throw InputError(source +
-                     ": no state with a weight > 0; the program must write at least "
-                     "one state (docs/scenes.md, load collective columns)");
-  carry.states = std::move(states);
-  carry.depth_since_call = 0.0;
-  carry.called = true;
-  return call;
-}
-
-// Refuses a scene whose hook the run was not allowed to start.
-void check_hook_allowed(const Scene& scene, const RunOptions& options) {
-  if (!scene.hook || options.allow_hook) return;
-  throw InputError("scene line " + std::to_string(scene.hook->line) +
-                   ": [hook] command runs the program `" + hook_command_line(scene.hook->command) +
-                   "` during the run; pass --allow-hook to let the run start it");
-}
 
 // Solves the vehicle again when the wear since its last solve reaches the scene's depth (at
 // every step for depth 0). Returns whether it solved.
@@ -217,7 +173,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   double distance = start.distance;
   std::vector<WornProfile> worn = std::move(start.worn);
   VehicleCarry carry = std::move(start.vehicle);
-  HookCarry hook = std::move(start.hook);
+  detail::HookCarry hook = std::move(start.hook);
   // The depth arrives smoothed (smoothed() above): the update adds no smoothing of its own.
   const profiles::WearUpdateOptions update{0.0};
   // The nominal diameter is the new wheel's: a worn profile keeps its nominal radius.
@@ -243,12 +199,13 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       reached = reached || limits_reached.back() > 0;
     }
     const double remaining = scene.distance - distance;
-    const bool stop = scene.limits.stop && reached && remaining > 1e-9 * scene.distance;
+    const bool run_through = remaining <= 1e-9 * scene.distance;
+    const bool stop = scene.limits.stop && reached && !run_through;
     std::optional<HookCall> hook_call;
     if (scene.hook)
-      hook_call = update_hook(*scene.hook, start.hook_directory, step, distance,
-                              remaining <= 1e-9 * scene.distance || stop, worn,
-                              evaluator.kernel().rail(), hook);
+      hook_call = detail::update_hook(*scene.hook, start.hook_directory, step, distance,
+                                      run_through || stop, worn.front().points, worn.back().points,
+                                      evaluator.kernel().rail(), hook);
     const std::vector<WheelsetStateSpec>& specs = scene.vehicle_run ? carry.last.states
                                                   : scene.hook      ? hook.states
                                                                     : scene.states;
@@ -264,7 +221,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       for (double d : r.depth) peak = std::max(peak, d);
 
     double step_distance = 0.0;
-    if (remaining > 1e-9 * scene.distance && !stop) {
+    if (!run_through && !stop) {
       step_distance = std::min(scene.step_distance, remaining);
       if (peak > 0.0) step_distance = std::min(step_distance, scene.max_depth_step / peak);
     }
@@ -370,22 +327,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     }
     if (scene.hook) {
       const double depth_after = hook.depth_since_call + peak * step_distance;
-      g.arrays.push_back(scalar("hook/called", hook_call ? 1.0 : 0.0, "1",
-                                "1 when the hook made this step's collective"));
-      g.arrays.push_back(scalar("hook/depth_since_call", depth_after, "m",
-                                "deepest wear since the hook's last call, this step's included "
-                                "(an upper bound: the steps' deepest increments summed)"));
-      if (hook_call) {
-        g.texts.push_back({"hook/command", hook_command_line(hook_call->arguments),
-                           "the command as run, placeholders replaced"});
-        g.texts.push_back({"hook/output", hook_call->collective,
-                           "the collective file the program wrote, as it wrote it"});
-        g.texts.push_back({"hook/log", hook_call->log,
-                           "the program's standard output and error (the last 64 KiB)"});
-        g.arrays.push_back(
-            scalar("hook/seconds", hook_call->seconds, "s", "wall time of the hook's call"));
-      }
-      detail::add_collective(g, "collective/", hook.states);
+      detail::add_hook_record(g, hook_call, hook, depth_after);
       hook.depth_since_call = depth_after;
     }
     if (scene.state_summaries) detail::add_state_summaries(g, cw.states);
@@ -449,7 +391,7 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
                      const fs::path& scene_directory, bool builtin_scene, const fs::path& output,
                      const RunOptions& options) {
   // Everything that can fail on input fails before the file is created.
-  check_hook_allowed(scene, options);
+  detail::check_hook_allowed(scene, options);
   const CollectiveEvaluator evaluator(scene);
   LoopStart start{0, 0.0, new_profiles(scene)};
   start.hook_directory = hook_directory(output);
@@ -497,7 +439,7 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
                      tangential::creep_table_path().string() +
                      "); resuming would mix the two: start a new run with -o");
   }
-  check_hook_allowed(scene, options);
+  detail::check_hook_allowed(scene, options);
   const CollectiveEvaluator evaluator(scene);
   LoopStart start{last + 1, file.read_step_array(last, "distance").at(0) + step_distance,
                   new_profiles(scene)};
@@ -536,22 +478,7 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
         file.read_text(ResultsFile::step_group(last) + "/vehicle/critical_speed_note").value_or("");
     carry.depth_since_solve = file.read_step_array(last, "vehicle/depth_since_solve").at(0);
   }
-  if (scene.hook) {
-    // The last call's collective as the program wrote it: the step records' columns leave out
-    // creepages a hook may give directly.
-    HookCarry& carry = start.hook;
-    int called = last;
-    while (called > 0 && file.read_step_array(called, "hook/called").at(0) == 0.0) --called;
-    const auto written = file.read_text(ResultsFile::step_group(called) + "/hook/output");
-    if (!written)
-      throw InputError("results file " + output.string() + ": step " + std::to_string(called) +
-                       " holds no hook/output to resume from");
-    carry.called = true;
-    carry.states = detail::read_collective_csv(
-        *written,
-        "the hook's collective of step " + std::to_string(called) + " in " + output.string());
-    carry.depth_since_call = file.read_step_array(last, "hook/depth_since_call").at(0);
-  }
+  if (scene.hook) start.hook = detail::read_hook_carry(file, last, output);
   return loop(scene, evaluator, file, std::move(start), *directory, builtin, options);
 }
 
