@@ -26,9 +26,6 @@ struct LoadBracket {
     }
   }
   bool closed() const { return std::isfinite(below) && std::isfinite(above) && below < above; }
-  double width() const {
-    return closed() ? above - below : std::numeric_limits<double>::infinity();
-  }
   // `proposal`, or the bracket's midpoint where it falls outside.
   double inside(double proposal) const {
     if (!closed() || (proposal > below && proposal < above)) return proposal;
