@@ -17,6 +17,7 @@
 #include "thread_limit.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
+#include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/pipeline/wear_run.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
@@ -126,7 +127,10 @@ struct LimitReached {
 
 LimitReached first_limit(const pipeline::ResultsFile& file, int last) {
   LimitReached first;
-  const std::vector<std::string> wheels{"wheel", "wheel_left", "wheel_right"};
+  std::vector<std::string> wheels;
+  for (auto layout : {pipeline::ProfileLayout::shared, pipeline::ProfileLayout::left_right,
+                      pipeline::ProfileLayout::per_wheelset})
+    for (const std::string& name : pipeline::profile_names(layout)) wheels.push_back(name);
   auto recorded = [&](int step, const std::string& wheel) {
     return file.has(pipeline::ResultsFile::step_group(step) + "/" + wheel + "/limits_reached");
   };
@@ -154,8 +158,13 @@ LimitReached first_limit(const pipeline::ResultsFile& file, int last) {
 void report(const RunArgs& args, const std::string& output, const pipeline::RunSummary& s) {
   const pipeline::ResultsFile file = pipeline::ResultsFile::read(output);
   const int last = file.completed_steps() - 1;
-  const std::string wheel =
-      file.has(pipeline::ResultsFile::step_group(last) + "/wheel") ? "wheel" : "wheel_left";
+  // The first profile of the run's layout: the shared one, the left, or wheelset 1's left.
+  std::string wheel = "wheel";
+  for (const char* name : {"wheel", "wheel_left", "wheelsets/1/wheel_left"}) {
+    if (!file.has(pipeline::ResultsFile::step_group(last) + "/" + name)) continue;
+    wheel = name;
+    break;
+  }
   auto at = [&](int step, const std::string& name) {
     return file.read_step_array(step, name).at(0);
   };

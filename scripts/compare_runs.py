@@ -35,7 +35,8 @@ def worn_area(y0, z0, y1, z1):
 def history(path):
     with h5py.File(path, "r") as f:
         groups = [f["steps"][name] for name in sorted(f["steps"].keys())]
-        name = next(n for n in ("wheel", "wheel_left") if n in groups[0])
+        # The shared profile, else the left wheel's, else the leading wheelset's left wheel's.
+        name = next(n for n in ("wheel", "wheel_left", "wheelsets/1/wheel_left") if n in groups[0])
         y0 = np.asarray(groups[0][name]["y"])
         z0 = np.asarray(groups[0][name]["z"])
         rows = []

@@ -29,8 +29,14 @@ def steps(f):
     return [f["steps"][name] for name in sorted(f["steps"].keys())]
 
 
+WHEELSET_PROFILES = [f"wheelsets/{k}/{side}" for k in range(1, 5)
+                     for side in ("wheel_left", "wheel_right")]
+
+
 def wheel_groups(step):
-    return [name for name in ("wheel", "wheel_left", "wheel_right") if name in step]
+    """The worn profiles of a step: the shared one, left and right, or each wheelset's two."""
+    names = ("wheel", "wheel_left", "wheel_right", *WHEELSET_PROFILES)
+    return [name for name in names if name in step]
 
 
 def plot_profiles(f, out):
@@ -88,22 +94,44 @@ def plot_wear_depth(f, out):
     return path
 
 
+def wheel_label(name):
+    """'wheelsets/2/wheel_left' -> 'wheelset 2 left'; 'wheel_right' -> 'right'."""
+    parts = name.replace("wheel_", "").split("/")
+    return f"wheelset {parts[1]} {parts[2]}" if len(parts) == 3 else parts[0]
+
+
 def plot_parameters(f, out):
     groups = steps(f)
     distance = np.array([g["distance"][()] for g in groups]) / 1e3
-    name = wheel_groups(groups[0])[0]
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
-    for key in ("Sh", "Sd", "qR"):
-        axes[0].plot(distance, [g[name][key][()] * 1e3 for g in groups], marker="o", ms=3,
-                     label=key)
-    axes[0].set_xlabel("distance [km]")
-    axes[0].set_ylabel("[mm]")
-    axes[0].legend()
-    axes[0].set_title("EN 15313 parameters")
-    axes[1].plot(distance, [g["equivalent_conicity"][()] for g in groups], marker="o", ms=3)
-    axes[1].set_xlabel("distance [km]")
-    axes[1].set_ylabel("tan γe at 3 mm")
-    axes[1].set_title("equivalent conicity (EN 15302)")
+    names = wheel_groups(groups[0])
+    # One profile: its three parameters in one panel. Several (left and right, or each
+    # wheelset's two): a panel for Sd and one for Sh, a line per wheel (solid left, dashed right).
+    panels = [("Sh", "Sd", "qR")] if len(names) == 1 else [("Sd",), ("Sh",)]
+    fig, axes = plt.subplots(1, len(panels) + 1, figsize=(5 * (len(panels) + 1), 4))
+    colours = plt.cm.tab10(np.arange(4))
+    for ax, keys in zip(axes, panels):
+        for i, name in enumerate(names):
+            for key in keys:
+                several = len(names) > 1
+                ax.plot(distance, [g[name][key][()] * 1e3 for g in groups], marker="o", ms=3,
+                        ls="--" if several and name.endswith("right") else "-",
+                        color=colours[i // 2 if len(names) > 2 else i] if several else None,
+                        label=wheel_label(name) if several else key)
+        ax.set_xlabel("distance [km]")
+        ax.set_ylabel("[mm]")
+        ax.legend(fontsize=7 if len(names) > 2 else None)
+        ax.set_title("EN 15313 parameters" if len(keys) > 1 else f"{keys[0]} (EN 15313)")
+    wheelsets = [k for k in range(1, 5) if f"wheelsets/{k}/equivalent_conicity" in groups[0]]
+    if wheelsets:
+        for k in wheelsets:
+            axes[-1].plot(distance, [g[f"wheelsets/{k}/equivalent_conicity"][()] for g in groups],
+                          marker="o", ms=3, color=colours[k - 1], label=f"wheelset {k}")
+        axes[-1].legend()
+    else:
+        axes[-1].plot(distance, [g["equivalent_conicity"][()] for g in groups], marker="o", ms=3)
+    axes[-1].set_xlabel("distance [km]")
+    axes[-1].set_ylabel("tan γe at 3 mm")
+    axes[-1].set_title("equivalent conicity (EN 15302)")
     path = os.path.join(out, "parameters.png")
     fig.tight_layout()
     fig.savefig(path, dpi=130)

@@ -13,13 +13,19 @@ namespace wheelwear::pipeline {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr auto kPhysicalWheelsets = static_cast<std::size_t>(vehicle::kWheelsets);
 
 // Geometry is shared by states with the same position and loads (the yaw enters only the
 // creepages): NaN stands for a lateral force not given.
-using GeometryKey = std::tuple<double, double, double, double, double>;
+// The first element is the state's pair of profiles (its wheelset on the track).
+using GeometryKey = std::tuple<double, double, double, double, double, double>;
 
-GeometryKey geometry_key(const WheelsetStateSpec& s) {
-  return {s.dy, s.load_left, s.load_right, s.lateral_force_left.value_or(kNaN),
+GeometryKey geometry_key(const WheelsetStateSpec& s, std::size_t track) {
+  return {static_cast<double>(track),
+          s.dy,
+          s.load_left,
+          s.load_right,
+          s.lateral_force_left.value_or(kNaN),
           s.lateral_force_right.value_or(kNaN)};
 }
 
@@ -27,10 +33,11 @@ GeometryKey geometry_key(const WheelsetStateSpec& s) {
 struct KeyLess {
   bool operator()(const GeometryKey& a, const GeometryKey& b) const {
     auto as_pair = [](double v) { return std::pair{!std::isnan(v), std::isnan(v) ? 0.0 : v}; };
-    return std::tuple{std::get<0>(a), std::get<1>(a), std::get<2>(a), as_pair(std::get<3>(a)),
-                      as_pair(std::get<4>(a))} < std::tuple{std::get<0>(b), std::get<1>(b),
-                                                            std::get<2>(b), as_pair(std::get<3>(b)),
-                                                            as_pair(std::get<4>(b))};
+    const auto comparable = [&](const GeometryKey& k) {
+      return std::tuple{std::get<0>(k), std::get<1>(k),          std::get<2>(k),
+                        std::get<3>(k), as_pair(std::get<4>(k)), as_pair(std::get<5>(k))};
+    };
+    return comparable(a) < comparable(b);
   }
 };
 
@@ -40,13 +47,14 @@ struct GeometryIndex {
   std::vector<std::size_t> first_state;  // per geometry
 };
 
-GeometryIndex index_geometries(const std::vector<WheelsetStateSpec>& states, bool reuse) {
+GeometryIndex index_geometries(const std::vector<WheelsetStateSpec>& states,
+                               const std::vector<std::size_t>& track_of, bool reuse) {
   GeometryIndex index;
   std::map<GeometryKey, std::size_t, KeyLess> index_of;
   index.geometry_of.resize(states.size());
   for (std::size_t i = 0; i < states.size(); ++i) {
-    GeometryKey key = geometry_key(states[i]);
-    if (!reuse) std::get<0>(key) = static_cast<double>(i) + 1.0;  // unique per state
+    GeometryKey key = geometry_key(states[i], track_of[i]);
+    if (!reuse) std::get<1>(key) = static_cast<double>(i) + 1.0;  // unique per state
     const auto [it, inserted] = index_of.emplace(key, index.first_state.size());
     if (inserted) index.first_state.push_back(i);
     index.geometry_of[i] = it->second;
@@ -68,17 +76,84 @@ std::vector<double> state_shares(const Scene& scene) {
   return state_shares(scene.states);
 }
 
+ProfileLayout profile_layout(const Scene& scene) {
+  if (!scene.separate_wheels) return ProfileLayout::shared;
+  return scene.vehicle_run ? ProfileLayout::per_wheelset : ProfileLayout::left_right;
+}
+
+std::size_t profile_count(ProfileLayout layout) {
+  switch (layout) {
+    case ProfileLayout::shared:
+      return 1;
+    case ProfileLayout::left_right:
+      return 2;
+    case ProfileLayout::per_wheelset:
+      return 2 * kPhysicalWheelsets;
+  }
+  return 1;
+}
+
+std::vector<std::string> profile_names(ProfileLayout layout) {
+  switch (layout) {
+    case ProfileLayout::shared:
+      return {"wheel"};
+    case ProfileLayout::left_right:
+      return {"wheel_left", "wheel_right"};
+    case ProfileLayout::per_wheelset: {
+      std::vector<std::string> names;
+      for (std::size_t k = 1; k <= kPhysicalWheelsets; ++k)
+        for (const char* side : {"wheel_left", "wheel_right"})
+          names.push_back("wheelsets/" + std::to_string(k) + "/" + side);
+      return names;
+    }
+  }
+  return {};
+}
+
+ProfileLayout layout_of(std::size_t count) {
+  for (ProfileLayout layout :
+       {ProfileLayout::shared, ProfileLayout::left_right, ProfileLayout::per_wheelset})
+    if (profile_count(layout) == count) return layout;
+  throw InputError("worn wheel profiles: " + std::to_string(count) +
+                   " given; a run wears 1 (shared), 2 (left, right) or 8 (per wheelset)");
+}
+
+std::array<std::size_t, 2> worn_profiles(const WheelsetStateSpec& state, ProfileLayout layout) {
+  const std::size_t near = state.reversed ? 1 : 0;  // the physical side on the left in travel
+  switch (layout) {
+    case ProfileLayout::shared:
+      return {0, 0};
+    case ProfileLayout::left_right:
+      return {near, 1 - near};
+    case ProfileLayout::per_wheelset: {
+      if (state.wheelset < 0 || state.wheelset >= static_cast<int>(kPhysicalWheelsets))
+        throw InputError("state '" + state.label + "' (line " + std::to_string(state.line) +
+                         "): each wheelset wears its own profiles, and the state names none; "
+                         "give its wheelset (1 to 4)");
+      const auto first = 2 * static_cast<std::size_t>(state.wheelset);
+      return {first + near, first + 1 - near};
+    }
+  }
+  return {0, 0};
+}
+
 std::vector<double> wheel_weights(const std::vector<WheelsetStateSpec>& states,
-                                  bool separate_wheels) {
+                                  ProfileLayout layout) {
   const std::vector<double> shares = state_shares(states);
+  std::vector<double> on_profile(profile_count(layout), 0.0);
+  for (std::size_t i = 0; i < states.size(); ++i)
+    for (std::size_t p : worn_profiles(states[i], layout)) on_profile[p] += shares[i];
   std::vector<double> weights(2 * shares.size());
-  for (std::size_t i = 0; i < shares.size(); ++i)
-    weights[2 * i] = weights[2 * i + 1] = shares[i] * (separate_wheels ? 1.0 : 0.5);
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const std::array<std::size_t, 2> p = worn_profiles(states[i], layout);
+    for (std::size_t side = 0; side < 2; ++side)
+      weights[2 * i + side] = shares[i] == 0.0 ? 0.0 : shares[i] / on_profile[p[side]];
+  }
   return weights;
 }
 
 std::vector<double> wheel_weights(const Scene& scene) {
-  return wheel_weights(scene.states, scene.separate_wheels);
+  return wheel_weights(scene.states, profile_layout(scene));
 }
 
 std::vector<std::pair<std::string, double>> DroppedStates::named() const {
@@ -140,18 +215,19 @@ void reduce_states(const Scene& scene, const std::vector<StateOutcome>& states,
 void reduce_states(const Scene& scene, const std::vector<WheelsetStateSpec>& specs,
                    const std::vector<StateOutcome>& states, CollectiveWear& out) {
   const std::vector<double> shares = state_shares(specs);
-  const std::vector<double> weights = wheel_weights(specs, scene.separate_wheels);
+  const ProfileLayout layout = profile_layout(scene);
+  const std::vector<double> weights = wheel_weights(specs, layout);
   for (std::size_t i = 0; i < states.size(); ++i) {
     if (states[i].dropped()) {
       count_dropped(states[i], shares[i], out.dropped);
       continue;
     }
-    for (int side = 0; side < 2; ++side) {
-      const WheelOutcome& wheel = states[i].wheels[static_cast<std::size_t>(side)];
-      const double weight = weights[2 * i + static_cast<std::size_t>(side)];
+    const std::array<std::size_t, 2> profile = worn_profiles(specs[i], layout);
+    for (std::size_t side = 0; side < 2; ++side) {
+      const WheelOutcome& wheel = states[i].wheels[side];
+      const double weight = weights[2 * i + side];
       out.hertz_dropped += static_cast<std::size_t>(wheel.hertz_dropped);
-      std::vector<double>& rate =
-          out.rate[scene.separate_wheels ? static_cast<std::size_t>(side) : 0].depth;
+      std::vector<double>& rate = out.rate[profile[side]].depth;
       for (const PatchOutcome& p : wheel.patches) {
         if (!p.solved) continue;
         ++out.patches;
@@ -175,17 +251,33 @@ CollectiveWear CollectiveEvaluator::evaluate(
 CollectiveWear CollectiveEvaluator::evaluate(const std::vector<const profiles::Profile*>& wheels,
                                              const std::vector<WheelsetStateSpec>& specs) const {
   const Scene& scene = kernel_.scene();
-  const std::size_t profiles_worn = scene.separate_wheels ? 2 : 1;
-  require(wheels.size() == profiles_worn, "worn wheel profiles", static_cast<double>(wheels.size()),
-          scene.separate_wheels ? "separate wheels need two profiles (left, right)"
-                                : "shared wheels need one profile");
-  const contactgeom::WheelsetOnTrack track{kernel_.pair(*wheels.front()),
-                                           kernel_.pair(*wheels.back())};
+  const ProfileLayout layout = profile_layout(scene);
+  require(wheels.size() == profile_count(layout), "worn wheel profiles",
+          static_cast<double>(wheels.size()),
+          layout == ProfileLayout::shared ? "shared wheels need one profile"
+          : layout == ProfileLayout::left_right
+              ? "separate wheels need two profiles (left, right)"
+              : "separate wheels of a vehicle need eight profiles "
+                "(left and right of each wheelset)");
+  std::vector<contactgeom::WheelRailPair> pairs;
+  for (const profiles::Profile* wheel : wheels) pairs.push_back(kernel_.pair(*wheel));
+  // The wheelset each state runs on: the pair of profiles its left and right wheel wear.
+  std::vector<std::array<std::size_t, 2>> profile_of(specs.size());
+  std::map<std::array<std::size_t, 2>, std::size_t> track_index;
+  std::vector<contactgeom::WheelsetOnTrack> tracks;
+  std::vector<std::size_t> track_of(specs.size());
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    profile_of[i] = worn_profiles(specs[i], layout);
+    const auto [it, inserted] = track_index.emplace(profile_of[i], tracks.size());
+    if (inserted) tracks.push_back({pairs[profile_of[i][0]], pairs[profile_of[i][1]]});
+    track_of[i] = it->second;
+  }
 
-  const GeometryIndex index = index_geometries(specs, reuse_geometry_);
+  const GeometryIndex index = index_geometries(specs, track_of, reuse_geometry_);
   std::vector<contactgeom::WheelsetContact> contacts(index.first_state.size());
   tbb::parallel_for(std::size_t{0}, contacts.size(), [&](std::size_t g) {
-    contacts[g] = kernel_.contact(track, specs[index.first_state[g]]);
+    const std::size_t first = index.first_state[g];
+    contacts[g] = kernel_.contact(tracks[track_of[first]], specs[first]);
   });
 
   const std::size_t n_states = specs.size();
@@ -195,6 +287,7 @@ CollectiveWear CollectiveEvaluator::evaluate(const std::vector<const profiles::P
     const std::size_t i = k / 2;
     const int side = static_cast<int>(k % 2);
     const contactgeom::WheelsetContact& both = contacts[index.geometry_of[i]];
+    const contactgeom::WheelsetOnTrack& track = tracks[track_of[i]];
     if (side == 0) states[i].roll = both.roll;  // one writer per state
     states[i].wheels[static_cast<std::size_t>(side)] = kernel_.wheel(
         both, side, specs[i], side == 0 ? track.left.wheel : track.right.wheel, scene.tgamma_maps);

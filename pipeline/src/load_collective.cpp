@@ -86,6 +86,10 @@ const std::vector<Column>& columns() {
        [](auto& s, double v) { creepages(s, false)->phi = v; }, -100.0, 100.0},
       {"weight", "share of the running distance [-]", [](auto& s, double v) { s.weight = v; }, 0.0,
        1e12},
+      {"wheelset", "physical wheelset 1 ... 4 whose own profiles the state wears [-]",
+       [](auto& s, double v) { s.wheelset = static_cast<int>(std::lround(v)) - 1; }, 1.0, 4.0},
+      {"reversed", "1 when the vehicle runs backwards (left in travel = physical right) [-]",
+       [](auto& s, double v) { s.reversed = v > 0.5; }, 0.0, 1.0},
   };
   return table;
 }
@@ -140,6 +144,10 @@ void set_state_field(WheelsetStateSpec& state, const StateField& field, const st
                        c.meaning + " must be finite and within [" + format_value(c.lo) + ", " +
                        format_value(c.hi) + "] (SI units)");
     }
+    const std::string_view name = c.name;
+    if ((name == "wheelset" || name == "reversed") && field.number != std::floor(field.number))
+      throw InputError(where + ": " + c.name + " = " + format_value(field.number) +
+                       ": give a whole number (" + c.meaning + ")");
     c.set(state, field.number);
     return;
   }

@@ -337,6 +337,12 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                             VehicleRun& run = vehicle_run();
                             run.route = file ? vehicle::read_route(*file) : vehicle::default_route();
                             run.route_file = file ? file->string() : std::string();
+                          }},
+                         {"direction", [&](const auto& n, const auto& k) {
+                            vehicle_run().direction = static_cast<RunningDirection>(one_of(
+                                n, k, {"forward", "reverse", "both"},
+                                "use forward (start to end), reverse (end to start, the last "
+                                "wheelset leading) or both (half the distance each way)"));
                           }}})},
       {"time_domain", section("time_domain",
                               detail::time_domain_keys(
@@ -427,6 +433,9 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                        ": [load_collective] and [vehicle] both give the run's states; give one: "
                        "the vehicle on its route makes the collective of every step itself");
     }
+    // A route that cannot be run backwards is refused now, not at the first solve.
+    if (s.vehicle_run->direction != RunningDirection::forward)
+      (void)vehicle::reversed(s.vehicle_run->route);
     return s;
   }
   if (s.states.empty()) {

@@ -152,6 +152,7 @@ std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
       if (!in_stretch(piece, w.distance)) continue;
       states.push_back(
           motion_state(w.state, w.forces, w.running, sample_label(piece, k, w.distance), weight));
+      mark_wheelset(states.back(), k, piece.reversed);
     }
     if (planned > n) {
       // The part of the stretch the stopped simulation did not reach: the wheelset's state where

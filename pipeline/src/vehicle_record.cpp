@@ -55,6 +55,12 @@ const std::vector<CollectiveColumn>& collective_columns() {
        [](const S& s) { return s.friction_flange.value_or(kNaN); }},
       {"weight", "1", "share of the running distance (unnormalised)",
        [](const S& s) { return s.weight; }},
+      {"wheelset", "1",
+       "physical wheelset (1-4, forward order of travel) whose own profiles the state wears "
+       "(NaN: not given)",
+       [](const S& s) { return s.wheelset < 0 ? kNaN : s.wheelset + 1.0; }},
+      {"reversed", "1", "1: the vehicle runs the route backwards (left in travel = physical right)",
+       [](const S& s) { return s.reversed ? 1.0 : 0.0; }},
   };
   return columns;
 }
@@ -118,6 +124,9 @@ std::vector<WheelsetStateSpec> read_collective(const ResultsFile& file, int step
   const std::string where =
       "results file " + file.path().string() + ", step " + std::to_string(step) + ", " + prefix;
   for (const CollectiveColumn& c : collective_columns()) {
+    // Files written before the wheelset and direction columns existed hold neither.
+    const std::string column = ResultsFile::step_group(step) + "/" + prefix + c.name;
+    if (!states.empty() && !file.has(column)) continue;
     const std::vector<double> values = file.read_step_array(step, prefix + c.name);
     if (states.empty()) states.resize(values.size());
     if (values.size() != states.size())
@@ -163,6 +172,10 @@ void add_vehicle_cases(GroupRecord& g, const VehicleCollective& v) {
       "friction on the gauge face"));
   g.arrays.push_back(vector(p + "share", per_case(v, [](const C& c, const V&) { return c.share; }),
                             "1", "share of the route's length"));
+  g.arrays.push_back(vector(
+      p + "reversed", per_case(v, [](const C& c, const V&) { return c.reversed ? 1.0 : 0.0; }), "1",
+      "1: met running the route backwards (radius and wheelsets as seen "
+      "in travel)"));
   g.arrays.push_back(vector(p + "cant_deficiency_m",
                             per_case(v, [](const C&, const V& c) { return c.cant_deficiency; }),
                             "m", "cant deficiency (EN 13803's approximation)"));
@@ -262,6 +275,9 @@ void add_vehicle_pieces(GroupRecord& g, const VehicleCollective& v) {
   per_piece(
       "tangent", [](const D& d, const PieceRun&) { return d.tangent ? 1.0 : 0.0; }, "1",
       "1 for a tangent's stretch, 0 for a whole transition");
+  per_piece(
+      "reversed", [](const D& d, const PieceRun&) { return d.reversed ? 1.0 : 0.0; }, "1",
+      "1: run backwards (section and distances along the reversed route)");
   per_piece(
       "start_m", [](const D& d, const PieceRun&) { return d.start_m; }, "m",
       "where the simulated stretch starts along the route");

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <tuple>
 
 #include "wheelwear/core/input_error.hpp"
@@ -18,15 +19,17 @@ namespace wheelwear::pipeline {
 namespace {
 
 // What makes two running conditions the same.
-using CaseKey = std::tuple<double, double, double, double, double, double>;
+using CaseKey = std::tuple<double, double, double, double, double, double, bool>;
 
-CaseKey case_key(const vehicle::SteadyCurve& c) {
-  return {c.running.curve_radius,
-          c.cant,
-          c.running.speed,
-          c.running.friction,
-          c.running.friction_flange.value_or(c.running.friction),
-          c.traction};
+CaseKey case_key(const RouteCase& c) {
+  const vehicle::SteadyCurve& curve = c.curve;
+  return {curve.running.curve_radius,
+          curve.cant,
+          curve.running.speed,
+          curve.running.friction,
+          curve.running.friction_flange.value_or(curve.running.friction),
+          curve.traction,
+          c.reversed};
 }
 
 std::string case_label(const vehicle::RouteSection& section, std::size_t index,
@@ -53,9 +56,9 @@ vehicle::SteadyCurve condition_at(const vehicle::TrackPoint& point, double speed
 // Adds `c` to `cases`, or its share to the case of the same condition already there (which takes
 // its label if it was only a piece's start). Returns the case's index.
 std::size_t add_case(std::vector<RouteCase>& cases, RouteCase c) {
-  const CaseKey key = case_key(c.curve);
+  const CaseKey key = case_key(c);
   for (std::size_t k = 0; k < cases.size(); ++k) {
-    if (case_key(cases[k].curve) != key) continue;
+    if (case_key(cases[k]) != key) continue;
     if (cases[k].share == 0.0 && c.share > 0.0) cases[k].label = std::move(c.label);
     cases[k].share += c.share;
     return k;
@@ -73,13 +76,16 @@ RouteCase section_case(const vehicle::Route& route, std::size_t i, double start,
           section.length_m / total};
 }
 
+// The contact models of the four wheelsets in order of travel: the physical wheelset k, or
+// 3 - k running backwards with its sides swapped.
+using Models = std::array<vehicle::WheelsetModel, vehicle::kWheelsets>;
+
 // The linear critical speed of `run`'s vehicle with `models`, the contacts its dynamics uses,
 // into out.critical_speed and out.critical_speed_note; searched from the previous solve's where
 // it was found (the profiles change little between solves: the crossing nearest it), to 0.1 %
 // (the table's interpolation moves it by more, docs/vehicle.md). A search that fails (no steady
 // state on tangent track at some speed) leaves NaN and says why, and does not stop the run.
-void find_critical_speed(const VehicleRun& run,
-                         const std::array<vehicle::WheelsetModel, vehicle::kWheelsets>& models,
+void find_critical_speed(const VehicleRun& run, const Models& models,
                          const VehicleCollective* previous, VehicleCollective& out) {
   vehicle::VehicleStabilityOptions options;
   options.speed_step = 5.0;
@@ -105,27 +111,67 @@ void find_critical_speed(const VehicleRun& run,
 
 // Simulates `out`'s pieces from their start cases' solutions, independently of each other, and
 // appends their states to out.states in the pieces' order.
-void simulate_pieces(const VehicleRun& run,
-                     const std::array<vehicle::WheelsetModel, vehicle::kWheelsets>& models,
-                     const std::vector<int>& worn, VehicleCollective& out) {
+void simulate_pieces(const std::array<const Models*, 2>& models,
+                     const std::array<const RunningWay*, 2>& ways, const std::vector<int>& worn,
+                     VehicleCollective& out) {
   out.piece_runs.resize(out.pieces.size());
   std::vector<std::vector<WheelsetStateSpec>> sampled(out.pieces.size());
   tbb::parallel_for(std::size_t{0}, out.pieces.size(), [&](std::size_t p) {
     const DynamicPiece& piece = out.pieces[p];
+    const RunningWay& way = *ways[piece.reversed ? 1 : 0];
     vehicle::VehicleMotionOptions options;
-    options.run_in = run.time_domain.run_in;
-    options.sample_distance = run.time_domain.sample_distance;
+    options.run_in = way.time_domain.run_in;
+    options.sample_distance = way.time_domain.sample_distance;
     options.speed = piece.speed;
     const vehicle::VehicleCurving& start = out.curving[piece.start_case];
     const vehicle::VehicleMotion motion = vehicle::simulate_vehicle(
-        run.vehicle, models, run.route, piece.sim_start_m, piece.sim_length_m,
-        piece_irregularities(piece, run.time_domain, run.vehicle), vehicle::placement_of(start),
-        options);
+        way.vehicle, *models[piece.reversed ? 1 : 0], way.route, piece.sim_start_m,
+        piece.sim_length_m, piece_irregularities(piece, way.time_domain, way.vehicle),
+        vehicle::placement_of(start), options);
     sampled[p] =
         piece_states(piece, motion, out.cases[piece.start_case], start, worn, out.piece_runs[p]);
   });
   for (std::vector<WheelsetStateSpec>& states : sampled)
     for (WheelsetStateSpec& s : states) out.states.push_back(std::move(s));
+}
+
+// The profile of physical wheelset j's wheel on `side` (0 left, 1 right) among `wheels`
+// (ProfileLayout's order).
+const profiles::Profile& profile_of(const std::vector<const profiles::Profile*>& wheels,
+                                    std::size_t j, std::size_t side) {
+  if (wheels.size() == 1) return *wheels[0];
+  if (wheels.size() == 2) return *wheels[side];
+  return *wheels[2 * j + side];
+}
+
+// The models of both directions; each distinct pair of profiles gets one contact table, built
+// in parallel.
+std::array<Models, 2> direction_models(const VehicleRun& run, const StateKernel& kernel,
+                                       const std::vector<const profiles::Profile*>& wheels) {
+  constexpr auto kSets = static_cast<std::size_t>(vehicle::kWheelsets);
+  std::vector<std::pair<const profiles::Profile*, const profiles::Profile*>> pairs;
+  std::array<std::array<std::size_t, kSets>, 2> pair_of{};
+  for (std::size_t d = 0; d < 2; ++d) {
+    for (std::size_t k = 0; k < kSets; ++k) {
+      const std::size_t j = d == 0 ? k : kSets - 1 - k;
+      const profiles::Profile* left = &profile_of(wheels, j, d == 0 ? 0 : 1);
+      const profiles::Profile* right = &profile_of(wheels, j, d == 0 ? 1 : 0);
+      const auto it = std::find(pairs.begin(), pairs.end(), std::pair{left, right});
+      pair_of[d][k] = static_cast<std::size_t>(it - pairs.begin());
+      if (it == pairs.end()) pairs.emplace_back(left, right);
+    }
+  }
+  std::vector<std::optional<vehicle::WheelsetModel>> distinct(pairs.size());
+  tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t i) {
+    vehicle::WheelsetModel model = wheelset_model(kernel, *pairs[i].first, *pairs[i].second);
+    if (run.contact_table) model.table = contact_table(model, run.vehicle);
+    distinct[i] = std::move(model);
+  });
+  const auto models = [&](std::size_t d) {
+    const auto& p = pair_of[d];
+    return Models{*distinct[p[0]], *distinct[p[1]], *distinct[p[2]], *distinct[p[3]]};
+  };
+  return {models(0), models(1)};
 }
 
 }  // namespace
@@ -195,6 +241,51 @@ RoutePlan route_plan(const vehicle::Route& route, const TimeDomainKeys& time_dom
   }
   return plan;
 }
+RunningWay running_way(const VehicleRun& run, bool reversed) {
+  if (!reversed) return {run.route, run.time_domain, run.vehicle};
+  RunningWay way{vehicle::reversed(run.route), run.time_domain, run.vehicle};
+  std::reverse(way.vehicle.powered.begin(), way.vehicle.powered.end());
+  if (run.time_domain.irregularities == IrregularitySource::file)
+    way.time_domain.measured =
+        vehicle::reversed(run.time_domain.measured, run.route.total_length());
+  return way;
+}
+
+RoutePlan route_plan(const VehicleRun& run) {
+  const bool forward = run.direction != RunningDirection::reverse;
+  const bool backward = run.direction != RunningDirection::forward;
+  const double part = forward && backward ? 0.5 : 1.0;
+  RoutePlan plan;
+  if (forward) plan = route_plan(run.route, run.time_domain, run.vehicle);
+  if (!backward) return plan;
+  const RunningWay way = running_way(run, true);
+  RoutePlan back = route_plan(way.route, way.time_domain, way.vehicle);
+  for (RouteCase& c : plan.cases) c.share *= part;
+  for (DynamicPiece& p : plan.pieces) p.share *= part;
+  const std::size_t first_case = plan.cases.size();
+  for (RouteCase& c : back.cases) {
+    c.share *= part;
+    c.reversed = true;
+    c.label = "backwards, " + c.label;
+    plan.cases.push_back(std::move(c));
+  }
+  const std::size_t sections = run.route.sections.size();
+  for (DynamicPiece& p : back.pieces) {
+    p.share *= part;
+    p.reversed = true;
+    p.label = "backwards, " + p.label;
+    p.start_case += first_case;
+    p.seed = vehicle::seed_for_section(run.time_domain.seed, sections + p.section);
+    plan.pieces.push_back(std::move(p));
+  }
+  return plan;
+}
+
+void mark_wheelset(WheelsetStateSpec& state, int k, bool reversed) {
+  state.wheelset = reversed ? vehicle::kWheelsets - 1 - k : k;
+  state.reversed = reversed;
+}
+
 vehicle::WheelsetModel wheelset_model(const StateKernel& kernel, const profiles::Profile& left,
                                       const profiles::Profile& right) {
   vehicle::WheelsetModel model{{kernel.pair(left), kernel.pair(right)}};
@@ -246,25 +337,32 @@ WheelsetStateSpec motion_state(const vehicle::WheelsetMotionState& state,
 WheelsetStateSpec wheelset_state(const RouteCase& route_case,
                                  const vehicle::VehicleCurving& curving, int k, double weight) {
   const vehicle::CurvingWheelset& w = curving.wheelsets[static_cast<std::size_t>(k)];
-  return motion_state(w.state, w.forces, route_case.curve.running,
-                      route_case.label + ", wheelset " + std::to_string(k + 1), weight);
+  WheelsetStateSpec s =
+      motion_state(w.state, w.forces, route_case.curve.running,
+                   route_case.label + ", wheelset " + std::to_string(k + 1), weight);
+  mark_wheelset(s, k, route_case.reversed);
+  return s;
 }
 
 VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKernel& kernel,
                                            const std::vector<const profiles::Profile*>& wheels,
                                            const VehicleCollective* previous) {
-  require(wheels.size() == 1 || wheels.size() == 2, "worn wheel profiles",
-          static_cast<double>(wheels.size()), "give one (shared) or two (left, right)");
+  require(wheels.size() == 1 || wheels.size() == 2 || wheels.size() == 2 * vehicle::kWheelsets,
+          "worn wheel profiles", static_cast<double>(wheels.size()),
+          "give one (shared), two (left, right) or eight (left and right of each wheelset)");
   VehicleCollective out;
-  RoutePlan plan = route_plan(run.route, run.time_domain, run.vehicle);
+  RoutePlan plan = route_plan(run);
   out.cases = std::move(plan.cases);
   out.pieces = std::move(plan.pieces);
   if (previous)
     require(previous->curving.size() == out.cases.size(), "previous solution's cases",
             static_cast<double>(previous->curving.size()), "must be the route's");
-  vehicle::WheelsetModel model = wheelset_model(kernel, *wheels.front(), *wheels.back());
-  if (run.contact_table) model.table = contact_table(model, run.vehicle);
-  const std::array<vehicle::WheelsetModel, vehicle::kWheelsets> models{model, model, model, model};
+  const std::array<Models, 2> models = direction_models(run, kernel, wheels);
+  const RunningWay forward = running_way(run, false);
+  const std::optional<RunningWay> backward = run.direction == RunningDirection::forward
+                                                 ? std::nullopt
+                                                 : std::optional(running_way(run, true));
+  const std::array<const RunningWay*, 2> ways{&forward, backward ? &*backward : &forward};
   out.curving.resize(out.cases.size());
   std::vector<int> kept(out.cases.size(), 0);
   tbb::parallel_for(std::size_t{0}, out.cases.size(), [&](std::size_t i) {
@@ -275,8 +373,9 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
       // where the warm start fails on the slightly worn profiles.
       options.restart_on_failure = false;
     }
+    const std::size_t d = out.cases[i].reversed ? 1 : 0;
     out.curving[i] =
-        vehicle::solve_vehicle_curving(run.vehicle, models, out.cases[i].curve, options);
+        vehicle::solve_vehicle_curving(ways[d]->vehicle, models[d], out.cases[i].curve, options);
     if (previous && !out.curving[i].converged && previous->curving[i].converged) {
       out.curving[i] = previous->curving[i];
       kept[i] = 1;
@@ -294,9 +393,11 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
   // The critical speed's search (serial) beside the pieces' simulations (parallel).
   tbb::parallel_invoke(
       [&] {
-        if (run.critical_speed) find_critical_speed(run, models, previous, out);
+        if (run.critical_speed) find_critical_speed(run, models[0], previous, out);
       },
-      [&] { simulate_pieces(run, models, worn, out); });
+      [&] {
+        simulate_pieces({&models[0], &models[1]}, ways, worn, out);
+      });
   return out;
 }
 

@@ -104,11 +104,12 @@ std::vector<WornProfile> new_profiles(const Scene& scene) {
   WornProfile w{"wheel", initial.info(), initial.curve_options(), initial.knot_points()};
   // The profile is re-interpolated through its knots: smoothing was applied once, on reading.
   w.curve.smoothing_length = 0.0;
-  if (!scene.separate_wheels) return {w};
-  WornProfile left = w, right = w;
-  left.name = "wheel_left";
-  right.name = "wheel_right";
-  return {left, right};
+  std::vector<WornProfile> worn;
+  for (const std::string& name : profile_names(profile_layout(scene))) {
+    worn.push_back(w);
+    worn.back().name = name;
+  }
+  return worn;
 }
 
 // The rate smoothed along the arc length by a Gaussian of standard deviation `length`: each
@@ -161,6 +162,32 @@ profiles::WheelParameters measured_parameters(const profiles::Profile& wheel) {
     profiles::WheelParameters none;
     none.Sh = none.Sd = none.qR = kNaN;
     return none;
+  }
+}
+
+// The equivalent conicity and rolling radius difference of the wheelset(s) the profiles make:
+// at the top of the step the first wheelset's (the only one unless each wheelset wears its own
+// profiles), then each wheelset's below wheelsets/K/.
+void add_conicity(GroupRecord& g, const CollectiveEvaluator& evaluator,
+                  const std::vector<profiles::Profile>& wheels) {
+  const bool per_wheelset = wheels.size() > 2;
+  const std::size_t wheelsets = per_wheelset ? wheels.size() / 2 : 1;
+  for (std::size_t k = 0; k < wheelsets; ++k) {
+    const profiles::Profile& left = per_wheelset ? wheels[2 * k] : wheels.front();
+    const profiles::Profile& right = per_wheelset ? wheels[2 * k + 1] : wheels.back();
+    const contactgeom::RollingRadiusDifference dr = contactgeom::rolling_radius_difference(
+        evaluator.pair(left), evaluator.pair(right), kDeltaRRange, kDeltaRSamples);
+    const double conicity = contactgeom::equivalent_conicity(dr, kConicityAmplitude);
+    const std::string prefixes[2] = {"", "wheelsets/" + std::to_string(k + 1) + "/"};
+    for (const std::string& prefix : prefixes) {
+      if (!prefix.empty() && !per_wheelset) continue;
+      if (prefix.empty() && k > 0) continue;
+      g.arrays.push_back(scalar(prefix + "equivalent_conicity", conicity, "1",
+                                "tan(gamma_e) at 3 mm amplitude (EN 15302, Annex C)"));
+      g.arrays.push_back(
+          vector(prefix + "delta_r/dy", dr.dy, "m", "wheelset shift, + to the left"));
+      g.arrays.push_back(vector(prefix + "delta_r/value", dr.delta_r, "m", "r_left - r_right"));
+    }
   }
 }
 
@@ -285,15 +312,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
           vector(n + "/wear_step/depth", increments.back().depth, "m",
                  "wear depth of the step (smoothed wear rate times the step distance)"));
     }
-    const contactgeom::WheelRailPair left = evaluator.pair(wheels.front());
-    const contactgeom::WheelRailPair right = evaluator.pair(wheels.back());
-    const contactgeom::RollingRadiusDifference dr =
-        contactgeom::rolling_radius_difference(left, right, kDeltaRRange, kDeltaRSamples);
-    g.arrays.push_back(scalar("equivalent_conicity",
-                              contactgeom::equivalent_conicity(dr, kConicityAmplitude), "1",
-                              "tan(gamma_e) at 3 mm amplitude (EN 15302, Annex C)"));
-    g.arrays.push_back(vector("delta_r/dy", dr.dy, "m", "wheelset shift, + to the left"));
-    g.arrays.push_back(vector("delta_r/value", dr.delta_r, "m", "r_left - r_right"));
+    add_conicity(g, evaluator, wheels);
     if (scene.vehicle_run) {
       const double depth_after = carry.depth_since_solve + peak * step_distance;
       g.arrays.push_back(scalar("vehicle/solved", vehicle_solved ? 1.0 : 0.0, "1",
@@ -461,8 +480,7 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   if (scene.vehicle_run) {
     VehicleCarry& carry = start.vehicle;
     carry.solved = true;
-    RoutePlan plan = route_plan(scene.vehicle_run->route, scene.vehicle_run->time_domain,
-                                scene.vehicle_run->vehicle);
+    RoutePlan plan = route_plan(*scene.vehicle_run);
     carry.last.cases = std::move(plan.cases);
     carry.last.pieces = std::move(plan.pieces);
     carry.last.piece_runs = detail::read_vehicle_pieces(file, last, carry.last.pieces.size());

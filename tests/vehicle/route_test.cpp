@@ -390,5 +390,42 @@ cant_m = 0.08
   std::printf("compared %d values\n", compared + 2);
 }
 
+// Run backwards, a route is the same track seen from its other end: at distance s of the
+// reversed route the track at L - s of the original with the curvature's sign changed (a
+// right-hand curve is left-hand the other way) and the same cant; interpolation inside the
+// transitions runs from the other end, so agreement is to interpolation rounding. Twice
+// reversed, the route is the original.
+TEST(Route, ReversedRouteIsTheSameTrackFromTheOtherEnd) {
+  const Route forward = hand_route();
+  const Route back = reversed(forward);
+  EXPECT_TRUE(back.validate().empty());
+  const double length = forward.total_length();
+  EXPECT_NEAR(back.total_length(), length, kLengthTolerance_m);
+  int compared = 1;
+  // Off the boundaries (each belongs to the section that starts there, in either direction).
+  for (double s = 1.25; s < length; s += 2.5) {
+    const TrackPoint a = track_at(forward, length - s);
+    const TrackPoint b = track_at(back, s);
+    EXPECT_NEAR(b.curvature_1_m, -a.curvature_1_m, kInterpolation * 1e-3) << s;
+    EXPECT_NEAR(b.cant_m, a.cant_m, kInterpolation) << s;
+    EXPECT_EQ(b.speed_m_s, a.speed_m_s) << s;
+    EXPECT_EQ(b.section, forward.sections.size() - 1 - a.section) << s;
+    compared += 4;
+  }
+  const Route twice = reversed(back);
+  ASSERT_EQ(twice.sections.size(), forward.sections.size());
+  for (std::size_t i = 0; i < forward.sections.size(); ++i) {
+    EXPECT_EQ(twice.sections[i].radius_m, forward.sections[i].radius_m) << i;
+    EXPECT_EQ(twice.sections[i].cant_m, forward.sections[i].cant_m) << i;
+    EXPECT_EQ(twice.sections[i].kind, forward.sections[i].kind) << i;
+    compared += 3;
+  }
+  // A route that ends with a transition would start with one backwards.
+  Route open_end = forward;
+  open_end.sections.pop_back();
+  EXPECT_THROW(reversed(open_end), InputError);
+  std::printf("compared %d values\n", compared + 1);
+}
+
 }  // namespace
 }  // namespace wheelwear::vehicle

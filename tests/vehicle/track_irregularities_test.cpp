@@ -441,5 +441,30 @@ TEST(TrackIrregularityGenerator, RejectsBadArguments) {
   // 12 comparisons.
 }
 
+// A record seen running backwards: at distance s the original's values at L - s with both signs
+// changed (the physical left rail is on the right in travel); twice reversed, the original (the
+// distances to the rounding of L - (L - s)).
+TEST(TrackIrregularityRecord, ReversedRecordIsTheOriginalFromTheOtherEnd) {
+  IrregularitySpec spec;
+  spec.spectrum = ErriSpectrum::low();
+  const TrackIrregularities record = generate_irregularities(spec, 200.0, 0.25, 7);
+  const double length = 300.0;
+  const TrackIrregularities back = reversed(record, length);
+  ASSERT_EQ(back.distance.size(), record.distance.size());
+  int compared = 0;
+  for (double s = 110.0; s < 290.0; s += 3.7) {
+    EXPECT_NEAR(back.alignment_at(s), -record.alignment_at(length - s), 1e-12) << s;
+    EXPECT_NEAR(back.cross_level_at(s), -record.cross_level_at(length - s), 1e-12) << s;
+    compared += 2;
+  }
+  const TrackIrregularities twice = reversed(back, length);
+  for (std::size_t i = 0; i < record.distance.size(); ++i) {
+    EXPECT_NEAR(twice.distance[i], record.distance[i], 1e-12);
+    EXPECT_EQ(twice.alignment[i], record.alignment[i]);
+    compared += 2;
+  }
+  std::printf("compared %d values\n", compared);
+}
+
 }  // namespace
 }  // namespace wheelwear::vehicle

@@ -300,6 +300,32 @@ Route mirrored(const Route& route) {
   return mirror;
 }
 
+Route reversed(const Route& route) {
+  route.validate();
+  if (!route.sections.empty() && route.sections.back().kind == SectionKind::transition) {
+    throw InputError("route " + in_quotes(route.name) + ": " +
+                     section_label(route.sections.back(), route.sections.size() - 1) +
+                     ": the route ends with a transition, which would start it run backwards; "
+                     "end it with a tangent or a curve");
+  }
+  Route back;
+  back.name = route.name;
+  for (std::size_t i = route.sections.size(); i-- > 0;) {
+    RouteSection s = route.sections[i];
+    if (s.kind == SectionKind::transition) {
+      // Backwards a transition ends where it started: at the section before it (validate
+      // ensures there is one).
+      const RouteSection& before = route.sections[i - 1];
+      const bool tangent = before.kind == SectionKind::tangent;
+      s.radius_m = tangent ? 0.0 : before.radius_m;
+      s.cant_m = tangent ? 0.0 : before.cant_m;
+    }
+    if (s.radius_m != 0.0) s.radius_m = -s.radius_m;
+    back.sections.push_back(std::move(s));
+  }
+  return back;
+}
+
 std::vector<RoutePiece> route_pieces(const Route& route, double max_piece_length_m) {
   route.validate();
   if (!(std::isfinite(max_piece_length_m) && max_piece_length_m > 0.0)) {

@@ -305,6 +305,17 @@ double TrackIrregularities::cross_level_at(double s) const {
   return interpolate(*this, cross_level, s);
 }
 
+TrackIrregularities reversed(const TrackIrregularities& record, double route_length) {
+  TrackIrregularities back;
+  back.source = record.source + ", run backwards";
+  for (std::size_t i = record.distance.size(); i-- > 0;) {
+    back.distance.push_back(route_length - record.distance[i]);
+    back.alignment.push_back(-record.alignment[i]);
+    back.cross_level.push_back(-record.cross_level[i]);
+  }
+  return back;
+}
+
 // --- generator -------------------------------------------------------------------------------
 
 std::uint64_t SplitMix64::next() {

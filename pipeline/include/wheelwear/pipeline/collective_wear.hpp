@@ -3,6 +3,7 @@
 /// per-state kernel (state_kernel.hpp), then an ordered reduction to a wear rate across each
 /// worn profile.
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -38,7 +39,8 @@ struct DroppedStates {
 
 /// The result of one evaluation.
 struct CollectiveWear {
-  /// Wear rate of each worn profile (one when the wheels share a profile, else left, right):
+  /// Wear rate of each worn profile (ProfileLayout: one when the wheels share a profile, else
+  /// left, right, or per wheelset left, right):
   /// the distance-weighted mean over the collective of the depth per metre running [m/m], on a
   /// kWearBin grid of the profile's arc length.
   std::vector<wear::WearDistribution> rate;
@@ -55,15 +57,42 @@ struct CollectiveWear {
   std::size_t hertz_dropped = 0;
 };
 
+/// Which wheel profiles a run wears, and so which of them each state's wheels wear.
+enum class ProfileLayout {
+  shared,      ///< one profile, worn by both wheels of every state ("wheel")
+  left_right,  ///< the left and the right wheel's ("wheel_left", "wheel_right")
+  /// Each physical wheel of the vehicle's four wheelsets its own
+  /// ("wheelsets/K/wheel_left|right", K = 1..4 in the forward order of travel): a vehicle run
+  /// with wheels = "separate".
+  per_wheelset,
+};
+
+/// The layout of `scene`'s run.
+ProfileLayout profile_layout(const Scene& scene);
+/// The number of profiles of `layout`: 1, 2 or 8.
+std::size_t profile_count(ProfileLayout layout);
+/// The profiles' names in the results file, in the order of their indices.
+std::vector<std::string> profile_names(ProfileLayout layout);
+/// The layout of `count` profiles (profile_count's inverse); InputError for another count.
+ProfileLayout layout_of(std::size_t count);
+
+/// The indices of the profiles the left and the right wheel (in travel) of `state` wear: a
+/// reversed state's left wheel is the physical right one. Throws InputError for a state without
+/// a wheelset (0..3) in the per_wheelset layout.
+std::array<std::size_t, 2> worn_profiles(const WheelsetStateSpec& state, ProfileLayout layout);
+
 /// The share of the running distance each state stands for (its weight over the total).
 std::vector<double> state_shares(const std::vector<WheelsetStateSpec>& states);
 /// state_shares of the scene's collective.
 std::vector<double> state_shares(const Scene& scene);
 
-/// The share of the running distance each wheel case stands for: state i's left (2i) and right
-/// (2i + 1) wheel, of the profile it wears (half a state each when the wheels share one).
+/// The weight of each wheel case, state i's left (2i) and right (2i + 1) wheel, in the rate of
+/// the profile it wears: its state's share over the summed shares of all wheel cases on that
+/// profile, so that every profile's rate is the mean over the distance its wheel runs (half a
+/// state each when both wheels share one profile; the state's share times four when each of
+/// the four wheelsets wears its own).
 std::vector<double> wheel_weights(const std::vector<WheelsetStateSpec>& states,
-                                  bool separate_wheels);
+                                  ProfileLayout layout);
 /// wheel_weights of the scene's collective.
 std::vector<double> wheel_weights(const Scene& scene);
 
@@ -86,7 +115,8 @@ class CollectiveEvaluator {
   /// what the reuse saves).
   explicit CollectiveEvaluator(const Scene& scene, bool reuse_geometry = true);
 
-  /// Evaluates the collective on `wheels` (one profile worn by both wheels, or left and right).
+  /// Evaluates the collective on `wheels` (profile_count(profile_layout(scene)) profiles, in
+  /// profile_names' order).
   /// Every worn profile must have the taping line at y = 0 (as profiles from
   /// profiles::wheel_profile do). TBB-parallel over contacts and states.
   CollectiveWear evaluate(const std::vector<const profiles::Profile*>& wheels) const;

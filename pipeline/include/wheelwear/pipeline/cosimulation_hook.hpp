@@ -60,10 +60,10 @@ struct HookProfiles {
 /// Writes the profiles into `directory` (created; an earlier call's collective there removed),
 /// runs the hook in its working directory and returns what it wrote. The program runs in a
 /// process group of its own; an interrupt of the run (SIGINT, SIGTERM, SIGHUP) kills that group
-/// and then ends the run as the signal would, so no program outlives its run. Throws InputError naming the
-/// command and the cause when the program cannot be started, exits with a non-zero status or a
-/// signal, runs past its timeout (it is killed), or writes no collective; the log's last lines are
-/// in the message.
+/// and then ends the run as the signal would, so no program outlives its run. Throws InputError
+/// naming the command and the cause when the program cannot be started, exits with a non-zero
+/// status or a signal, runs past its timeout (it is killed), or writes no collective; the log's
+/// last lines are in the message.
 HookCall call_hook(const CosimulationHook& hook, const std::filesystem::path& directory, int step,
                    double distance, const HookProfiles& profiles);
 

@@ -54,7 +54,14 @@ struct WheelsetStateSpec {
   /// absent they follow from the kinematics at every patch's O.
   std::optional<tangential::Creepages> creepages_left, creepages_right;
   double weight = 1.0;  ///< share of the running distance (normalised over the collective)
-  int line = 0;         ///< line in the scene or the collective file (for messages)
+  /// The physical wheelset whose wheels this state wears when a run wears each wheelset's own
+  /// profiles (ProfileLayout::per_wheelset): 0..3, numbered in the order of travel of the route's
+  /// forward direction; -1: not given (the run's shared or left/right profiles).
+  int wheelset = -1;
+  /// The vehicle runs the route backwards: the wheel on the left in travel is the physical
+  /// right wheel, whose profile it wears where the wheels have profiles of their own.
+  bool reversed = false;
+  int line = 0;  ///< line in the scene or the collective file (for messages)
 };
 
 /// How the tangential problem of each patch is solved.
@@ -75,6 +82,13 @@ enum class TangentialMethod {
 enum class WheelsetSelection {
   all,      ///< all four
   leading,  ///< the leading wheelset of each bogie (the first and third in order of travel)
+};
+
+/// Which way the vehicle runs its route.
+enum class RunningDirection {
+  forward,  ///< from the route's start to its end
+  reverse,  ///< from its end to its start (vehicle::reversed): the last wheelset leads
+  both,     ///< half the distance each way
 };
 
 /// Where the track irregularities of the time-domain pieces come from.
@@ -112,6 +126,7 @@ struct VehicleRun {
   vehicle::Route route;
   std::string route_file;  ///< resolved path; empty: the built-in route
   WheelsetSelection wheelsets = WheelsetSelection::all;
+  RunningDirection direction = RunningDirection::forward;
   /// The vehicle is solved again once the deepest wear since its last solve reaches this [m];
   /// 0: at every step.
   double resolve_depth = 0.05e-3;
@@ -124,7 +139,8 @@ struct VehicleRun {
   /// (vehicle::vehicle_critical_speed with the run's contact models).
   bool critical_speed = true;
 
-  /// The wheelsets (0..3, in order of travel) that wear the profile(s).
+  /// The wheelsets (0..3, in order of travel) that wear the profile(s); in the reversed
+  /// direction, travel position k is the physical wheelset 3 - k.
   std::vector<int> worn_wheelsets() const;
 };
 

@@ -35,6 +35,7 @@ struct RouteCase {
   /// Of the route's length [-]; 0 for a condition that only starts a time-domain piece, whose
   /// states are not worn.
   double share = 0.0;
+  bool reversed = false;  ///< met running the route backwards (RunningDirection)
 };
 
 /// A stretch of a tangent or transition the vehicle is simulated through.
@@ -48,6 +49,8 @@ struct DynamicPiece {
   std::size_t start_case = 0;  ///< the RouteCase whose solution starts the simulation
   std::uint64_t seed = 0;      ///< of its generated irregularities (seed_for_section)
   bool tangent = false;        ///< a tangent's stretch, else a whole transition
+  /// Run backwards: `section` and the distances are along vehicle::reversed(route).
+  bool reversed = false;
   /// The car body's centre runs from sim_start_m (every body at rest in the start case's
   /// state) over sim_length_m (samples after the first run_in of it), so that each wheelset
   /// runs through the whole stretch after at least the run-in; sim_start_m < 0 for a piece at
@@ -73,6 +76,22 @@ std::vector<RouteCase> route_cases(const vehicle::Route& route);
 /// sum to 1. Throws InputError for time-domain keys out of range.
 RoutePlan route_plan(const vehicle::Route& route, const TimeDomainKeys& time_domain,
                      const vehicle::Vehicle& vehicle);
+
+/// The plan of `run` in its direction(s): route_plan of its route (forward), of
+/// vehicle::reversed(route) (reverse; every case and piece marked reversed, labels prefixed
+/// "backwards, ", generated irregularities seeded seed_for_section(seed, sections + i) so that
+/// they differ from the forward ones), or both, each with half its shares.
+RoutePlan route_plan(const VehicleRun& run);
+
+/// The route, time-domain keys and vehicle of one direction: `run`'s, or reversed
+/// (vehicle::reversed, a measured irregularity record reversed along the route, the powered
+/// axles in the reversed order of travel).
+struct RunningWay {
+  vehicle::Route route;
+  TimeDomainKeys time_domain;
+  vehicle::Vehicle vehicle;
+};
+RunningWay running_way(const VehicleRun& run, bool reversed);
 
 /// A piece's irregularities: the measured record, none, or generated over the stretch the
 /// wheelsets run through with the piece's seed, faded in over the run-in from where the leading
@@ -139,7 +158,8 @@ struct VehicleCollective {
 };
 
 /// Solves `run`'s vehicle in every case of its route on `wheels` (one profile for both wheels
-/// of every wheelset, or left and right), then simulates it through every piece from its start
+/// of every wheelset, left and right, or left and right of each physical wheelset in the forward
+/// order of travel: ProfileLayout), then simulates it through every piece from its start
 /// case's solution, TBB-parallel over the cases and over the pieces, and finds its linear
 /// critical speed (searched from the previous solution's where there is one). With `previous` (the
 /// same route's solution on earlier profiles) each case starts where it was, and is not solved
@@ -156,11 +176,16 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
 std::shared_ptr<const contactgeom::WheelsetContactTable> contact_table(
     const vehicle::WheelsetModel& model, const vehicle::Vehicle& vehicle);
 
-/// The collective's state of wheelset `k` in a solved curve: its dy, yaw, spin and the
-/// vertical forces its contact was solved for (so that the kernel meets the same contact), the
-/// case's speed, radius and friction; weight `weight`.
+/// The collective's state of wheelset `k` (in order of travel) in a solved curve: its dy, yaw,
+/// spin and the vertical forces its contact was solved for (so that the kernel meets the same
+/// contact), the case's speed, radius and friction, its physical wheelset and direction
+/// (mark_wheelset); weight `weight`.
 WheelsetStateSpec wheelset_state(const RouteCase& route_case,
                                  const vehicle::VehicleCurving& curving, int k, double weight);
+
+/// Sets `state`'s physical wheelset and direction: travel position `k` (0..3) is the physical
+/// wheelset k, or 3 - k running backwards.
+void mark_wheelset(WheelsetStateSpec& state, int k, bool reversed);
 
 /// The collective's state of a wheelset in motion: its dy, yaw, rates and spin as `state`, the
 /// vertical forces its contact was solved for (so that the kernel meets the same contact), the

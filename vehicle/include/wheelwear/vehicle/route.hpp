@@ -123,6 +123,13 @@ Route default_route();
 /// right-hand curves become left-hand ones; everything else is kept.
 Route mirrored(const Route& route);
 
+/// `route` run backwards: its sections in reverse order, every radius of the opposite sign (a
+/// right-hand curve is a left-hand one to a vehicle running the other way; the outer rail keeps
+/// its cant), each transition running from its own end values to those of the section before
+/// it; lengths, speeds, frictions and traction kept. Throws InputError for an invalid route, or
+/// one that ends with a transition (which would start the reversed route).
+Route reversed(const Route& route);
+
 /// How a wear step treats a piece of a route.
 enum class PieceKind {
   constant_curve,  ///< a whole curve section: solved quasi-statically (steady curving)

@@ -99,6 +99,11 @@ struct TrackIrregularities {
   double cross_level_at(double s) const;
 };
 
+/// `record` seen by a vehicle running backwards along a route of `route_length` [m]: the
+/// distance s becomes route_length - s (samples in increasing order again), and alignment and
+/// cross-level change sign (the physical left rail is on the right in travel).
+TrackIrregularities reversed(const TrackIrregularities& record, double route_length);
+
 /// SplitMix64 (Steele, Lea & Flood 2014, "Fast splittable pseudorandom number generators";
 /// Vigna's reference splitmix64.c): a 64-bit state advanced by 0x9e3779b97f4a7c15 and mixed by
 /// two xorshift-multiplies. Integer arithmetic only, so the stream is the same everywhere.
