@@ -255,6 +255,9 @@ void run(const RunArgs& args) {
   options.overwrite = args.overwrite;
   options.allow_hook = args.allow_hook;
   if (!args.quiet) options.progress = show_progress;
+  options.warning = [](const std::string& text) {
+    std::fprintf(stderr, "wheelwear: warning: %s\n", text.c_str());
+  };
 
   if (!args.resume.empty()) {
     if (!args.scene.empty() || !args.output.empty()) {

@@ -410,6 +410,20 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   }
   s.wear_law_table = law_table;
   s.step_distance = std::min(s.step_distance, s.distance);  // one step need not exceed the run
+  const double steps = std::ceil(s.distance / s.step_distance);
+  if (steps > kStepsLimit) {
+    throw InputError("scene: [run] distance_m = " + core::format_number(s.distance) +
+                     " in steps of step_distance_m = " + core::format_number(s.step_distance) +
+                     " makes " + core::format_number(steps) +
+                     " steps, more than 100000; give a longer step_distance_m (each step is "
+                     "also kept below max_depth_step_m of wear)");
+  }
+  if (steps > kStepsWarning) {
+    s.warnings.push_back("scene: [run] distance_m / step_distance_m makes " +
+                         core::format_number(steps) +
+                         " steps (more than 10000): every step evaluates the whole collective "
+                         "and writes its group; a longer step_distance_m runs faster");
+  }
   if (s.hook) {
     if (s.hook->command.empty())
       throw InputError(

@@ -15,6 +15,7 @@
 #include "wheelwear/contactgeom/equivalent_conicity.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
+#include "wheelwear/pipeline/output_lock.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/pipeline/vehicle_run.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
@@ -409,12 +410,16 @@ fs::path hook_directory(const fs::path& output) {
 RunSummary run_scene(const Scene& scene, std::string_view scene_text,
                      const fs::path& scene_directory, bool builtin_scene, const fs::path& output,
                      const RunOptions& options) {
+  if (options.warning)
+    for (const std::string& w : scene.warnings) options.warning(w);
   // Everything that can fail on input fails before the file is created.
   detail::check_hook_allowed(scene, options);
   const CollectiveEvaluator evaluator(scene);
   LoopStart start{0, 0.0, new_profiles(scene)};
   start.hook_directory = hook_directory(output);
   for (const WornProfile& w : start.worn) evaluator.pair(w.build());
+  const OutputLock lock(output);
+  if (!lock.warning().empty() && options.warning) options.warning(lock.warning());
   ResultsFile file =
       ResultsFile::create(output, scene_text, options.overwrite, detail::collective_record(scene),
                           {{"creep_table_sha256", table_hash(scene)}});
@@ -423,6 +428,11 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
 }
 
 RunSummary resume_run(const fs::path& output, const RunOptions& options) {
+  // Before the file is opened: opening discards a stray copy of an unfinished step, which may
+  // be another run's step in progress.
+  if (!fs::exists(output)) throw InputError("results file " + output.string() + ": does not exist");
+  const OutputLock lock(output);
+  if (!lock.warning().empty() && options.warning) options.warning(lock.warning());
   ResultsFile file = ResultsFile::open(output);
   if (file.format_version() != kFormatVersion) {
     throw InputError("results file " + output.string() + ": layout version " +

@@ -303,5 +303,36 @@ TEST_F(SceneTest, BadSceneLeavesNoFileAndKeepsAnExistingOne) {
   EXPECT_EQ(content, "earlier results");
 }
 
+// Step counts: distance over step distance beyond 1e5 steps is refused, beyond 1e4 warned about
+// (the run passes the warning on), at 1e4 neither.
+TEST_F(SceneTest, AbsurdStepCountsAreRefusedAndLargeOnesWarned) {
+  const auto scene = [](const std::string& distance, const std::string& step) {
+    return "[run]\ndistance_m = " + distance + "\nstep_distance_m = " + step + "\n" +
+           std::string(kState);
+  };
+  try {
+    parse_scene(scene("5e3", "1e-3"), {});
+    ADD_FAILURE() << "five million steps accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than 100000"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse_scene(scene("100001", "1"), {}), InputError);
+  EXPECT_EQ(parse_scene(scene("100000", "1"), {}).warnings.size(), 1u);
+  EXPECT_EQ(parse_scene(scene("10001", "1"), {}).warnings.size(), 1u);
+  EXPECT_TRUE(parse_scene(scene("10000", "1"), {}).warnings.empty());
+  const fs::path file = write("many.toml", scene("20000", "1"));
+  const fs::path out = dir_ / "many.h5";
+  // The warning before the run; -q keeps the progress off, and the run is ended by its missing
+  // output folder so that it does not take its 20000 steps.
+  const auto result = testing::run_wheelwear("run " + file.string() + " -o " +
+                                             (dir_ / "none" / "many.h5").string() + " -q");
+  EXPECT_NE(result.err.find("warning: scene: [run] distance_m / step_distance_m makes 20000 steps"),
+            std::string::npos)
+      << result.err;
+  EXPECT_NE(result.err.find("does not exist"), std::string::npos) << result.err;
+  EXPECT_NE(result.exit_code, 0);
+  EXPECT_FALSE(fs::exists(out));
+}
+
 }  // namespace
 }  // namespace wheelwear::pipeline

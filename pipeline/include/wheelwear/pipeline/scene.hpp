@@ -157,6 +157,12 @@ struct LimitKeys {
   profiles::WheelLimits resolve(double diameter) const;
 };
 
+/// Steps a scene may ask for (`[run] distance_m` over `step_distance_m`): more are refused,
+/// more than kStepsWarning warned about. Each step re-evaluates the whole collective and writes
+/// a group of the results file.
+inline constexpr double kStepsLimit = 1e5;
+inline constexpr double kStepsWarning = 1e4;
+
 /// Everything a run needs. Defaults are those of the built-in scene.
 struct Scene {
   std::string title;
@@ -201,6 +207,9 @@ struct Scene {
   std::vector<WheelsetStateSpec> states;
   /// The vehicle and its route ([vehicle] and [route]), instead of a hand-written collective.
   std::optional<VehicleRun> vehicle_run;
+  /// What the scene's reader noticed that does not stop a run (e.g. many steps); a run passes
+  /// them to RunOptions::warning.
+  std::vector<std::string> warnings;
   /// An outside program that makes every step's collective ([hook]), instead of the above.
   std::optional<CosimulationHook> hook;
 };

@@ -32,6 +32,9 @@ struct RunOptions {
   /// refused without it.
   bool allow_hook = false;
   std::function<void(const RunProgress&)> progress;  ///< called after every step
+  /// Called with what the user should know but does not stop the run (e.g. an output on a file
+  /// system without locks, OutputLock::warning); unset: not reported.
+  std::function<void(const std::string&)> warning;
 };
 
 /// What a run did.
