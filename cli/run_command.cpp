@@ -14,6 +14,7 @@
 
 #include "commands.hpp"
 #include "json_writer.hpp"
+#include "stop_message.hpp"
 #include "thread_limit.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
@@ -264,10 +265,12 @@ void run(const RunArgs& args) {
       throw InputError("--resume " + args.resume +
                        ": the scene and the output come from that file; give neither SCENE nor -o");
     }
+    const StopMessage stop_message(args.resume);
     report(args, args.resume, pipeline::resume_run(args.resume, options));
     return;
   }
   if (args.output.empty()) throw InputError("-o: give the results file to write, e.g. -o run.h5");
+  const StopMessage stop_message(args.output);
   pipeline::RunSummary summary;
   if (args.scene.empty()) {
     summary = pipeline::run_scene(pipeline::default_scene(), pipeline::default_scene_text(), {},

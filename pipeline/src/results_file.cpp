@@ -19,6 +19,13 @@ namespace {
 constexpr std::size_t kCompressAbove = 4096;   // elements
 constexpr std::size_t kChunkElements = 65536;  // about 512 kB per chunk
 
+// A step's own file while the run goes on: "000012.h5".
+std::string step_file_name(int step) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06d.h5", step);
+  return name;
+}
+
 fs::path partial_path(const fs::path& path) {
   fs::path partial = path;
   partial += ".partial";
@@ -180,7 +187,8 @@ std::string ResultsFile::step_group(int step) {
 
 ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_text, bool overwrite,
                                 const GroupRecord& load_collective,
-                                const std::map<std::string, std::string>& root_attributes) {
+                                const std::map<std::string, std::string>& root_attributes,
+                                const GroupRecord& run_info) {
   if (fs::exists(path) && !overwrite) {
     throw InputError("output " + path.string() +
                      ": the file exists; choose another name or pass --overwrite to replace it");
@@ -196,20 +204,34 @@ ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_tex
       write_group(file, "/load_collective", load_collective);
     H5::Group steps = file.createGroup("/steps");
     write_int_attribute(steps, "completed_steps", 0);
+    if (!run_info.arrays.empty() || !run_info.texts.empty())
+      write_group(file, "/run_info", run_info);
     file.close();
   } catch (const H5::Exception& error) {
     fs::remove(partial);
     throw std::runtime_error("cannot create " + path.string() + ": " + error.getDetailMsg());
   }
   publish(partial, path);
+  // The step files of an earlier run under this name belong to the file just replaced.
+  fs::remove_all(steps_directory(path));
   return ResultsFile(path, std::string(scene_text), 0);
 }
 
 ResultsFile ResultsFile::open(const fs::path& path) {
   if (!fs::exists(path)) throw InputError("results file " + path.string() + ": does not exist");
-  // A stray copy from a run killed mid-step holds an unfinished step: it is discarded.
+  // A stray copy from a run killed mid-step holds an unfinished step: it is discarded, and so
+  // are step files written but not yet linked.
   fs::remove(partial_path(path));
-  return read(path);
+  ResultsFile file = read(path);
+  const fs::path directory = steps_directory(path);
+  if (fs::is_directory(directory)) {
+    for (int k = file.completed_steps();; ++k) {
+      const fs::path stray = directory / step_file_name(k);
+      fs::remove(partial_path(stray));
+      if (!fs::remove(stray)) break;
+    }
+  }
+  return file;
 }
 
 ResultsFile ResultsFile::read(const fs::path& path) {
@@ -230,14 +252,65 @@ ResultsFile ResultsFile::read(const fs::path& path) {
   }
 }
 
+fs::path ResultsFile::steps_directory(const fs::path& path) {
+  fs::path directory = path;
+  directory += ".steps";
+  return directory;
+}
+
 void ResultsFile::append_step(const GroupRecord& step) {
   const int index = completed_steps_;
+  const fs::path directory = steps_directory(path_);
+  const std::string name = step_file_name(index);
+  const fs::path target = directory / name;
+  const fs::path partial = partial_path(target);
+  try {
+    fs::create_directories(directory);
+    {
+      H5::H5File file(partial.string(), H5F_ACC_TRUNC);
+      write_group(file, "/step", step);
+      file.close();
+    }
+    publish(partial, target);
+  } catch (const H5::Exception& error) {
+    fs::remove(partial);
+    throw std::runtime_error("cannot write " + target.string() + ": " + error.getDetailMsg());
+  } catch (...) {
+    fs::remove(partial);
+    throw;
+  }
+  // The link's file name is relative: HDF5 looks for it beside FILE, wherever FILE is read from.
+  const std::string linked = (directory.filename() / name).string();
   change_atomically(path_, [&](H5::H5File& file) {
-    write_group(file, step_group(index), step);
-    H5::Group steps = file.openGroup("/steps");
-    write_int_attribute(steps, "completed_steps", index + 1);
+    const H5::Group steps = file.openGroup("/steps");
+    if (H5Lcreate_external(linked.c_str(), "/step", steps.getId(), step_group(index).c_str() + 7,
+                           H5P_DEFAULT, H5P_DEFAULT) < 0)
+      throw std::runtime_error("cannot link " + linked + " into " + path_.string());
+    H5::Group group = file.openGroup("/steps");
+    write_int_attribute(group, "completed_steps", index + 1);
   });
   completed_steps_ = index + 1;
+}
+
+void ResultsFile::consolidate() {
+  const fs::path directory = steps_directory(path_);
+  if (!fs::exists(directory)) return;
+  change_atomically(path_, [&](H5::H5File& file) {
+    const H5::Group steps = file.openGroup("/steps");
+    for (int k = 0; k < completed_steps_; ++k) {
+      const std::string name = step_group(k).substr(7);  // "000012"
+      H5L_info_t info;
+      if (H5Lget_info(steps.getId(), name.c_str(), &info, H5P_DEFAULT) < 0 ||
+          info.type != H5L_TYPE_EXTERNAL)
+        continue;
+      H5::H5File source((directory / step_file_name(k)).string(), H5F_ACC_RDONLY);
+      if (H5Ldelete(steps.getId(), name.c_str(), H5P_DEFAULT) < 0 ||
+          H5Ocopy(source.getId(), "/step", steps.getId(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT) <
+              0)
+        throw std::runtime_error("cannot copy step " + name + " into " + path_.string());
+    }
+  });
+  fs::remove_all(directory);
 }
 
 void ResultsFile::write_run_info(const GroupRecord& info) {

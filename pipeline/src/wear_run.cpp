@@ -383,6 +383,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   summary.elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
   file.write_run_info(detail::run_info(scene_directory, builtin, summary.elapsed,
                                        summary.evaluations, start.step == 0 ? -1 : start.step - 1));
+  // The run is over: its step files become part of the one results file.
+  file.consolidate();
   return summary;
 }
 
@@ -420,10 +422,12 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
   for (const WornProfile& w : start.worn) evaluator.pair(w.build());
   const OutputLock lock(output);
   if (!lock.warning().empty() && options.warning) options.warning(lock.warning());
+  // The run information goes in with the scene, so that a run killed before its first step
+  // can be resumed from the start.
   ResultsFile file =
       ResultsFile::create(output, scene_text, options.overwrite, detail::collective_record(scene),
-                          {{"creep_table_sha256", table_hash(scene)}});
-  file.write_run_info(detail::run_info(scene_directory, builtin_scene, 0.0, 0, -1));
+                          {{"creep_table_sha256", table_hash(scene)}},
+                          detail::run_info(scene_directory, builtin_scene, 0.0, 0, -1));
   return loop(scene, evaluator, file, std::move(start), scene_directory, builtin_scene, options);
 }
 
@@ -448,9 +452,10 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   const bool builtin = file.read_array("/run_info/builtin_scene").at(0) != 0.0;
   const Scene scene = builtin ? default_scene() : parse_scene(file.scene_text(), *directory);
   const int last = file.completed_steps() - 1;
-  if (last < 0) throw InputError("results file " + output.string() + ": no step to resume from");
-  const double step_distance = file.read_step_array(last, "step_distance").at(0);
+  const double step_distance = last < 0 ? -1.0 : file.read_step_array(last, "step_distance").at(0);
   if (step_distance == 0.0) {
+    // A run killed while it consolidated its step files: finish that, then say it is complete.
+    file.consolidate();
     const bool at_limit = file.has(ResultsFile::step_group(last) + "/limits/stopped") &&
                           file.read_step_array(last, "limits/stopped").at(0) != 0.0;
     throw InputError("results file " + output.string() +
@@ -470,6 +475,12 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   }
   detail::check_hook_allowed(scene, options);
   const CollectiveEvaluator evaluator(scene);
+  if (last < 0) {
+    // Killed before its first step was published: the run starts over from its stored scene.
+    LoopStart start{0, 0.0, new_profiles(scene)};
+    start.hook_directory = hook_directory(output);
+    return loop(scene, evaluator, file, std::move(start), *directory, builtin, options);
+  }
   LoopStart start{last + 1, file.read_step_array(last, "distance").at(0) + step_distance,
                   new_profiles(scene)};
   start.hook_directory = hook_directory(output);

@@ -87,5 +87,60 @@ TEST_F(ResultsFileTest, RejectsMissingAndForeignFiles) {
   EXPECT_THROW(ResultsFile::open(file("junk.h5")), InputError);
 }
 
+// While a run goes on each step is a file of its own, linked into FILE: FILE stays small (the
+// copy a step commits does not grow with the steps), the steps read through the links also
+// from another working directory, and consolidation makes one file that reads the same.
+TEST_F(ResultsFileTest, StepsAreFilesOfTheirOwnUntilConsolidated) {
+  const fs::path path = file("run.h5");
+  ResultsFile out = ResultsFile::create(path, "", false);
+  GroupRecord big = step(0.0);
+  big.arrays.push_back({"big", std::vector<double>(20000, 1.5), {20000}, "1", "bulk"});
+  out.append_step(big);
+  const auto first = fs::file_size(path);
+  for (int k = 1; k < 20; ++k) {
+    GroupRecord g = step(1000.0 * k);
+    g.arrays.push_back({"big", std::vector<double>(20000, 0.5 * k), {20000}, "1", "bulk"});
+    out.append_step(g);
+  }
+  const fs::path steps = ResultsFile::steps_directory(path);
+  EXPECT_TRUE(fs::exists(steps / "000019.h5"));
+  // 19 more links and no data: FILE grows by far less than one step's file.
+  EXPECT_LT(fs::file_size(path) - first, fs::file_size(steps / "000019.h5"));
+  const fs::path here = fs::current_path();
+  fs::current_path("/");
+  const ResultsFile running = ResultsFile::read(path);
+  EXPECT_EQ(running.read_step_array(7, "distance"), std::vector<double>{7000.0});
+  EXPECT_EQ(running.read_step_array(19, "big").at(19999), 9.5);
+  fs::current_path(here);
+
+  out.consolidate();
+  EXPECT_FALSE(fs::exists(steps));
+  const ResultsFile done = ResultsFile::read(path);
+  EXPECT_EQ(done.completed_steps(), 20);
+  EXPECT_EQ(done.read_step_array(19, "distance"), std::vector<double>{19000.0});
+  EXPECT_EQ(done.read_step_array(3, "big").at(0), 1.5);
+  EXPECT_EQ(done.read_text("/steps/000004/law"), std::optional<std::string>("usfd"));
+  EXPECT_EQ(done.step_array_names(5), running.step_array_names(5));
+}
+
+// A step file written but not linked (a run killed between the two) is not a step: reopening
+// the file removes it, and the resumed run writes that step afresh.
+TEST_F(ResultsFileTest, AStepWrittenButNotLinkedIsDiscarded) {
+  const fs::path path = file("run.h5");
+  ResultsFile out = ResultsFile::create(path, "", false);
+  out.append_step(step(1.0));
+  const fs::path steps = ResultsFile::steps_directory(path);
+  fs::copy_file(steps / "000000.h5", steps / "000001.h5");
+  {
+    std::ofstream half(steps / "000002.h5.partial", std::ios::binary);
+    half << "\x89HDF";
+  }
+  ResultsFile again = ResultsFile::open(path);
+  EXPECT_EQ(again.completed_steps(), 1);
+  EXPECT_FALSE(fs::exists(steps / "000001.h5"));
+  again.append_step(step(2.0));
+  EXPECT_EQ(ResultsFile::read(path).read_step_array(1, "distance"), std::vector<double>{2.0});
+}
+
 }  // namespace
 }  // namespace wheelwear::pipeline

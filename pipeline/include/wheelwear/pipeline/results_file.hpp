@@ -5,6 +5,13 @@
 /// copy (`FILE.partial`), is flushed to disk, and replaces FILE by rename(2), which is atomic:
 /// a killed run leaves FILE as it was after the last completed step.
 ///
+/// While a run goes on, each step is a file of its own, `FILE.steps/NNNNNN.h5` (its group
+/// `/step`), written and renamed into place; FILE links it as `/steps/NNNNNN` by an HDF5
+/// external link, and that change of the small FILE (copied and renamed as above) commits the
+/// step. So a step costs its own size, not the whole file's, and a reader (h5py too) sees
+/// `/steps/NNNNNN/...` through the links. When the run ends, consolidate() copies every step into
+/// FILE (one more atomic replacement) and removes FILE.steps: a finished run is one file.
+///
 /// Layout (every dataset carries string attributes `units` and `description`; docs/results.md
 /// is the full description):
 ///   /                 attribute `format_version` (kFormatVersion) and the root attributes
@@ -59,19 +66,23 @@ struct GroupRecord {
 class ResultsFile {
  public:
   /// Creates FILE with the scene text, the group /load_collective (the states as the run
-  /// resolved them) and no steps. Throws InputError if FILE exists and `overwrite` is false;
-  /// the existing file is then left untouched.
+  /// resolved them), the first /run_info (if given) and no steps. Throws InputError if FILE
+  /// exists and `overwrite` is false; the existing file is then left untouched.
   static ResultsFile create(const std::filesystem::path& path, std::string_view scene_text,
                             bool overwrite, const GroupRecord& load_collective = {},
-                            const std::map<std::string, std::string>& root_attributes = {});
+                            const std::map<std::string, std::string>& root_attributes = {},
+                            const GroupRecord& run_info = {});
   /// Opens an existing results file to continue it (resume): a stray FILE.partial of a killed
   /// run is discarded. Throws InputError when the file is missing or is not a results file.
   static ResultsFile open(const std::filesystem::path& path);
   /// Opens a results file to read it, touching nothing (safe while a run is writing it).
   static ResultsFile read(const std::filesystem::path& path);
 
-  /// Publishes step `completed_steps()` atomically.
+  /// Publishes step `completed_steps()` atomically: writes its own file, then links it.
   void append_step(const GroupRecord& step);
+  /// Copies every linked step into FILE and removes FILE.steps (a finished run); the file
+  /// reads the same before and after. Nothing to do for a file without linked steps.
+  void consolidate();
   /// Publishes the /run_info group atomically (replacing an earlier one).
   void write_run_info(const GroupRecord& info);
 
@@ -99,6 +110,8 @@ class ResultsFile {
 
   /// The group name of a step: "/steps/000012".
   static std::string step_group(int step);
+  /// The folder of a running file's step files: FILE + ".steps".
+  static std::filesystem::path steps_directory(const std::filesystem::path& path);
 
  private:
   ResultsFile(std::filesystem::path path, std::string scene_text, int completed_steps);

@@ -1,0 +1,21 @@
+#pragma once
+// What a run says when SIGINT, SIGTERM or SIGHUP ends it: that it stopped, where its results
+// are and how to continue. The run then ends as the signal would (its exit status says so).
+
+#include <string>
+
+namespace wheelwear::cli {
+
+/// Until the returned guard is destroyed, SIGINT, SIGTERM and SIGHUP print "wheelwear: stopped
+/// by SIG...; the steps finished so far are in OUTPUT; continue with: wheelwear run --resume
+/// OUTPUT" and then end the process with that signal's default action. Signals the process
+/// ignores (a shell's background job ignores SIGINT) stay ignored.
+class StopMessage {
+ public:
+  explicit StopMessage(const std::string& output);
+  ~StopMessage();
+  StopMessage(const StopMessage&) = delete;
+  StopMessage& operator=(const StopMessage&) = delete;
+};
+
+}  // namespace wheelwear::cli
