@@ -282,12 +282,12 @@ void ResultsFile::append_step(const GroupRecord& step) {
   // The link's file name is relative: HDF5 looks for it beside FILE, wherever FILE is read from.
   const std::string linked = (directory.filename() / name).string();
   change_atomically(path_, [&](H5::H5File& file) {
-    const H5::Group steps = file.openGroup("/steps");
-    if (H5Lcreate_external(linked.c_str(), "/step", steps.getId(), step_group(index).c_str() + 7,
-                           H5P_DEFAULT, H5P_DEFAULT) < 0)
+    H5::Group steps = file.openGroup("/steps");
+    const std::string step_name = step_group(index).substr(7);  // "000012"
+    if (H5Lcreate_external(linked.c_str(), "/step", steps.getId(), step_name.c_str(), H5P_DEFAULT,
+                           H5P_DEFAULT) < 0)
       throw std::runtime_error("cannot link " + linked + " into " + path_.string());
-    H5::Group group = file.openGroup("/steps");
-    write_int_attribute(group, "completed_steps", index + 1);
+    write_int_attribute(steps, "completed_steps", index + 1);
   });
   completed_steps_ = index + 1;
 }

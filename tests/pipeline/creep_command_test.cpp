@@ -25,9 +25,10 @@ TEST(CreepCommand, PrintsTheLibrarysForcesAsJson) {
   tangential::FastsimOptions options;
   options.nx = 30;
   options.ny = 20;
-  const tangential::CreepForces f = tangential::fastsim(tangential::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.6},
-                                            {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options)
-                                  .forces;
+  const tangential::CreepForces f =
+      tangential::fastsim(tangential::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0},
+                          {37830, 0.35}, {80e9, 0.25}, options)
+          .forces;
   EXPECT_EQ(json_number(result.out, "Fx"), f.Fx);
   EXPECT_EQ(json_number(result.out, "Fy"), f.Fy);
   EXPECT_NEAR(*json_number(result.out, "Fx_muN"), f.Fx / (0.35 * 37830), 1e-15);
@@ -54,9 +55,9 @@ TEST(CreepCommand, TargetErrorChoosesAndReportsTheGrid) {
   const auto result =
       run_wheelwear(kCase + " --method fastsim-sdec --scheme second-order --target-error 1e-3");
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const tangential::GridChoice choice =
-      tangential::choose_grid(tangential::FastsimMethod::sdec, tangential::FastsimScheme::second_order,
-                        tangential::TractionBound::parabolic, 1e-3);
+  const tangential::GridChoice choice = tangential::choose_grid(
+      tangential::FastsimMethod::sdec, tangential::FastsimScheme::second_order,
+      tangential::TractionBound::parabolic, 1e-3);
   EXPECT_EQ(json_number(result.out, "nx"), choice.nx);
   EXPECT_EQ(json_number(result.out, "ny"), choice.ny);
   EXPECT_EQ(json_number(result.out, "target_error"), 1e-3);
@@ -66,9 +67,10 @@ TEST(CreepCommand, TargetErrorChoosesAndReportsTheGrid) {
   options.nx = choice.nx;
   options.ny = choice.ny;
   options.scheme = tangential::FastsimScheme::second_order;
-  const tangential::CreepForces f = tangential::fastsim(tangential::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.6},
-                                            {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options)
-                                  .forces;
+  const tangential::CreepForces f =
+      tangential::fastsim(tangential::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0},
+                          {37830, 0.35}, {80e9, 0.25}, options)
+          .forces;
   EXPECT_EQ(json_number(result.out, "Fx"), f.Fx);
   EXPECT_EQ(json_number(result.out, "Fy"), f.Fy);
   // Without --target-error the output keeps its keys and adds none.
@@ -115,8 +117,8 @@ TEST(CreepCommand, RejectsBadInputWithAMessage) {
 TEST(CreepCommand, TableAndBestReportTheirSource) {
   const auto table = run_wheelwear(kCase + " --method table");
   ASSERT_EQ(table.exit_code, 0) << table.err;
-  const tangential::CreepForces f =
-      tangential::creep_table_forces({4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25});
+  const tangential::CreepForces f = tangential::creep_table_forces(
+      {4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25});
   EXPECT_EQ(json_number(table.out, "Fx"), f.Fx);
   EXPECT_EQ(json_number(table.out, "Fy"), f.Fy);
   EXPECT_NE(table.out.find("\"source\": \"table\""), std::string::npos) << table.out;
@@ -135,9 +137,10 @@ TEST(CreepCommand, TableAndBestReportTheirSource) {
   tangential::FastsimOptions options;
   options.nx = 30;
   options.ny = 20;
-  const tangential::CreepForces g = tangential::fastsim(tangential::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.9},
-                                            {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options)
-                                  .forces;
+  const tangential::CreepForces g =
+      tangential::fastsim(tangential::FastsimMethod::sdec, {4.25e-3, 4.25e-3, 0.9}, {0, 0, 1.0},
+                          {37830, 0.35}, {80e9, 0.25}, options)
+          .forces;
   EXPECT_EQ(json_number(outside.out, "Fx"), g.Fx);
   EXPECT_NE(outside.out.find("\"source\": \"fastsim-sdec\""), std::string::npos) << outside.out;
   EXPECT_NE(outside.out.find("psi = 0.9"), std::string::npos) << outside.out;

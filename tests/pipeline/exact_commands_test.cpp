@@ -32,8 +32,8 @@ TEST(CreepExact, PrintsTheLibrarysExactSolution) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   tangential::SdecGridOptions options;
   options.nx = options.ny = 32;
-  const tangential::ExactSolution s =
-      tangential::exact_sdec({4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0}, {37830, 0.35}, {80e9, 0.25}, options);
+  const tangential::ExactSolution s = tangential::exact_sdec({4.25e-3, 4.25e-3, 0.6}, {0, 0, 1.0},
+                                                             {37830, 0.35}, {80e9, 0.25}, options);
   EXPECT_EQ(json_number(r.out, "Fx"), s.forces.Fx);
   EXPECT_EQ(json_number(r.out, "Fy"), s.forces.Fy);
   EXPECT_EQ(json_number(r.out, "Mz"), *s.forces.Mz);

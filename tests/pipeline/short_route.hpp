@@ -2,6 +2,10 @@
 // A short route for vehicle-run tests: one lubricated curve whose quasi-static solve converges
 // on S1002/60E1, a transition and a tangent (three running conditions).
 
+#include "wheelwear/pipeline/scene.hpp"
+#include "wheelwear/vehicle/route.hpp"
+#include "wheelwear/vehicle/vehicle_file.hpp"
+
 namespace wheelwear::pipeline {
 
 // One km of R 3000 m (whose quasi-static solve converges on S1002/60E1) with a lubricated gauge
@@ -25,5 +29,16 @@ cant_m = 0
 kind = "tangent"
 length_m = 940
 )";
+
+// The built-in coach on the short route, every section solved quasi-statically, without the
+// critical speed's search.
+inline VehicleRun short_route_run() {
+  VehicleRun run;
+  run.vehicle = vehicle::default_vehicle();
+  run.route = vehicle::parse_route(kShortRoute, "test route");
+  run.time_domain.enabled = false;
+  run.critical_speed = false;
+  return run;
+}
 
 }  // namespace wheelwear::pipeline

@@ -66,13 +66,9 @@ void expect_kernel_meets_vehicle(bool contact_table, double slack, double brakin
       "[load_collective]\n[[load_collective.state]]\naxle_load_N = 1e5\n"
       "speed_m_s = 40\n",
       {});
-  VehicleRun run;
-  run.vehicle = vehicle::default_vehicle();
-  run.route = vehicle::parse_route(kShortRoute, "test route");
+  VehicleRun run = short_route_run();
   run.route.sections.front().traction_N = braking;
   run.contact_table = contact_table;
-  run.time_domain.enabled = false;
-  run.critical_speed = false;
   const StateKernel kernel(scene);
   const profiles::Profile wheel = profiles::wheel_profile("S1002", 0.46, {});
   const VehicleCollective v = solve_vehicle_collective(run, kernel, {&wheel});

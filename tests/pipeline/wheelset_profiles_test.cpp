@@ -31,11 +31,7 @@ Scene route_scene(RunningDirection direction, bool separate) {
       "[contact]\ngrid_nx = 12\ngrid_ny = 12\n[load_collective]\n[[load_collective.state]]\n"
       "axle_load_N = 1e5\nspeed_m_s = 40\n",
       {});
-  VehicleRun run;
-  run.vehicle = vehicle::default_vehicle();
-  run.route = vehicle::parse_route(kShortRoute, "test route");
-  run.time_domain.enabled = false;
-  run.critical_speed = false;
+  VehicleRun run = short_route_run();
   run.direction = direction;
   scene.vehicle_run = run;
   scene.separate_wheels = separate;
@@ -130,6 +126,55 @@ TEST(WheelsetProfiles, BothDirectionsWearTheMeanOfEach) {
   }
   EXPECT_LT(largest, 1e-12);
   std::printf("8 profiles compared, largest difference %.2e of the peak\n", largest);
+}
+
+// Both ways with the time domain: each tangent and transition is simulated in either direction,
+// the backward pieces along the reversed route (its transition leads into a left-hand curve),
+// from backward start cases, with irregularities of their own; every state says which physical
+// wheelset it is and which way it ran.
+TEST(WheelsetProfiles, BackwardPiecesRunTheReversedRoute) {
+  const Scene scene = route_scene(RunningDirection::both, true);
+  VehicleRun run = *scene.vehicle_run;
+  run.time_domain.enabled = true;
+  run.time_domain.tangent_length = 20.0;
+  run.time_domain.run_in = 10.0;
+  run.time_domain.sample_distance = 2.0;
+  const RoutePlan plan = route_plan(run);
+  ASSERT_EQ(plan.pieces.size(), 4u);  // the transition and the tangent, each way
+  double total = 0.0;
+  for (const RouteCase& c : plan.cases) total += c.share;
+  for (const DynamicPiece& p : plan.pieces) {
+    total += p.share;
+    EXPECT_EQ(plan.cases[p.start_case].reversed, p.reversed);
+    EXPECT_EQ(p.label.rfind("backwards, ", 0) == 0, p.reversed) << p.label;
+  }
+  EXPECT_NEAR(total, 1.0, 1e-12);
+  EXPECT_NE(plan.pieces[2].seed, plan.pieces[0].seed);
+  EXPECT_NE(plan.pieces[3].seed, plan.pieces[1].seed);
+
+  const StateKernel kernel(scene);
+  const profiles::Profile wheel = profiles::wheel_profile("S1002", 0.46, {});
+  const std::vector<const profiles::Profile*> wheels(8, &wheel);
+  const VehicleCollective v = solve_vehicle_collective(run, kernel, wheels);
+  EXPECT_EQ(v.incomplete(), 0);
+  int forward = 0, backward = 0;
+  std::array<int, 4> per_wheelset{};
+  for (const WheelsetStateSpec& s : v.states) {
+    ASSERT_GE(s.wheelset, 0);
+    ++per_wheelset[static_cast<std::size_t>(s.wheelset)];
+    // The right-hand R 3000 m curve, met backwards, is left-hand.
+    if (s.reversed) {
+      ++backward;
+      EXPECT_LE(s.curve_radius, 0.0) << s.label;
+    } else {
+      ++forward;
+      EXPECT_GE(s.curve_radius, 0.0) << s.label;
+    }
+  }
+  EXPECT_GT(forward, 40);
+  EXPECT_GT(backward, 40);
+  for (int n : per_wheelset) EXPECT_GT(n, 20);
+  std::printf("%d forward and %d backward states\n", forward, backward);
 }
 
 // A state without a wheelset cannot wear per-wheelset profiles; one with a wheelset out of range
