@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 
+#include "wheelwear/core/csv.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/plausibility.hpp"
 #include "wheelwear/core/text.hpp"
@@ -132,7 +133,10 @@ std::string state_field_names() {
 
 void set_state_field(WheelsetStateSpec& state, const StateField& field, const std::string& where) {
   if (is_label(field.name)) {
+    // A label is one line of free text (the results file lists them one per line).
     state.label = field.text;
+    for (char& c : state.label)
+      if (c == '\n' || c == '\r') c = ' ';
     return;
   }
   for (const Column& c : columns()) {
@@ -179,45 +183,36 @@ void finish_state(WheelsetStateSpec& state, const std::string& where) {
 
 std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
                                                    const std::string& file_name) {
-  std::vector<std::string> header;
+  const std::vector<core::CsvRecord> records = core::read_csv(text, file_name);
+  if (records.empty()) throw InputError(file_name + ": empty load collective (no header line)");
+  const std::vector<std::string>& header = records.front().fields;
+  const std::string head = file_name + " line " + std::to_string(records.front().line);
+  for (std::size_t k = 0; k < header.size(); ++k) {
+    // Check the names before any row, so a misspelt column is reported as such.
+    if (!is_state_field(header[k])) {
+      throw InputError(head + ": unknown column '" + header[k] + "'; a state has " +
+                       state_field_names());
+    }
+    for (std::size_t j = 0; j < k; ++j)
+      if (header[j] == header[k])
+        throw InputError(head + ": column '" + header[k] + "' appears twice (columns " +
+                         std::to_string(j + 1) + " and " + std::to_string(k + 1) +
+                         "); give each once");
+  }
   std::vector<WheelsetStateSpec> states;
-  std::istringstream in{std::string(text)};
-  std::string raw;
-  int line = 0;
-  while (std::getline(in, raw)) {
-    ++line;
-    const std::string_view row = core::trim(raw);
-    if (row.empty() || row.front() == '#') continue;
-    std::vector<std::string> cells;
-    std::size_t start = 0;
-    while (true) {
-      const std::size_t comma = row.find(',', start);
-      cells.emplace_back(
-          core::trim(row.substr(start, comma == std::string_view::npos ? comma : comma - start)));
-      if (comma == std::string_view::npos) break;
-      start = comma + 1;
-    }
-    const std::string where = file_name + " line " + std::to_string(line);
-    if (header.empty()) {
-      header = cells;
-      for (const std::string& name : header) {
-        // Check the names before any row, so a misspelt column is reported as such.
-        if (!is_state_field(name)) {
-          throw InputError(where + ": unknown column '" + name + "'; a state has " +
-                           state_field_names());
-        }
-      }
-      continue;
-    }
+  for (std::size_t r = 1; r < records.size(); ++r) {
+    const std::vector<std::string>& cells = records[r].fields;
+    const std::string where = file_name + " line " + std::to_string(records[r].line);
     if (cells.size() != header.size()) {
       throw InputError(where + ": " + std::to_string(cells.size()) + " cells but the header has " +
-                       std::to_string(header.size()) + " columns");
+                       std::to_string(header.size()) +
+                       " columns (a field with a comma goes in double quotes)");
     }
     WheelsetStateSpec state;
-    state.line = line;
+    state.line = records[r].line;
     for (std::size_t k = 0; k < cells.size(); ++k) {
       if (is_label(header[k])) {
-        state.label = cells[k];
+        set_state_field(state, {header[k], 0.0, cells[k]}, where);
         continue;
       }
       if (cells[k].empty()) continue;  // an optional column left blank
@@ -231,7 +226,6 @@ std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
     finish_state(state, where);
     states.push_back(std::move(state));
   }
-  if (header.empty()) throw InputError(file_name + ": empty load collective (no header line)");
   return states;
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "load_collective.hpp"
+#include "wheelwear/core/csv.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
 
@@ -465,20 +466,6 @@ std::vector<vehicle::VehicleCurving> read_vehicle_cases(const ResultsFile& file,
 
 namespace wheelwear::pipeline {
 
-namespace {
-
-// A label as one CSV cell that reads back as written: the reader splits at commas, trims
-// spaces and skips rows that start with '#'.
-std::string csv_label(std::string label) {
-  for (char& c : label)
-    if (c == ',' || c == '\n' || c == '\r') c = ';';
-  label = std::string(core::trim(label));
-  if (!label.empty() && label.front() == '#') label.insert(0, "no. ");
-  return label;
-}
-
-}  // namespace
-
 std::string collective_csv(const std::vector<WheelsetStateSpec>& states) {
   using detail::collective_columns;
   std::string out = "label";
@@ -486,8 +473,7 @@ std::string collective_csv(const std::vector<WheelsetStateSpec>& states) {
   out += '\n';
   char cell[40];
   for (const WheelsetStateSpec& state : states) {
-    std::string label = csv_label(state.label);
-    out += label;
+    out += core::csv_field(state.label);
     for (const auto& column : collective_columns()) {
       const double value = column.get(state);
       out += ',';

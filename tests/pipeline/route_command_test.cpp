@@ -139,11 +139,12 @@ TEST_F(RouteCommandTest, CollectiveCsvKeepsEveryLabelOneCellThatReadsBack) {
   }
   std::ofstream(dir_ / "labels.csv") << collective_csv(states);
   const Scene s = parse_scene("[load_collective]\nfile = \"labels.csv\"\n", dir_);
-  // Every row came back (none read as a comment or split), with its label and numbers.
+  // Every row came back (none read as a comment or split), with its label as written (a label
+  // is one line: the line break reads as a blank) and its numbers.
   ASSERT_EQ(s.states.size(), 3u);
-  EXPECT_EQ(s.states[0].label, "curve; R 500;left");
-  EXPECT_EQ(s.states[1].label, "no. #2 S-curve; wheelset 1");
-  EXPECT_EQ(s.states[2].label, "padded");
+  EXPECT_EQ(s.states[0].label, "curve, R 500 left");
+  EXPECT_EQ(s.states[1].label, "#2 S-curve, wheelset 1");
+  EXPECT_EQ(s.states[2].label, "  padded  ");
   for (std::size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(s.states[i].dy, 1e-3 / 3.0);
     EXPECT_EQ(s.states[i].weight, 1.0 + static_cast<double>(i));

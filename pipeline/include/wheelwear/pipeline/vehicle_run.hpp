@@ -197,9 +197,8 @@ WheelsetStateSpec motion_state(const vehicle::WheelsetMotionState& state,
 
 /// `states` as a load-collective CSV file (docs/scenes.md, "Load collective formats"): a label
 /// column and every column a run records under collective/, 17 significant digits so that the
-/// file reads back to the same numbers, unset optional values left empty. Labels are made one
-/// cell that reads back: commas and line breaks become ';', edge spaces go, and a leading '#'
-/// (a comment row to the reader) becomes "no. #".
+/// file reads back to the same numbers, unset optional values left empty. Labels are quoted
+/// where RFC 4180 needs it (core::csv_field), so they read back as written.
 std::string collective_csv(const std::vector<WheelsetStateSpec>& states);
 
 }  // namespace wheelwear::pipeline
