@@ -255,7 +255,11 @@ void run(const RunArgs& args) {
   pipeline::RunOptions options;
   options.overwrite = args.overwrite;
   options.allow_hook = args.allow_hook;
-  if (!args.quiet) options.progress = show_progress;
+  const bool quiet = args.quiet;
+  options.progress = [quiet](const pipeline::RunProgress& p) {
+    StopMessage::steps_written();
+    if (!quiet) show_progress(p);
+  };
   options.warning = [](const std::string& text) {
     std::fprintf(stderr, "wheelwear: warning: %s\n", text.c_str());
   };
@@ -266,6 +270,7 @@ void run(const RunArgs& args) {
                        ": the scene and the output come from that file; give neither SCENE nor -o");
     }
     const StopMessage stop_message(args.resume);
+    StopMessage::steps_written();  // what the file holds stays resumable
     report(args, args.resume, pipeline::resume_run(args.resume, options));
     return;
   }

@@ -16,6 +16,9 @@ constexpr std::array<int, 3> kStopSignals{SIGINT, SIGTERM, SIGHUP};
 // Prepared before the run: a signal handler may only write what is already there.
 char g_stop_message[2048];
 std::size_t g_stop_length = 0;
+char g_stop_early[2048];
+std::size_t g_stop_early_length = 0;
+volatile std::sig_atomic_t g_stop_written = 0;
 std::array<struct sigaction, kStopSignals.size()> g_stop_previous{};
 
 const char* stop_signal_name(int signal) {
@@ -34,7 +37,10 @@ extern "C" void stop_on_signal(int signal) {
   const char* name = stop_signal_name(signal);
   [[maybe_unused]] ssize_t n = ::write(STDERR_FILENO, prefix, std::strlen(prefix));
   n = ::write(STDERR_FILENO, name, std::strlen(name));
-  n = ::write(STDERR_FILENO, g_stop_message, g_stop_length);
+  if (g_stop_written)
+    n = ::write(STDERR_FILENO, g_stop_message, g_stop_length);
+  else
+    n = ::write(STDERR_FILENO, g_stop_early, g_stop_early_length);
   std::signal(signal, SIG_DFL);
   ::raise(signal);
 }
@@ -46,6 +52,11 @@ StopMessage::StopMessage(const std::string& output) {
                            "; continue with: wheelwear run --resume " + output + "\n";
   g_stop_length = std::min(text.size(), sizeof g_stop_message);
   std::memcpy(g_stop_message, text.data(), g_stop_length);
+  const std::string early = " before the first step was written to " + output +
+                            "; run it again (with --overwrite if the file exists)\n";
+  g_stop_early_length = std::min(early.size(), sizeof g_stop_early);
+  std::memcpy(g_stop_early, early.data(), g_stop_early_length);
+  g_stop_written = 0;
   for (std::size_t i = 0; i < kStopSignals.size(); ++i) {
     sigaction(kStopSignals[i], nullptr, &g_stop_previous[i]);
     if (g_stop_previous[i].sa_handler == SIG_IGN) continue;
@@ -54,6 +65,10 @@ StopMessage::StopMessage(const std::string& output) {
     sigemptyset(&action.sa_mask);
     sigaction(kStopSignals[i], &action, nullptr);
   }
+}
+
+void StopMessage::steps_written() {
+  g_stop_written = 1;
 }
 
 StopMessage::~StopMessage() {

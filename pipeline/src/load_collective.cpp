@@ -194,7 +194,7 @@ std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
                        state_field_names());
     }
     for (std::size_t j = 0; j < k; ++j)
-      if (header[j] == header[k])
+      if (header[j] == header[k] || (is_label(header[j]) && is_label(header[k])))
         throw InputError(head + ": column '" + header[k] + "' appears twice (columns " +
                          std::to_string(j + 1) + " and " + std::to_string(k + 1) +
                          "); give each once");

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <system_error>
+#include <vector>
 
 #include "wheelwear/core/input_error.hpp"
 
@@ -292,25 +293,71 @@ void ResultsFile::append_step(const GroupRecord& step) {
   completed_steps_ = index + 1;
 }
 
+namespace {
+
+// The file an external link of `group` points to, resolved as HDF5 resolves it: beside `main`
+// when relative. Empty for a link of another kind.
+fs::path link_target(const H5::Group& group, const std::string& name, const fs::path& main) {
+  H5L_info_t info;
+  if (H5Lget_info(group.getId(), name.c_str(), &info, H5P_DEFAULT) < 0 ||
+      info.type != H5L_TYPE_EXTERNAL)
+    return {};
+  std::vector<char> value(info.u.val_size);
+  const char* file_name = nullptr;
+  const char* object = nullptr;
+  if (H5Lget_val(group.getId(), name.c_str(), value.data(), value.size(), H5P_DEFAULT) < 0 ||
+      H5Lunpack_elink_val(value.data(), value.size(), nullptr, &file_name, &object) < 0)
+    throw std::runtime_error("cannot read the link of step " + name + " in " + main.string());
+  const fs::path target(file_name);
+  return target.is_absolute() ? target : main.parent_path() / target;
+}
+
+}  // namespace
+
+bool ResultsFile::has_linked_steps() const {
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
+    const H5::Group steps = file.openGroup("/steps");
+    for (int k = 0; k < completed_steps_; ++k) {
+      H5L_info_t info;
+      const std::string name = step_group(k).substr(7);
+      if (H5Lget_info(steps.getId(), name.c_str(), &info, H5P_DEFAULT) >= 0 &&
+          info.type == H5L_TYPE_EXTERNAL)
+        return true;
+    }
+  } catch (const H5::Exception&) {
+  }
+  return false;
+}
+
 void ResultsFile::consolidate() {
-  const fs::path directory = steps_directory(path_);
-  if (!fs::exists(directory)) return;
+  if (!has_linked_steps()) {
+    fs::remove_all(steps_directory(path_));  // left by a kill after the last consolidation
+    return;
+  }
+  // The folders the links point to: FILE.steps, or that of FILE's earlier name when a renamed
+  // file was resumed.
+  std::vector<fs::path> folders;
   change_atomically(path_, [&](H5::H5File& file) {
     const H5::Group steps = file.openGroup("/steps");
     for (int k = 0; k < completed_steps_; ++k) {
       const std::string name = step_group(k).substr(7);  // "000012"
-      H5L_info_t info;
-      if (H5Lget_info(steps.getId(), name.c_str(), &info, H5P_DEFAULT) < 0 ||
-          info.type != H5L_TYPE_EXTERNAL)
-        continue;
-      H5::H5File source((directory / step_file_name(k)).string(), H5F_ACC_RDONLY);
+      const fs::path source = link_target(steps, name, path_);
+      if (source.empty()) continue;
+      H5::H5File step_file(source.string(), H5F_ACC_RDONLY);
       if (H5Ldelete(steps.getId(), name.c_str(), H5P_DEFAULT) < 0 ||
-          H5Ocopy(source.getId(), "/step", steps.getId(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT) <
-              0)
+          H5Ocopy(step_file.getId(), "/step", steps.getId(), name.c_str(), H5P_DEFAULT,
+                  H5P_DEFAULT) < 0)
         throw std::runtime_error("cannot copy step " + name + " into " + path_.string());
+      if (std::find(folders.begin(), folders.end(), source.parent_path()) == folders.end())
+        folders.push_back(source.parent_path());
     }
   });
-  fs::remove_all(directory);
+  // Only step folders, by their name: a link can point anywhere.
+  folders.push_back(steps_directory(path_));
+  for (const fs::path& folder : folders)
+    if (folder.extension() == ".steps") fs::remove_all(folder);
 }
 
 void ResultsFile::write_run_info(const GroupRecord& info) {

@@ -125,9 +125,11 @@ std::vector<WheelsetStateSpec> read_collective(const ResultsFile& file, int step
   const std::string where =
       "results file " + file.path().string() + ", step " + std::to_string(step) + ", " + prefix;
   for (const CollectiveColumn& c : collective_columns()) {
-    // Files written before the wheelset and direction columns existed hold neither.
+    // Files written before the wheelset and direction columns existed hold neither; every
+    // other column must be there.
+    const std::string_view name = c.name;
     const std::string column = ResultsFile::step_group(step) + "/" + prefix + c.name;
-    if (!states.empty() && !file.has(column)) continue;
+    if ((name == "wheelset" || name == "reversed") && !file.has(column)) continue;
     const std::vector<double> values = file.read_step_array(step, prefix + c.name);
     if (states.empty()) states.resize(values.size());
     if (values.size() != states.size())

@@ -80,12 +80,12 @@ RouteCase section_case(const vehicle::Route& route, std::size_t i, double start,
 // 3 - k running backwards with its sides swapped.
 using Models = std::array<vehicle::WheelsetModel, vehicle::kWheelsets>;
 
-// The linear critical speed of `run`'s vehicle with `models`, the contacts its dynamics uses,
+// The linear critical speed of `way`'s vehicle with `models`, the contacts its dynamics uses,
 // into out.critical_speed and out.critical_speed_note; searched from the previous solve's where
 // it was found (the profiles change little between solves: the crossing nearest it), to 0.1 %
 // (the table's interpolation moves it by more, docs/vehicle.md). A search that fails (no steady
 // state on tangent track at some speed) leaves NaN and says why, and does not stop the run.
-void find_critical_speed(const VehicleRun& run, const Models& models,
+void find_critical_speed(const RunningWay& way, const Models& models,
                          const VehicleCollective* previous, VehicleCollective& out) {
   vehicle::VehicleStabilityOptions options;
   options.speed_step = 5.0;
@@ -95,7 +95,7 @@ void find_critical_speed(const VehicleRun& run, const Models& models,
     options.speed_step = 2.0;
   }
   try {
-    const vehicle::CriticalSpeed c = vehicle::vehicle_critical_speed(run.vehicle, models, options);
+    const vehicle::CriticalSpeed c = vehicle::vehicle_critical_speed(way.vehicle, models, options);
     if (c.found) {
       out.critical_speed = c.speed;
       out.critical_speed_note = options.start_speed > 0.0 ? "the crossing nearest the last solve's"
@@ -144,14 +144,17 @@ const profiles::Profile& profile_of(const std::vector<const profiles::Profile*>&
   return *wheels[2 * j + side];
 }
 
-// The models of both directions; each distinct pair of profiles gets one contact table, built
-// in parallel.
+// The models of both directions (a direction the run does not take gets the other's); each
+// distinct pair of profiles gets one contact table, built in parallel.
 std::array<Models, 2> direction_models(const VehicleRun& run, const StateKernel& kernel,
                                        const std::vector<const profiles::Profile*>& wheels) {
   constexpr auto kSets = static_cast<std::size_t>(vehicle::kWheelsets);
   std::vector<std::pair<const profiles::Profile*, const profiles::Profile*>> pairs;
   std::array<std::array<std::size_t, kSets>, 2> pair_of{};
+  const std::array<bool, 2> taken{run.direction != RunningDirection::reverse,
+                                  run.direction != RunningDirection::forward};
   for (std::size_t d = 0; d < 2; ++d) {
+    if (!taken[d]) continue;
     for (std::size_t k = 0; k < kSets; ++k) {
       const std::size_t j = d == 0 ? k : kSets - 1 - k;
       const profiles::Profile* left = &profile_of(wheels, j, d == 0 ? 0 : 1);
@@ -168,7 +171,7 @@ std::array<Models, 2> direction_models(const VehicleRun& run, const StateKernel&
     distinct[i] = std::move(model);
   });
   const auto models = [&](std::size_t d) {
-    const auto& p = pair_of[d];
+    const auto& p = pair_of[taken[d] ? d : 1 - d];
     return Models{*distinct[p[0]], *distinct[p[1]], *distinct[p[2]], *distinct[p[3]]};
   };
   return {models(0), models(1)};
@@ -393,7 +396,9 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
   // The critical speed's search (serial) beside the pieces' simulations (parallel).
   tbb::parallel_invoke(
       [&] {
-        if (run.critical_speed) find_critical_speed(run, models[0], previous, out);
+        // The vehicle as it runs: backwards only, the physical wheelset 4 leads.
+        const std::size_t d = run.direction == RunningDirection::reverse ? 1 : 0;
+        if (run.critical_speed) find_critical_speed(*ways[d], models[d], previous, out);
       },
       [&] {
         simulate_pieces({&models[0], &models[1]}, ways, worn, out);

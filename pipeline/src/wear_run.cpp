@@ -484,6 +484,14 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   LoopStart start{last + 1, file.read_step_array(last, "distance").at(0) + step_distance,
                   new_profiles(scene)};
   start.hook_directory = hook_directory(output);
+  // A vehicle run with separate wheels written before each wheelset had profiles of its own
+  // holds left and right profiles only: it cannot go on with eight.
+  if (profile_layout(scene) == ProfileLayout::per_wheelset &&
+      !file.has(ResultsFile::step_group(last) + "/" + start.worn.front().name))
+    throw InputError("results file " + output.string() +
+                     ": its wheels = \"separate\" vehicle run wears one left and one right "
+                     "profile (an earlier program's layout); this program wears each wheelset's "
+                     "own: start a new run with -o");
   const profiles::WearUpdateOptions update{0.0};  // as in loop()
   for (WornProfile& w : start.worn) {
     const auto y = file.read_step_array(last, w.name + "/y");

@@ -59,9 +59,9 @@ TEST_F(OutputLockTest, UnwritableOutputsAreRefusedNamingTheCause) {
   write("plain.txt", "not a folder");
   EXPECT_NE(refusal([&] { OutputLock l(dir_ / "plain.txt" / "run.h5"); }).find("is not a folder"),
             std::string::npos);
-  // Nothing was written beside them.
-  EXPECT_FALSE(fs::exists(dir_ / "plain.txt.lock"));
-  EXPECT_FALSE(fs::exists(lock_path(dir_)));
+  // Nothing was written: the folder holds the plain file alone, as it was.
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+  EXPECT_EQ(bytes_of(dir_ / "plain.txt"), "not a folder");
 }
 
 // A run, a resume and the command line, each given the output a run is writing: refused, the

@@ -142,5 +142,25 @@ TEST_F(ResultsFileTest, AStepWrittenButNotLinkedIsDiscarded) {
   EXPECT_EQ(ResultsFile::read(path).read_step_array(1, "distance"), std::vector<double>{2.0});
 }
 
+// A running file renamed before it is resumed: its links still reach the old step folder, the
+// resumed steps go to the new name's, and consolidation gathers both and removes both.
+TEST_F(ResultsFileTest, ARenamedRunningFileConsolidatesThroughItsLinks) {
+  ResultsFile out = ResultsFile::create(file("run.h5"), "", false);
+  out.append_step(step(1.0));
+  out.append_step(step(2.0));
+  fs::rename(file("run.h5"), file("moved.h5"));
+  ResultsFile moved = ResultsFile::open(file("moved.h5"));
+  EXPECT_EQ(moved.read_step_array(1, "distance"), std::vector<double>{2.0});
+  moved.append_step(step(3.0));
+  EXPECT_TRUE(moved.has_linked_steps());
+  moved.consolidate();
+  EXPECT_FALSE(moved.has_linked_steps());
+  EXPECT_FALSE(fs::exists(ResultsFile::steps_directory(file("run.h5"))));
+  EXPECT_FALSE(fs::exists(ResultsFile::steps_directory(file("moved.h5"))));
+  const ResultsFile done = ResultsFile::read(file("moved.h5"));
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(done.read_step_array(k, "distance"), std::vector<double>{k + 1.0}) << k;
+}
+
 }  // namespace
 }  // namespace wheelwear::pipeline

@@ -74,9 +74,7 @@ TEST_F(RouteCommandTest, WritesTheCollectiveTheRunWouldWearWith) {
   int compared = 0;
   for (std::size_t i = 0; i < v.states.size(); ++i) {
     const WheelsetStateSpec &a = v.states[i], &b = from_file.states[i];
-    std::string label = a.label;  // the file's cells hold no commas (collective_csv)
-    std::replace(label.begin(), label.end(), ',', ';');
-    EXPECT_EQ(b.label, label) << i;
+    EXPECT_EQ(b.label, a.label) << i;  // quoted where it holds commas (collective_csv)
     for (const auto& [x, y] : {std::pair{a.dy, b.dy},
                                {a.yaw, b.yaw},
                                {a.load_left, b.load_left},

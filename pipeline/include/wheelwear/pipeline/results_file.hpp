@@ -80,9 +80,12 @@ class ResultsFile {
 
   /// Publishes step `completed_steps()` atomically: writes its own file, then links it.
   void append_step(const GroupRecord& step);
-  /// Copies every linked step into FILE and removes FILE.steps (a finished run); the file
-  /// reads the same before and after. Nothing to do for a file without linked steps.
+  /// Copies every linked step into FILE and removes the step folders the links point to
+  /// (FILE.steps, or the folder of FILE's name when a renamed file was resumed); the file reads
+  /// the same before and after. Nothing to copy for a file without linked steps.
   void consolidate();
+  /// Whether some step is still an external link to its own file (a run not yet consolidated).
+  bool has_linked_steps() const;
   /// Publishes the /run_info group atomically (replacing an earlier one).
   void write_run_info(const GroupRecord& info);
 
