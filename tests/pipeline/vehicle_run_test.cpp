@@ -265,22 +265,6 @@ class VehicleRunTest : public WearRunTest {
   }
 };
 
-// Every array of step `step` whose name starts with `prefix` holds the same values in `res` as
-// in `ref`, NaN where NaN; `compared` counts the values.
-void expect_same_arrays(const ResultsFile& ref, const ResultsFile& res, int step,
-                        const std::string& prefix, int& compared) {
-  for (const std::string& name : ref.step_array_names(step)) {
-    if (name.rfind(prefix, 0) != 0) continue;
-    const auto a = ref.read_step_array(step, name), b = res.read_step_array(step, name);
-    ASSERT_EQ(a.size(), b.size()) << name;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      if (std::isnan(a[i]) && std::isnan(b[i])) continue;
-      ASSERT_EQ(a[i], b[i]) << "step " << step << ' ' << name << '[' << i << ']';
-      ++compared;
-    }
-  }
-}
-
 TEST_F(VehicleRunTest, RecordsTheVehicleAndResumesToIdenticalResults) {
   write("route.toml", kShortRoute);
   // Solved at every step (resolve depth 0), three steps of 1 km; the transition and a short

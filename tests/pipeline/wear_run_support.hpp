@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -93,6 +94,22 @@ inline int kill_run_after_steps(const std::vector<std::string>& arguments, const
   int status = 0;
   ::waitpid(pid, &status, 0);
   return status;
+}
+
+// Every array of step `step` whose name starts with `prefix` holds the same values in `res` as
+// in `ref`, NaN where NaN; `compared` counts the values.
+inline void expect_same_arrays(const ResultsFile& ref, const ResultsFile& res, int step,
+                               const std::string& prefix, int& compared) {
+  for (const std::string& name : ref.step_array_names(step)) {
+    if (name.rfind(prefix, 0) != 0) continue;
+    const auto a = ref.read_step_array(step, name), b = res.read_step_array(step, name);
+    ASSERT_EQ(a.size(), b.size()) << name;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      if (std::isnan(a[i]) && std::isnan(b[i])) continue;
+      ASSERT_EQ(a[i], b[i]) << "step " << step << ' ' << name << '[' << i << ']';
+      ++compared;
+    }
+  }
 }
 
 inline profiles::PointList points(const std::vector<double>& y, const std::vector<double>& z) {
