@@ -20,11 +20,16 @@ namespace {
 constexpr std::size_t kCompressAbove = 4096;   // elements
 constexpr std::size_t kChunkElements = 65536;  // about 512 kB per chunk
 
+// A step's six digits: "000012", its link's name in /steps.
+std::string step_digits(int step) {
+  char name[32];
+  std::snprintf(name, sizeof name, "%06d", step);
+  return name;
+}
+
 // A step's own file while the run goes on: "000012.h5".
 std::string step_file_name(int step) {
-  char name[32];
-  std::snprintf(name, sizeof name, "%06d.h5", step);
-  return name;
+  return step_digits(step) + ".h5";
 }
 
 fs::path partial_path(const fs::path& path) {
@@ -136,6 +141,28 @@ void write_group(H5::H5File& file, const std::string& root, const GroupRecord& g
     write_text(file, ensure_parents(file, root, text.name), text.text, text.description);
 }
 
+// Writes a new file by `write` as `path`'s partial copy and publishes it; on any failure the
+// copy is removed and `path` is left as it was ("cannot <verb> <path>" for HDF5's errors).
+template <class Write>
+void write_new_atomically(const fs::path& path, const char* verb, Write write) {
+  const fs::path partial = partial_path(path);
+  try {
+    {
+      H5::H5File file(partial.string(), H5F_ACC_TRUNC);
+      write(file);
+      file.close();
+    }
+    publish(partial, path);
+  } catch (const H5::Exception& error) {
+    fs::remove(partial);
+    throw std::runtime_error(std::string("cannot ") + verb + " " + path.string() + ": " +
+                             error.getDetailMsg());
+  } catch (...) {
+    fs::remove(partial);
+    throw;
+  }
+}
+
 // Runs `change` on a copy of `path` and publishes the copy.
 template <class Change>
 void change_atomically(const fs::path& path, Change change) {
@@ -181,9 +208,7 @@ ResultsFile::ResultsFile(fs::path path, std::string scene_text, int completed_st
       completed_steps_(completed_steps) {}
 
 std::string ResultsFile::step_group(int step) {
-  char name[32];
-  std::snprintf(name, sizeof name, "/steps/%06d", step);
-  return name;
+  return "/steps/" + step_digits(step);
 }
 
 ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_text, bool overwrite,
@@ -194,9 +219,7 @@ ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_tex
     throw InputError("output " + path.string() +
                      ": the file exists; choose another name or pass --overwrite to replace it");
   }
-  const fs::path partial = partial_path(path);
-  try {
-    H5::H5File file(partial.string(), H5F_ACC_TRUNC);
+  write_new_atomically(path, "create", [&](H5::H5File& file) {
     write_text(file, "/scene", std::string(scene_text), "the scene this run was made from (TOML)");
     H5::Group root = file.openGroup("/");
     write_int_attribute(root, "format_version", kFormatVersion);
@@ -207,12 +230,7 @@ ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_tex
     write_int_attribute(steps, "completed_steps", 0);
     if (!run_info.arrays.empty() || !run_info.texts.empty())
       write_group(file, "/run_info", run_info);
-    file.close();
-  } catch (const H5::Exception& error) {
-    fs::remove(partial);
-    throw std::runtime_error("cannot create " + path.string() + ": " + error.getDetailMsg());
-  }
-  publish(partial, path);
+  });
   // The step files of an earlier run under this name belong to the file just replaced.
   fs::remove_all(steps_directory(path));
   return ResultsFile(path, std::string(scene_text), 0);
@@ -263,30 +281,15 @@ void ResultsFile::append_step(const GroupRecord& step) {
   const int index = completed_steps_;
   const fs::path directory = steps_directory(path_);
   const std::string name = step_file_name(index);
-  const fs::path target = directory / name;
-  const fs::path partial = partial_path(target);
-  try {
-    fs::create_directories(directory);
-    {
-      H5::H5File file(partial.string(), H5F_ACC_TRUNC);
-      write_group(file, "/step", step);
-      file.close();
-    }
-    publish(partial, target);
-  } catch (const H5::Exception& error) {
-    fs::remove(partial);
-    throw std::runtime_error("cannot write " + target.string() + ": " + error.getDetailMsg());
-  } catch (...) {
-    fs::remove(partial);
-    throw;
-  }
+  fs::create_directories(directory);
+  write_new_atomically(directory / name, "write",
+                       [&](H5::H5File& file) { write_group(file, "/step", step); });
   // The link's file name is relative: HDF5 looks for it beside FILE, wherever FILE is read from.
   const std::string linked = (directory.filename() / name).string();
   change_atomically(path_, [&](H5::H5File& file) {
     H5::Group steps = file.openGroup("/steps");
-    const std::string step_name = step_group(index).substr(7);  // "000012"
-    if (H5Lcreate_external(linked.c_str(), "/step", steps.getId(), step_name.c_str(), H5P_DEFAULT,
-                           H5P_DEFAULT) < 0)
+    if (H5Lcreate_external(linked.c_str(), "/step", steps.getId(), step_digits(index).c_str(),
+                           H5P_DEFAULT, H5P_DEFAULT) < 0)
       throw std::runtime_error("cannot link " + linked + " into " + path_.string());
     write_int_attribute(steps, "completed_steps", index + 1);
   });
@@ -297,11 +300,15 @@ namespace {
 
 // The file an external link of `group` points to, resolved as HDF5 resolves it: beside `main`
 // when relative. Empty for a link of another kind.
+// Whether `name` in `group` is an external link; its info in `info`.
+bool is_external(const H5::Group& group, const std::string& name, H5L_info_t& info) {
+  return H5Lget_info(group.getId(), name.c_str(), &info, H5P_DEFAULT) >= 0 &&
+         info.type == H5L_TYPE_EXTERNAL;
+}
+
 fs::path link_target(const H5::Group& group, const std::string& name, const fs::path& main) {
   H5L_info_t info;
-  if (H5Lget_info(group.getId(), name.c_str(), &info, H5P_DEFAULT) < 0 ||
-      info.type != H5L_TYPE_EXTERNAL)
-    return {};
+  if (!is_external(group, name, info)) return {};
   std::vector<char> value(info.u.val_size);
   const char* file_name = nullptr;
   const char* object = nullptr;
@@ -319,13 +326,9 @@ bool ResultsFile::has_linked_steps() const {
     H5::Exception::dontPrint();
     H5::H5File file(path_.string(), H5F_ACC_RDONLY);
     const H5::Group steps = file.openGroup("/steps");
-    for (int k = 0; k < completed_steps_; ++k) {
-      H5L_info_t info;
-      const std::string name = step_group(k).substr(7);
-      if (H5Lget_info(steps.getId(), name.c_str(), &info, H5P_DEFAULT) >= 0 &&
-          info.type == H5L_TYPE_EXTERNAL)
-        return true;
-    }
+    H5L_info_t info;
+    for (int k = 0; k < completed_steps_; ++k)
+      if (is_external(steps, step_digits(k), info)) return true;
   } catch (const H5::Exception&) {
   }
   return false;
@@ -342,7 +345,7 @@ void ResultsFile::consolidate() {
   change_atomically(path_, [&](H5::H5File& file) {
     const H5::Group steps = file.openGroup("/steps");
     for (int k = 0; k < completed_steps_; ++k) {
-      const std::string name = step_group(k).substr(7);  // "000012"
+      const std::string name = step_digits(k);
       const fs::path source = link_target(steps, name, path_);
       if (source.empty()) continue;
       H5::H5File step_file(source.string(), H5F_ACC_RDONLY);

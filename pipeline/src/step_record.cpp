@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "vehicle_record.hpp"
+#include "wheelwear/contactgeom/equivalent_conicity.hpp"
 
 namespace wheelwear::pipeline::detail {
 
@@ -17,6 +18,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kConicityAmplitude = 3e-3;  // EN 15302's reference amplitude [m]
+constexpr double kDeltaRRange = 6e-3;        // Delta r is sampled over +-6 mm ...
+constexpr int kDeltaRSamples = 61;           // ... every 0.2 mm
 
 std::size_t largest_patch_count(const std::vector<StateOutcome>& states) {
   std::size_t count = 1;  // a dimension of extent zero would make every per-patch array empty
@@ -205,6 +209,32 @@ GroupRecord run_info(const fs::path& scene_directory, bool builtin, double elaps
   info.arrays.push_back(scalar("resumed_from_step", resumed_from, "1",
                                "step this process resumed after; -1 for a run from the start"));
   return info;
+}
+
+// The equivalent conicity and rolling radius difference of the wheelset(s) the profiles make:
+// at the top of the step the first wheelset's (the only one unless each wheelset wears its own
+// profiles), then each wheelset's below wheelsets/K/.
+void add_conicity(GroupRecord& g, const CollectiveEvaluator& evaluator,
+                  const std::vector<profiles::Profile>& wheels) {
+  const bool per_wheelset = wheels.size() > 2;
+  const std::size_t wheelsets = per_wheelset ? wheels.size() / 2 : 1;
+  for (std::size_t k = 0; k < wheelsets; ++k) {
+    const profiles::Profile& left = per_wheelset ? wheels[2 * k] : wheels.front();
+    const profiles::Profile& right = per_wheelset ? wheels[2 * k + 1] : wheels.back();
+    const contactgeom::RollingRadiusDifference dr = contactgeom::rolling_radius_difference(
+        evaluator.pair(left), evaluator.pair(right), kDeltaRRange, kDeltaRSamples);
+    const double conicity = contactgeom::equivalent_conicity(dr, kConicityAmplitude);
+    const std::string prefixes[2] = {"", "wheelsets/" + std::to_string(k + 1) + "/"};
+    for (const std::string& prefix : prefixes) {
+      if (!prefix.empty() && !per_wheelset) continue;
+      if (prefix.empty() && k > 0) continue;
+      g.arrays.push_back(scalar(prefix + "equivalent_conicity", conicity, "1",
+                                "tan(gamma_e) at 3 mm amplitude (EN 15302, Annex C)"));
+      g.arrays.push_back(
+          vector(prefix + "delta_r/dy", dr.dy, "m", "wheelset shift, + to the left"));
+      g.arrays.push_back(vector(prefix + "delta_r/value", dr.delta_r, "m", "r_left - r_right"));
+    }
+  }
 }
 
 }  // namespace wheelwear::pipeline::detail

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/pipeline/scene.hpp"
 #include "wheelwear/pipeline/state_kernel.hpp"
@@ -23,6 +24,11 @@ void add_state_summaries(GroupRecord& g, const std::vector<StateOutcome>& states
 
 // tgamma/...: every patch's cells, shape [states, 2, P, ny, nx], NaN where there is no patch.
 void add_tgamma_maps(GroupRecord& g, const std::vector<StateOutcome>& states, int nx, int ny);
+
+// equivalent_conicity and delta_r/ of the wheelset the profiles make (left, right), or with
+// eight profiles (each wheelset its own) wheelset 1's there and each one's under wheelsets/K/.
+void add_conicity(GroupRecord& g, const CollectiveEvaluator& evaluator,
+                  const std::vector<profiles::Profile>& wheels);
 
 // The states as the run resolved them (from the scene, a CSV or an HDF5 file).
 GroupRecord collective_record(const Scene& scene);

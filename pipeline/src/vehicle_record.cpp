@@ -102,6 +102,37 @@ ArrayRecord shaped(std::string name, std::vector<double> values, std::vector<std
 
 }  // namespace
 
+void add_vehicle_record(GroupRecord& g, const VehicleCollective& vehicle, bool solved,
+                        double depth_since_solve) {
+  g.arrays.push_back(scalar("vehicle/solved", solved ? 1.0 : 0.0, "1",
+                            "1 when the vehicle was solved on this step's profiles"));
+  g.arrays.push_back(scalar("vehicle/unconverged_cases", static_cast<double>(vehicle.unconverged),
+                            "1",
+                            "running conditions whose quasi-static solve did not converge "
+                            "(their last iterate is used)"));
+  g.arrays.push_back(scalar("vehicle/kept_cases", static_cast<double>(vehicle.kept), "1",
+                            "running conditions whose solve on this solve's profiles did not "
+                            "converge from their last converged solution, which they keep"));
+  g.arrays.push_back(scalar("vehicle/depth_since_solve", depth_since_solve, "m",
+                            "deepest wear since the vehicle's last solve, this step's "
+                            "included (an upper bound: the steps' deepest increments summed)"));
+  if (!vehicle.pieces.empty())
+    g.arrays.push_back(
+        scalar("vehicle/incomplete_pieces", static_cast<double>(vehicle.incomplete()), "1",
+               "time-domain pieces whose simulation stopped early (the "
+               "vehicle left the rails); their samples up to there keep their weight, and "
+               "the start state stands for the rest"));
+  g.arrays.push_back(scalar("vehicle/critical_speed", vehicle.critical_speed, "m/s",
+                            "linear critical speed on tangent track on the profiles of the "
+                            "vehicle's last solve; NaN: not computed or not found "
+                            "(vehicle/critical_speed_note)"));
+  g.texts.push_back({"vehicle/critical_speed_note", vehicle.critical_speed_note,
+                     "how the critical speed was found, or why not"});
+  add_collective(g, "collective/", vehicle.states);
+  add_vehicle_cases(g, vehicle);
+  add_vehicle_pieces(g, vehicle);
+}
+
 void add_collective(GroupRecord& g, const std::string& prefix,
                     const std::vector<WheelsetStateSpec>& states) {
   for (const CollectiveColumn& c : collective_columns()) {

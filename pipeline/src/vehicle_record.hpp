@@ -14,6 +14,12 @@
 
 namespace wheelwear::pipeline::detail {
 
+// A vehicle run's record of one step: vehicle/solved, the solve's counts and critical speed,
+// vehicle/depth_since_solve (this step's included), the collective (collective/), the cases and
+// the pieces.
+void add_vehicle_record(GroupRecord& g, const VehicleCollective& vehicle, bool solved,
+                        double depth_since_solve);
+
 // The states as load-collective columns under `prefix` ("" or e.g. "collective/").
 void add_collective(GroupRecord& g, const std::string& prefix,
                     const std::vector<WheelsetStateSpec>& states);

@@ -12,7 +12,6 @@
 #include "hook_run.hpp"
 #include "step_record.hpp"
 #include "vehicle_record.hpp"
-#include "wheelwear/contactgeom/equivalent_conicity.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/output_lock.hpp"
@@ -32,9 +31,6 @@ namespace {
 using detail::scalar;
 using detail::vector;
 
-constexpr double kConicityAmplitude = 3e-3;  // EN 15302's reference amplitude [m]
-constexpr double kDeltaRRange = 6e-3;        // Delta r is sampled over +-6 mm ...
-constexpr int kDeltaRSamples = 61;           // ... every 0.2 mm
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 using Clock = std::chrono::steady_clock;
@@ -166,32 +162,6 @@ profiles::WheelParameters measured_parameters(const profiles::Profile& wheel) {
   }
 }
 
-// The equivalent conicity and rolling radius difference of the wheelset(s) the profiles make:
-// at the top of the step the first wheelset's (the only one unless each wheelset wears its own
-// profiles), then each wheelset's below wheelsets/K/.
-void add_conicity(GroupRecord& g, const CollectiveEvaluator& evaluator,
-                  const std::vector<profiles::Profile>& wheels) {
-  const bool per_wheelset = wheels.size() > 2;
-  const std::size_t wheelsets = per_wheelset ? wheels.size() / 2 : 1;
-  for (std::size_t k = 0; k < wheelsets; ++k) {
-    const profiles::Profile& left = per_wheelset ? wheels[2 * k] : wheels.front();
-    const profiles::Profile& right = per_wheelset ? wheels[2 * k + 1] : wheels.back();
-    const contactgeom::RollingRadiusDifference dr = contactgeom::rolling_radius_difference(
-        evaluator.pair(left), evaluator.pair(right), kDeltaRRange, kDeltaRSamples);
-    const double conicity = contactgeom::equivalent_conicity(dr, kConicityAmplitude);
-    const std::string prefixes[2] = {"", "wheelsets/" + std::to_string(k + 1) + "/"};
-    for (const std::string& prefix : prefixes) {
-      if (!prefix.empty() && !per_wheelset) continue;
-      if (prefix.empty() && k > 0) continue;
-      g.arrays.push_back(scalar(prefix + "equivalent_conicity", conicity, "1",
-                                "tan(gamma_e) at 3 mm amplitude (EN 15302, Annex C)"));
-      g.arrays.push_back(
-          vector(prefix + "delta_r/dy", dr.dy, "m", "wheelset shift, + to the left"));
-      g.arrays.push_back(vector(prefix + "delta_r/value", dr.delta_r, "m", "r_left - r_right"));
-    }
-  }
-}
-
 RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, ResultsFile& file,
                 LoopStart start, const fs::path& scene_directory, bool builtin,
                 const RunOptions& options) {
@@ -313,36 +283,10 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
           vector(n + "/wear_step/depth", increments.back().depth, "m",
                  "wear depth of the step (smoothed wear rate times the step distance)"));
     }
-    add_conicity(g, evaluator, wheels);
+    detail::add_conicity(g, evaluator, wheels);
     if (scene.vehicle_run) {
       const double depth_after = carry.depth_since_solve + peak * step_distance;
-      g.arrays.push_back(scalar("vehicle/solved", vehicle_solved ? 1.0 : 0.0, "1",
-                                "1 when the vehicle was solved on this step's profiles"));
-      g.arrays.push_back(scalar("vehicle/unconverged_cases",
-                                static_cast<double>(carry.last.unconverged), "1",
-                                "running conditions whose quasi-static solve did not converge "
-                                "(their last iterate is used)"));
-      g.arrays.push_back(scalar("vehicle/kept_cases", static_cast<double>(carry.last.kept), "1",
-                                "running conditions whose solve on this solve's profiles did not "
-                                "converge from their last converged solution, which they keep"));
-      g.arrays.push_back(scalar("vehicle/depth_since_solve", depth_after, "m",
-                                "deepest wear since the vehicle's last solve, this step's "
-                                "included (an upper bound: the steps' deepest increments summed)"));
-      if (!carry.last.pieces.empty())
-        g.arrays.push_back(
-            scalar("vehicle/incomplete_pieces", static_cast<double>(carry.last.incomplete()), "1",
-                   "time-domain pieces whose simulation stopped early (the "
-                   "vehicle left the rails); their samples up to there keep their weight, and "
-                   "the start state stands for the rest"));
-      g.arrays.push_back(scalar("vehicle/critical_speed", carry.last.critical_speed, "m/s",
-                                "linear critical speed on tangent track on the profiles of the "
-                                "vehicle's last solve; NaN: not computed or not found "
-                                "(vehicle/critical_speed_note)"));
-      g.texts.push_back({"vehicle/critical_speed_note", carry.last.critical_speed_note,
-                         "how the critical speed was found, or why not"});
-      detail::add_collective(g, "collective/", carry.last.states);
-      detail::add_vehicle_cases(g, carry.last);
-      detail::add_vehicle_pieces(g, carry.last);
+      detail::add_vehicle_record(g, carry.last, vehicle_solved, depth_after);
       carry.depth_since_solve = depth_after;
     }
     if (scene.hook) {
