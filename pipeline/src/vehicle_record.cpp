@@ -252,8 +252,22 @@ void add_vehicle_cases(GroupRecord& g, const VehicleCollective& v) {
   g.arrays.push_back(shaped(p + "Fx_axle",
                             per_wheelset(v, [](const W& w) { return w.forces.Fx_axle; }), ws, "N",
                             "longitudinal creep force of the axle, + forward [case, wheelset]"));
-  using F = vehicle::WheelForces;
+  // What a case's states carry beyond the placement (motion_state): a resumed run that keeps a
+  // case's solution makes its states from these.
+  g.arrays.push_back(shaped(p + "roll",
+                            per_wheelset(v, [](const W& w) { return w.forces.contact.roll; }), ws,
+                            "rad", "wheelset roll, + left wheel down [case, wheelset]"));
+  std::vector<double> vertical;
+  for (const vehicle::VehicleCurving& c : v.curving)
+    for (const vehicle::CurvingWheelset& w : c.wheelsets)
+      for (const contactgeom::WheelRailContact* wheel :
+           {&w.forces.contact.left, &w.forces.contact.right})
+        vertical.push_back(wheel->vertical_force);
   const std::vector<std::size_t> wheels{n, vehicle::kWheelsets, 2};
+  g.arrays.push_back(shaped(p + "vertical_force", std::move(vertical), wheels, "N",
+                            "vertical force the wheel's contact was solved for (Q less the creep "
+                            "forces' vertical part) [case, wheelset, left|right]"));
+  using F = vehicle::WheelForces;
   g.arrays.push_back(shaped(p + "Q", per_wheel(v, [](const F& w) { return w.Q; }), wheels, "N",
                             "wheel load, normal to the track plane [case, wheelset, left|right]"));
   g.arrays.push_back(shaped(p + "Y", per_wheel(v, [](const F& w) { return w.Y; }), wheels, "N",
@@ -471,6 +485,10 @@ std::vector<vehicle::VehicleCurving> read_vehicle_cases(const ResultsFile& file,
   const auto Q = read("Q", 2 * w);
   const auto Y = read("Y", 2 * w);
   const auto angle = read("contact_angle", 2 * w);
+  // Files of earlier programs hold neither: the loads, and no roll, stand in.
+  const bool solved_for = file.has(ResultsFile::step_group(step) + "/" + p + "vertical_force");
+  const auto vertical = solved_for ? read("vertical_force", 2 * w) : Q;
+  const auto roll = solved_for ? read("roll", w) : std::vector<double>(cases * w, 0.0);
   std::vector<vehicle::VehicleCurving> out(cases);
   for (std::size_t i = 0; i < cases; ++i) {
     vehicle::VehicleCurving& c = out[i];
@@ -484,11 +502,14 @@ std::vector<vehicle::VehicleCurving> read_vehicle_cases(const ResultsFile& file,
       ws.state = starts[i]->wheelsets[k];
       ws.forces.lateral = sum_Y[i * w + k];
       ws.forces.Fx_axle = Fx_axle[i * w + k];
+      ws.forces.contact.roll = roll[i * w + k];
       for (std::size_t side = 0; side < 2; ++side) {
         const std::size_t at = (i * w + k) * 2 + side;
         ws.forces.wheels[side].Q = Q[at];
         ws.forces.wheels[side].Y = Y[at];
         ws.forces.wheels[side].contact_angle = angle[at];
+        (side == 0 ? ws.forces.contact.left : ws.forces.contact.right).vertical_force =
+            vertical[at];
       }
     }
   }

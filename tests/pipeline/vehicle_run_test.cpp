@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "short_route.hpp"
+#include "vehicle_record.hpp"
 #include "wear_run_support.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
@@ -369,6 +370,43 @@ TEST_F(VehicleRunTest, ResumedBetweenSolvesKeepsThePiecesAndTheCriticalSpeed) {
     }
   }
   EXPECT_GT(compared, 200);
+}
+
+// A resumed run rebuilds each case's solution from the step's record, and a case that keeps
+// that solution at the next solve makes its states from it: they must be the states the
+// uninterrupted run makes (the vertical forces the contact was solved for, the roll), not
+// zero loads.
+TEST_F(VehicleRunTest, RecordedCasesMakeTheSameStatesAsTheSolvedOnes) {
+  const Scene scene = parse_scene(
+      "[contact]\ngrid_nx = 12\ngrid_ny = 12\n[load_collective]\n[[load_collective.state]]\n"
+      "axle_load_N = 1e5\nspeed_m_s = 40\n",
+      {});
+  const VehicleRun run = short_route_run();
+  const StateKernel kernel(scene);
+  const profiles::Profile wheel = profiles::wheel_profile("S1002", 0.46, {});
+  const VehicleCollective v = solve_vehicle_collective(run, kernel, {&wheel});
+  GroupRecord g;
+  detail::add_vehicle_cases(g, v);
+  ResultsFile file = ResultsFile::create(dir_ / "cases.h5", "", false);
+  file.append_step(g);
+  const std::vector<vehicle::VehicleCurving> read =
+      detail::read_vehicle_cases(file, 0, v.cases.size());
+  int compared = 0;
+  for (std::size_t i = 0; i < v.cases.size(); ++i) {
+    for (int k = 0; k < vehicle::kWheelsets; ++k) {
+      const WheelsetStateSpec a = wheelset_state(v.cases[i], v.curving[i], k, 1.0);
+      const WheelsetStateSpec b = wheelset_state(v.cases[i], read[i], k, 1.0);
+      EXPECT_EQ(b.load_left, a.load_left);
+      EXPECT_EQ(b.load_right, a.load_right);
+      EXPECT_EQ(b.roll, a.roll);
+      EXPECT_EQ(b.dy, a.dy);
+      EXPECT_EQ(b.yaw, a.yaw);
+      EXPECT_EQ(b.angular_velocity, a.angular_velocity);
+      EXPECT_GT(b.load_left, 0.0);
+      compared += 6;
+    }
+  }
+  EXPECT_EQ(compared, 72);
 }
 
 }  // namespace
