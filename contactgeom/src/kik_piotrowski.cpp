@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "blended_minimum.hpp"
 #include "kik_piotrowski_eval.hpp"
 #include "strip_kernel.hpp"
 #include "wheelwear/core/input_error.hpp"
@@ -38,36 +39,24 @@ struct Run {
 
 // Locates O in [first, last]: the strip with the smallest h, refined by the parabola through it
 // and its two neighbours (the way CONTACT's reference data locate s_icp), which keeps s_O and
-// h_O continuous as the true minimum moves between strips. Where several neighbouring strips
-// share the smallest h exactly (a flat gap), O is the middle of that flat part.
+// h_O continuous as the true minimum moves between strips; where several neighbouring strips
+// share the smallest h exactly (a flat gap), the middle of that flat part; where the gap has
+// minima of nearly the same depth far apart, their weighted mean (blended_minimum.hpp), so that
+// O does not jump across a wide patch.
 Run locate_minimum(const GapStrips& g, std::size_t first, std::size_t last) {
-  std::size_t jmin = first;
-  for (std::size_t j = first + 1; j <= last; ++j) {
-    if (g.h[j] < g.h[jmin]) jmin = j;
-  }
-  std::size_t jtie = jmin;
-  while (jtie + 1 <= last && g.h[jtie + 1] == g.h[jmin]) ++jtie;
-  if (jtie > jmin) {
-    const double a_mid =
-        0.5 * (g.ax[jmin + (jtie - jmin) / 2] + g.ax[jmin + (jtie - jmin + 1) / 2]);
-    return {first, last, 0.5 * (g.s(jmin) + g.s(jtie)), g.h[jmin], a_mid};
-  }
-  const std::size_t jm = jmin;
-  Run run{first, last, g.s(jm), g.h[jm], g.ax[jm]};
-  if (jm == 0 || jm + 1 >= g.size()) return run;
-  const double hl = g.h[jm - 1];
-  const double hr = g.h[jm + 1];
-  if (!std::isfinite(hl) || !std::isfinite(hr)) return run;
-  const double curv = hl - 2.0 * g.h[jm] + hr;  // second difference, >= 0 at a minimum
-  if (!(curv > 0.0)) return run;
-  // Parabola h(t) = h_jm + (hr - hl)/2 t + curv/2 t^2 in strip units t; its vertex lies in
-  // [-1/2, 1/2] because h_jm is not above its neighbours.
-  const double t = std::clamp((hl - hr) / (2.0 * curv), -0.5, 0.5);
-  run.s_O += t * g.ds;
-  run.h_O = g.h[jm] + 0.5 * (hr - hl) * t + 0.5 * curv * t * t;
-  const double a_side = t >= 0.0 ? g.ax[jm + 1] : g.ax[jm - 1];
-  run.a_O = g.ax[jm] + std::abs(t) * (a_side - g.ax[jm]);
-  return run;
+  const auto gap = [&g](std::ptrdiff_t j) {
+    return j < 0 || j >= static_cast<std::ptrdiff_t>(g.size())
+               ? std::numeric_limits<double>::infinity()
+               : g.h[static_cast<std::size_t>(j)];
+  };
+  const detail::BlendedMinimum m = detail::blended_minimum(gap, static_cast<std::ptrdiff_t>(first),
+                                                           static_cast<std::ptrdiff_t>(last));
+  // A(s) at O, linear between the strips around it.
+  const double floor = std::floor(m.index);
+  const auto j = static_cast<std::size_t>(floor);
+  const double t = m.index - floor;
+  const double a_O = t > 0.0 && j + 1 < g.size() ? g.ax[j] + t * (g.ax[j + 1] - g.ax[j]) : g.ax[j];
+  return {first, last, g.s_first + m.index * g.ds, m.h, a_O};
 }
 
 // Visits every run of consecutive strips with h < delta, in increasing s.
@@ -125,7 +114,7 @@ void write_patch(const GapStrips& g, const Run& run, double approach, double lev
   for (std::size_t j = r.first_contact; j <= r.last_contact; ++j) {
     const double gj = level - (g.h[j] - run.h_O);
     const double xl = gj > 0.0 ? std::sqrt(gj / g.ax[j]) : 0.0;
-    patch.strips.push_back({g.s(j), xl, p_per_xl * xl});
+    patch.strips.push_back({g.s(j), xl, p_per_xl * xl, gj > 0.0 ? 0.0 : -gj / g.ax[j]});
   }
   patch.ds = g.ds;
   patch.s_O = run.s_O;

@@ -12,6 +12,7 @@
 #include <boost/geometry/geometries/polygon.hpp>
 #pragma GCC diagnostic pop
 #include <string>
+#include <utility>
 
 #include "wheelwear/core/input_error.hpp"
 
@@ -88,6 +89,62 @@ double edge_reach(const KpStrip& edge, const KpStrip* inner, double ds) {
   return std::min(ds, ds * outer2 / fall);
 }
 
+bool touches(const KpStrip& strip) {
+  return strip.x_lead > 0.0;
+}
+
+// The piece of the patch (a run of strips in contact) that holds O, or the one nearest to it.
+std::pair<std::size_t, std::size_t> piece_at_O(const KpPatch& patch, std::size_t first,
+                                               std::size_t last) {
+  const std::vector<KpStrip>& strips = patch.strips;
+  std::size_t best = first;
+  for (std::size_t k = first; k <= last; ++k)
+    if (touches(strips[k]) &&
+        std::abs(strips[k].s - patch.s_O) < std::abs(strips[best].s - patch.s_O))
+      best = k;
+  std::size_t lo = best, hi = best;
+  while (lo > first && touches(strips[lo - 1])) --lo;
+  while (hi < last && touches(strips[hi + 1])) ++hi;
+  return {lo, hi};
+}
+
+// The patch's edge on the side `dir` (+1: +s, -1: -s) [m]. The piece that holds O reaches to its
+// outermost strip's edge (edge_reach). A piece beyond strips out of contact moves the edge
+// outwards by the share d / (d + r) of its own reach, with d its deepest x_lead^2 and r the
+// largest opening of the strips between it and the piece of O: a piece that appears or vanishes
+// (d = 0) adds nothing and one that is about to join (r = 0) adds all of its reach, so the edge,
+// the SDEC and the creep forces stay continuous as a worn tread's separate bands come into
+// contact and leave it.
+double lateral_edge(const KpPatch& patch, std::size_t first, std::size_t last, int dir) {
+  const std::vector<KpStrip>& strips = patch.strips;
+  const auto [lo, hi] = piece_at_O(patch, first, last);
+  const auto step = [dir](std::size_t k) { return dir > 0 ? k + 1 : k - 1; };
+  const auto outer_edge = [&](std::size_t from, std::size_t to) {  // `to`: the outermost strip
+    const KpStrip* inner = from != to ? &strips[dir > 0 ? to - 1 : to + 1] : nullptr;
+    return strips[to].s + dir * edge_reach(strips[to], inner, patch.ds);
+  };
+  const std::size_t end = dir > 0 ? last : first;
+  double edge = dir > 0 ? outer_edge(lo, hi) : outer_edge(hi, lo);
+  std::size_t k = dir > 0 ? hi : lo;
+  double opening = 0.0;
+  while (k != end) {
+    k = step(k);
+    if (!touches(strips[k])) {
+      opening = std::max(opening, strips[k].opening);
+      continue;
+    }
+    const std::size_t from = k;
+    double deepest = strips[k].x_lead * strips[k].x_lead;
+    while (k != end && touches(strips[step(k)])) {
+      k = step(k);
+      deepest = std::max(deepest, strips[k].x_lead * strips[k].x_lead);
+    }
+    const double share = deepest / (deepest + opening);
+    edge += share * (outer_edge(from, k) - edge);
+  }
+  return edge;
+}
+
 }  // namespace
 
 PatchMeasures measure_patch(const KpPatch& patch) {
@@ -108,13 +165,8 @@ PatchMeasures measure_patch(const KpPatch& patch) {
   }
   require(first < patch.strips.size(), "patch.strips", static_cast<double>(patch.strips.size()),
           "no strip of the patch is in contact");
-  const std::vector<KpStrip>& strips = patch.strips;
-  const double y_min =
-      strips[first].s -
-      edge_reach(strips[first], first + 1 <= last ? &strips[first + 1] : nullptr, patch.ds);
-  const double y_max =
-      strips[last].s +
-      edge_reach(strips[last], last >= first + 1 ? &strips[last - 1] : nullptr, patch.ds);
+  const double y_min = lateral_edge(patch, first, last, -1);
+  const double y_max = lateral_edge(patch, first, last, +1);
   PatchMeasures m;
   m.area = 2.0 * patch.ds * area_over_2ds;
   m.centroid_x = 0.0;

@@ -2,14 +2,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 
+#include "blended_minimum.hpp"
 #include "wheelwear/contactgeom/sdec_regularisation.hpp"
 
 namespace wheelwear::contactgeom::detail {
 
 Run with_minimum(const GapSamples& g, std::size_t first, std::size_t last) {
-  const GapMinimum m = refined_minimum(g, first, last);
-  return Run{first, last, m.y, m.h};
+  // Neighbours only from the same window: windows are sampled apart.
+  const auto gap = [&g, window = g.window[first]](std::ptrdiff_t j) {
+    const auto k = static_cast<std::size_t>(j);
+    return j < 0 || k >= g.h.size() || g.window[k] != window
+               ? std::numeric_limits<double>::infinity()
+               : g.h[k];
+  };
+  const BlendedMinimum m =
+      blended_minimum(gap, static_cast<std::ptrdiff_t>(first), static_cast<std::ptrdiff_t>(last));
+  return Run{first, last, g.y[first] + (m.index - static_cast<double>(first)) * g.dy, m.h};
 }
 
 namespace {

@@ -142,6 +142,52 @@ TEST(PatchMeasures, WidthIsContinuousAsStripsComeIntoContact) {
   EXPECT_EQ(compared, 301);
 }
 
+// A worn tread's patch: a main piece around O and, four strips out of contact away, a band of
+// one strip that comes into contact and leaves it. Its reach enters the width with the share
+// d / (d + r), d its x_lead^2, r the largest opening of the strips between: nothing as it
+// vanishes, all of it as the opening closes (the strips would join), so the width moves
+// continuously where the staircase jumps by the five strips.
+TEST(PatchMeasures, AnOuterBandEntersTheWidthContinuously) {
+  const double ds = 1e-4;
+  const auto patch = [ds](double band_x_lead, double opening) {
+    KpPatch p;
+    p.ds = ds;
+    p.s_O = 0.0;
+    for (int k = -3; k <= 3; ++k) {
+      const double x = 1e-3 * (4.0 - std::abs(k));  // the main piece, x_lead^2 not parabolic
+      p.strips.push_back({k * ds, x, 1e9 * x});
+    }
+    for (int k = 4; k <= 7; ++k) p.strips.push_back({k * ds, 0.0, 0.0, opening});
+    p.strips.push_back({8 * ds, band_x_lead, 1e9 * band_x_lead});
+    return p;
+  };
+  KpPatch main_only = patch(1.0, 0.0);
+  main_only.strips.resize(7);
+  // Symmetric, its edges a third of a strip beyond the outer strips: (1/(4 - 1)) ds.
+  const double main_width = measure_patch(main_only).width;
+  EXPECT_NEAR(main_width, (6.0 + 2.0 / 3.0) * ds, 1e-15);
+  const double main_edge = 0.5 * main_width;
+  const double band_edge = 8.5 * ds;  // a lone strip reaches half a strip
+  const double r = 4e-8;              // opening [m^2]: an x_lead 0.2 mm short of touching
+  double previous = main_width;
+  int compared = 0;
+  for (int step = 1; step <= 100; ++step) {
+    const double x = 0.5e-3 * step / 100.0;  // the band's x_lead: 5 um ... 0.5 mm
+    const double w = measure_patch(patch(x, r)).width;
+    const double share = x * x / (x * x + r);
+    EXPECT_NEAR(w, main_edge + share * (band_edge - main_edge) + main_edge, 1e-15);
+    // Continuous: d(share)/dx peaks at 3.25 per mm (x = sqrt(r/3)); times the band's reach of
+    // 0.52 mm and a step of 5 um, 8.4 um, where the staircase jumps by the whole 0.52 mm.
+    EXPECT_LT(std::abs(w - previous), 10e-6) << "x_lead " << x;
+    previous = w;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 100);
+  // An unknown opening (0: strips built by hand, or a patch interpolated from a table) keeps the
+  // whole staircase extent, as before.
+  EXPECT_NEAR(measure_patch(patch(1e-4, 0.0)).width, main_edge + band_edge, 1e-15);
+}
+
 TEST(PatchMeasures, RejectsDegenerateInput) {
   EXPECT_THROW(measure_polygons({}, 0.0), InputError);
   EXPECT_THROW(measure_polygons({{{0.0, 0.0}, {1.0, 0.0}}}, 0.0), InputError);

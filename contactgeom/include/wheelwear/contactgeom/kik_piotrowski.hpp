@@ -81,6 +81,10 @@ struct KpStrip {
   double s = 0.0;       ///< lateral position of the strip centre [m]
   double x_lead = 0.0;  ///< leading edge [m] >= 0; the trailing edge is -x_lead; 0: no contact
   double p_peak = 0.0;  ///< pressure at x = 0 [Pa]
+  /// A strip out of contact between two pieces of a patch: how far its gap stays above the
+  /// virtual penetration level, over A(s): the x_lead^2 it lacks [m^2]. 0 in contact (or not
+  /// known), > 0 otherwise.
+  double opening = 0.0;
   /// Pressure p(x) = p_peak sqrt(1 - x^2/x_lead^2) [Pa] at x [m]; 0 outside the strip's edges.
   double pressure(double x) const;
   /// Normal line load int p dx = pi/2 p_peak x_lead [N/m].

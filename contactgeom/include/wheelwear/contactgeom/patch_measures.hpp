@@ -43,7 +43,10 @@ PatchMeasures measure_polygons(const std::vector<PatchRing>& rings, double y_O);
 /// in contact on each side, falls to zero (within one strip beyond the outer strip's centre;
 /// half a strip, as the staircase outline, for a one-strip side): it moves continuously as a
 /// strip comes into contact, so the SDEC and the creep forces are continuous in the wheelset's
-/// position, which Newton's method on a vehicle's balance needs.
+/// position, which Newton's method on a vehicle's balance needs. A piece of the patch beyond
+/// strips out of contact (a worn tread's separate band) moves the edge from the piece that
+/// holds O by the share d / (d + r) of its reach, d its deepest x_lead^2 and r the largest
+/// KpStrip::opening between them: nothing as it appears or vanishes, all of it as the two join.
 /// Throws InputError when no strip of the patch is in contact.
 PatchMeasures measure_patch(const KpPatch& patch);
 
