@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <utility>
 
 #include "wheel_rail_gap.hpp"
@@ -69,8 +71,40 @@ const char* status_name(WheelRailStatus status) {
 
 namespace detail {
 
+namespace {
+
+// How far a flank steeper than the touch's limit may overlap its rail, along its normal, before
+// the wheel is taken to touch there after all [m]: at 0.5 mm of approach a Hertzian flank contact
+// (relative radius 10-100 mm) carries 150-500 kN, beyond any curve's lateral force.
+constexpr double kSteepOverlap = 0.5e-3;
+
+// The lowest local minimum of the sampled gap whose contact angle is below `steepest`, unless the
+// lowest sample overlaps it by more than kSteepOverlap; the lowest sample otherwise.
+std::size_t lowest_touch(const WheelRailGap& geometry, const GapSamples& g, double steepest) {
+  std::size_t k = 0;
+  for (std::size_t j = 0; j < g.h.size(); ++j)
+    if (g.h[j] < g.h[k]) k = j;
+  if (std::isinf(steepest)) return k;
+  const double angle = geometry.contact_angle(g.y[k]);
+  if (angle < steepest) return k;
+  const auto neighbour = [&g](std::size_t j, std::size_t i) {
+    return i < g.h.size() && g.window[i] == g.window[j] ? g.h[i]
+                                                        : std::numeric_limits<double>::infinity();
+  };
+  std::size_t best = g.h.size();
+  for (std::size_t j = 0; j < g.h.size(); ++j) {
+    if (best < g.h.size() && !(g.h[j] < g.h[best])) continue;
+    const bool minimum = (j == 0 || neighbour(j, j - 1) > g.h[j]) && neighbour(j, j + 1) >= g.h[j];
+    if (minimum && geometry.contact_angle(g.y[j]) < steepest) best = j;
+  }
+  if (best == g.h.size() || (g.h[best] - g.h[k]) * std::cos(angle) > kSteepOverlap) return k;
+  return best;
+}
+
+}  // namespace
+
 WheelRailTouch first_touch_at(const WheelRailPair& pair, const WheelsetPose& pose,
-                              const WheelRailOptions& options, double gauge_y) {
+                              const WheelRailOptions& options, double gauge_y, double steepest) {
   WheelRailTouch touch;
   const WheelRailGap geometry(pair, pose, options, gauge_y);
   thread_local CoarseScan coarse;
@@ -80,9 +114,7 @@ WheelRailTouch first_touch_at(const WheelRailPair& pair, const WheelsetPose& pos
   // the first margin of the coarse minimum (the dip argument of kFirstMargin) are refined.
   geometry.sample(coarse, std::min(options.scan_margin, kFirstMargin), g, true);
   if (g.h.empty()) return touch;
-  std::size_t k = 0;
-  for (std::size_t j = 0; j < g.h.size(); ++j)
-    if (g.h[j] < g.h[k]) k = j;
+  const std::size_t k = lowest_touch(geometry, g, steepest);
   const GapMinimum m = refined_minimum(g, k, k);
   touch.found = true;
   touch.gap = m.h;

@@ -270,11 +270,18 @@ WheelsetContact solve_wheelset(const WheelsetOnTrack& track, const WheelsetState
   // above the right one, minus what the rails ask for. Sets `touch` false without contact.
   bool touch = true;
   double centre = 0.0, centre_roll = std::numeric_limits<double>::quiet_NaN();
+  // A wheel rests on the lowest of its gap's minima whose contact is less steep than
+  // atan(D / r): on a steeper flank (a worn one; a new S1002's is 1.22 rad) lifting the wheel by
+  // the roll pushes the flank into its rail faster than it rises, so a rigid wheelset has no
+  // roll that touches there and the next one lies millimetres up the flank. Such a flank is
+  // met by the contact's approach instead, its load rising continuously with the shift.
+  const double steepest_left = std::atan(D / at.r_left);
+  const double steepest_right = std::atan(D / at.r_right);
   auto residual = [&](double roll) {
     const WheelRailTouch l = detail::first_touch_at(track.left, at.left(state, roll, shift_left),
-                                                    options, at.gauge_left);
+                                                    options, at.gauge_left, steepest_left);
     const WheelRailTouch r = detail::first_touch_at(track.right, at.right(state, roll, shift_right),
-                                                    options, at.gauge_right);
+                                                    options, at.gauge_right, steepest_right);
     ++out.touch_evaluations;
     touch = l.found && r.found;
     if (!touch) return 0.0;

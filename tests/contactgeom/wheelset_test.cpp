@@ -7,7 +7,9 @@
 
 #include <cmath>
 
+#include "support/csv_table.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 #include "wheelwear/profiles/track.hpp"
@@ -177,6 +179,44 @@ TEST(Wheelset, InitialContactPointMovesContinuouslyWhereTwoMinimaCross) {
   EXPECT_EQ(compared, 300);
   EXPECT_GT(highest - lowest, 5e-3);  // O does cross the patch within the sweep
   EXPECT_LT(largest, 1e-3) << "largest move of O per um of shift";
+}
+
+// A worn wheel whose flank wore to 1.46 rad (tests/data/profiles/s1002_worn_33200km.csv), past
+// atan(D / r) = 1.27 rad: lifting that wheel by the roll pushes its flank into the rail faster
+// than it rises, so no roll puts it on its flank continuously. The roll of the lowest touch
+// jumped at dy = 6.467 mm from -0.42 to -6.0 mrad (the wheel 4.5 mm up its flank) and the left
+// wheel's lateral force from 13 to 107 kN within 1.5 um. Resting on its tread, the flank met
+// by the approach, the wheel's lateral force rises continuously onto the flank: at most a
+// tenth of that jump per um, while it more than triples over the sweep.
+TEST(Wheelset, ASteepWornFlankTakesItsLoadContinuously) {
+  profiles::LoadOptions options;
+  options.read.body = profiles::Body::wheel;
+  const profiles::Profile worn =
+      profiles::load_profile(testing::test_data("profiles/s1002_worn_33200km.csv"), options)
+          .profile;
+  const WheelRailPair pair(worn, profiles::rail_60e1({.inclination = std::atan(1.0 / 40.0)}));
+  const WheelsetOnTrack t{pair, pair};
+  double previous_roll = std::nan(""), previous_Y = 0.0, first_Y = 0.0, last_Y = 0.0;
+  double largest_roll = 0.0, largest_Y = 0.0;
+  int compared = 0;
+  for (int step = 0; step <= 100; ++step) {
+    const WheelsetContact c = solve_wheelset(t, loaded(6.42e-3 + step * 1e-6));
+    ASSERT_TRUE(c.roll_converged) << c.message;
+    const double Y = c.left.lateral_force;
+    if (step == 0) first_Y = Y;
+    last_Y = Y;
+    if (std::isfinite(previous_roll)) {
+      largest_roll = std::max(largest_roll, std::abs(c.roll - previous_roll));
+      largest_Y = std::max(largest_Y, std::abs(Y - previous_Y));
+      ++compared;
+    }
+    previous_roll = c.roll;
+    previous_Y = Y;
+  }
+  EXPECT_EQ(compared, 100);
+  EXPECT_LT(largest_roll, 1e-5);  // the jump was 5.6e-3 rad
+  EXPECT_LT(largest_Y, 9.4e3);    // the jump was 94 kN
+  EXPECT_GT(last_Y, 3.0 * first_Y);
 }
 
 TEST(WheelsetInput, RejectsBadStatesAndMismatchedPairs) {

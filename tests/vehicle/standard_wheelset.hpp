@@ -10,11 +10,11 @@
 
 namespace wheelwear::vehicle::testing {
 
-inline WheelsetModel standard_wheelset() {
+// `wheel` (default: a new S1002) on the default track.
+inline WheelsetModel standard_wheelset(const profiles::Profile& wheel = profiles::s1002()) {
   profiles::Rail60E1Options rail_options;
   rail_options.inclination = 0.025;
   const profiles::Profile rail = profiles::rail_60e1(rail_options);
-  const profiles::Profile wheel = profiles::s1002();
   WheelsetModel model{
       {contactgeom::WheelRailPair(wheel, rail), contactgeom::WheelRailPair(wheel, rail)}};
   for (contactgeom::WheelRailPair* p : {&model.track.left, &model.track.right}) {

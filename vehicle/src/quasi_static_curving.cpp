@@ -259,12 +259,22 @@ class CurvingProblem {
                        [](const CurvingWheelset& w) { return w.forces.loads_met; });
   }
 
+  // A wheel whose contact has passed its flank's steepest point has derailed: a balance there
+  // (the rail pushing the wheel on over its flange) is no state of the vehicle in the curve.
+  static bool derailed(const Evaluation& e) {
+    return std::any_of(e.wheelsets.begin(), e.wheelsets.end(), [](const CurvingWheelset& w) {
+      return std::any_of(w.forces.wheels.begin(), w.forces.wheels.end(), [](const WheelForces& f) {
+        return f.status == contactgeom::WheelRailStatus::past_flange;
+      });
+    });
+  }
+
   // Newton from `u`; true when converged. `u` and `e` hold the last iterate.
   bool solve(Vector& u, Evaluation& e, int& iterations, std::string& message) const {
     e = evaluate(u);
     for (int it = 0; it < options_.max_iterations; ++it) {
       const Vector size = scaled(e);
-      if (size.cwiseAbs().maxCoeff() <= 1.0 && loads_met(e)) return true;
+      if (size.cwiseAbs().maxCoeff() <= 1.0 && loads_met(e) && !derailed(e)) return true;
       ++iterations;
       const Matrix Jm = jacobian(u, e);
       Vector delta = Jm.fullPivLu().solve(-e.residual);
@@ -281,7 +291,8 @@ class CurvingProblem {
         } catch (const InputError&) {
           return false;  // a shift beyond the profiles: a shorter step
         }
-        if (!(scaled(trial).norm() < size.norm())) return false;
+        if (!(scaled(trial).norm() < size.norm()) || (derailed(trial) && !derailed(e)))
+          return false;
         u = t;
         e = std::move(trial);
         return true;
