@@ -93,7 +93,9 @@ bool touches(const KpStrip& strip) {
   return strip.x_lead > 0.0;
 }
 
-// The piece of the patch (a run of strips in contact) that holds O, or the one nearest to it.
+// The piece of the patch (a run of strips in contact) that holds O, or the one nearest to it
+// (O blended between two bands may lie between them; where it crosses the middle of the strips
+// between, the piece changes and the edges move by the bands' unshared reach).
 std::pair<std::size_t, std::size_t> piece_at_O(const KpPatch& patch, std::size_t first,
                                                std::size_t last) {
   const std::vector<KpStrip>& strips = patch.strips;
@@ -165,8 +167,10 @@ PatchMeasures measure_patch(const KpPatch& patch) {
   }
   require(first < patch.strips.size(), "patch.strips", static_cast<double>(patch.strips.size()),
           "no strip of the patch is in contact");
-  const double y_min = lateral_edge(patch, first, last, -1);
-  const double y_max = lateral_edge(patch, first, last, +1);
+  // O blended between two bands can lie in the strips between them (blended_minimum.hpp): the
+  // extent reaches half a strip beyond it at least, so that O stays inside the SDEC.
+  const double y_min = std::min(lateral_edge(patch, first, last, -1), patch.s_O - 0.5 * patch.ds);
+  const double y_max = std::max(lateral_edge(patch, first, last, +1), patch.s_O + 0.5 * patch.ds);
   PatchMeasures m;
   m.area = 2.0 * patch.ds * area_over_2ds;
   m.centroid_x = 0.0;

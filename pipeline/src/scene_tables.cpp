@@ -19,6 +19,7 @@ std::map<std::string, KeyHandler> time_domain_keys(const std::function<TimeDomai
              static_cast<std::uint64_t>(integer(n, k, 0, std::numeric_limits<int>::max(),
                                                 "the base seed of the generated irregularities"));
        }},
+      {"redraw", [=](const auto& n, const auto& k) { keys().redraw = boolean(n, k); }},
       {"tangent_length_m",
        [=](const auto& n, const auto& k) {
          keys().tangent_length =

@@ -284,6 +284,13 @@ RoutePlan route_plan(const VehicleRun& run) {
   return plan;
 }
 
+void redraw_pieces(std::vector<DynamicPiece>& pieces, const VehicleRun& run, std::uint64_t draw) {
+  const std::uint64_t sections = run.route.sections.size();
+  for (DynamicPiece& p : pieces)
+    p.seed = vehicle::seed_for_section(
+        run.time_domain.seed, draw * 2 * sections + (p.reversed ? sections : 0) + p.section);
+}
+
 void mark_wheelset(WheelsetStateSpec& state, int k, bool reversed) {
   state.wheelset = reversed ? vehicle::kWheelsets - 1 - k : k;
   state.reversed = reversed;
@@ -349,7 +356,7 @@ WheelsetStateSpec wheelset_state(const RouteCase& route_case,
 
 VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKernel& kernel,
                                            const std::vector<const profiles::Profile*>& wheels,
-                                           const VehicleCollective* previous) {
+                                           const VehicleCollective* previous, std::uint64_t draw) {
   require(wheels.size() == 1 || wheels.size() == 2 || wheels.size() == 2 * vehicle::kWheelsets,
           "worn wheel profiles", static_cast<double>(wheels.size()),
           "give one (shared), two (left, right) or eight (left and right of each wheelset)");
@@ -357,6 +364,7 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
   RoutePlan plan = route_plan(run);
   out.cases = std::move(plan.cases);
   out.pieces = std::move(plan.pieces);
+  if (run.time_domain.redraw) redraw_pieces(out.pieces, run, draw);
   if (previous)
     require(previous->curving.size() == out.cases.size(), "previous solution's cases",
             static_cast<double>(previous->curving.size()), "must be the route's");

@@ -65,11 +65,13 @@ struct LoopStart {
 };
 
 // Solves the vehicle again when the wear since its last solve reaches the scene's depth (at
-// every step for depth 0). Returns whether it solved.
+// every step for depth 0), at wear step `step`. Returns whether it solved.
 bool update_vehicle(const VehicleRun& run, const StateKernel& kernel,
-                    const std::vector<const profiles::Profile*>& wheels, VehicleCarry& carry) {
+                    const std::vector<const profiles::Profile*>& wheels, int step,
+                    VehicleCarry& carry) {
   if (carry.solved && carry.depth_since_solve < run.resolve_depth) return false;
-  carry.last = solve_vehicle_collective(run, kernel, wheels, carry.solved ? &carry.last : nullptr);
+  carry.last = solve_vehicle_collective(run, kernel, wheels, carry.solved ? &carry.last : nullptr,
+                                        static_cast<std::uint64_t>(step));
   carry.depth_since_solve = 0.0;
   carry.solved = true;
   return true;
@@ -183,7 +185,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     for (const auto& w : wheels) pointers.push_back(&w);
     bool vehicle_solved = false;
     if (scene.vehicle_run) {
-      vehicle_solved = update_vehicle(*scene.vehicle_run, evaluator.kernel(), pointers, carry);
+      vehicle_solved =
+          update_vehicle(*scene.vehicle_run, evaluator.kernel(), pointers, step, carry);
       if (vehicle_solved) ++summary.vehicle_solves;
     }
     // The profiles' in-service parameters and limits, known before the step's states: a step

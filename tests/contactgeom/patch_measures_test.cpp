@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "wheelwear/contactgeom/hertz.hpp"
+#include "wheelwear/contactgeom/sdec_regularisation.hpp"
 #include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
@@ -186,6 +187,25 @@ TEST(PatchMeasures, AnOuterBandEntersTheWidthContinuously) {
   // An unknown opening (0: strips built by hand, or a patch interpolated from a table) keeps the
   // whole staircase extent, as before.
   EXPECT_NEAR(measure_patch(patch(1e-4, 0.0)).width, main_edge + band_edge, 1e-15);
+}
+
+// O blended between two bands (blended_minimum.hpp) can lie in the strips out of contact
+// between them. The extent then still reaches half a strip beyond O on its far side, so that
+// O lies inside the SDEC (a run of the example scene stopped on W1 < 0 here).
+TEST(PatchMeasures, OBetweenTwoBandsStaysInsideThePatch) {
+  const double ds = 1e-4;
+  KpPatch p;
+  p.ds = ds;
+  p.s_O = 0.5 * ds;  // in the middle of the two strips out of contact
+  for (int k = -3; k <= 3; ++k) {
+    const double x = k == 0 || k == 1 ? 0.0 : 1e-3;
+    p.strips.push_back({k * ds, x, 1e9 * x, x > 0.0 ? 0.0 : 1e-5});  // 10 x the bands x_lead^2
+  }
+  const PatchMeasures m = measure_patch(p);
+  EXPECT_GE(m.W1, 0.5 * ds);
+  EXPECT_GE(m.W2, 0.5 * ds);
+  const Sdec sdec = regularise_sdec(m);
+  EXPECT_LT(std::abs(sdec.psi), 1.0);
 }
 
 TEST(PatchMeasures, RejectsDegenerateInput) {

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <stdexcept>
 
 #include "short_route.hpp"
@@ -226,6 +227,10 @@ TEST(VehicleScene, KeysAndTheirErrors) {
   EXPECT_FALSE(parse_scene("[vehicle]\nfile = \"default\"\ncontact_table = false\n" + route, {})
                    .vehicle_run->contact_table);
   EXPECT_EQ(s.vehicle_run->route.sections.size(), 29u);
+  EXPECT_FALSE(s.vehicle_run->time_domain.redraw);
+  EXPECT_TRUE(
+      parse_scene("[vehicle]\nfile = \"default\"\n" + route + "[time_domain]\nredraw = true\n", {})
+          .vehicle_run->time_domain.redraw);
   const auto message = [](const std::string& text) {
     try {
       parse_scene(text, {});
@@ -249,6 +254,9 @@ TEST(VehicleScene, KeysAndTheirErrors) {
                 .find("give one"),
             std::string::npos);
   EXPECT_NE(message("title = \"x\"\n").find("[vehicle] file"), std::string::npos);
+  EXPECT_NE(message("[vehicle]\nfile = \"default\"\n" + route + "[time_domain]\nredraw = 1\n")
+                .find("redraw"),
+            std::string::npos);
 }
 
 class VehicleRunTest : public WearRunTest {
@@ -315,6 +323,69 @@ TEST_F(VehicleRunTest, RecordsTheVehicleAndResumesToIdenticalResults) {
     ASSERT_FALSE(HasFatalFailure());
   }
   EXPECT_GT(compared, 1000);
+}
+
+// [time_domain] redraw: every solve draws its own track. Draw 0 is the plan's (a run without
+// redraw makes the same first step); later solves run the pieces over other tracks, so the
+// pieces' states differ from the fixed track's on the same profiles; and a killed run resumes to
+// the same file, each solve's track fixed by its step.
+TEST_F(VehicleRunTest, RedrawnTracksDifferAtEverySolveAndResumeIdentically) {
+  write("route.toml", kShortRoute);
+  const std::string pieces = "tangent_length_m = 20\nrun_in_m = 10\nsample_distance_m = 2\n";
+  const std::string text = vehicle_scene(2e3, 1e3, 0.0, pieces + "redraw = true\n");
+  const fs::path fixed = dir_ / "fixed.h5", redrawn = dir_ / "redrawn.h5";
+  const fs::path killed = dir_ / "killed.h5";
+  run(vehicle_scene(2e3, 1e3, 0.0, pieces), fixed);
+  run(text, redrawn);
+  const ResultsFile a = ResultsFile::read(fixed), b = ResultsFile::read(redrawn);
+  ASSERT_EQ(b.completed_steps(), 3);
+  // Step 0: the same track, the same states and wear.
+  EXPECT_EQ(a.read_step_array(0, "collective/dy_m"), b.read_step_array(0, "collective/dy_m"));
+  EXPECT_EQ(a.read_step_array(1, "wheel/z"), b.read_step_array(1, "wheel/z"));
+  // Step 1, on the same profiles: the curve's four states alike, the pieces' states not.
+  const auto dy_a = a.read_step_array(1, "collective/dy_m");
+  const auto dy_b = b.read_step_array(1, "collective/dy_m");
+  ASSERT_EQ(dy_a.size(), dy_b.size());
+  int differ = 0;
+  for (std::size_t i = 0; i < dy_a.size(); ++i) {
+    if (i < 4)
+      EXPECT_EQ(dy_a[i], dy_b[i]) << i;
+    else if (dy_a[i] != dy_b[i])
+      ++differ;
+  }
+  EXPECT_GT(differ, static_cast<int>(dy_a.size() - 4) / 2);
+
+  interrupted_then_resumed(text, killed);
+  ASSERT_FALSE(HasFatalFailure());
+  const ResultsFile res = ResultsFile::read(killed);
+  ASSERT_EQ(res.completed_steps(), 3);
+  int compared = 0;
+  for (int step = 0; step < 3; ++step) {
+    expect_same_arrays(b, res, step, "", compared);
+    ASSERT_FALSE(HasFatalFailure());
+  }
+  EXPECT_GT(compared, 1000);
+}
+
+TEST(RedrawPieces, DrawZeroIsThePlansAndNoTwoDrawsShareATrack) {
+  VehicleRun run = short_route_run();
+  run.time_domain.enabled = true;
+  run.direction = RunningDirection::both;
+  const RoutePlan plan = route_plan(run);
+  ASSERT_GE(plan.pieces.size(), 4u);  // both ways
+  std::vector<DynamicPiece> pieces = plan.pieces;
+  redraw_pieces(pieces, run, 0);
+  std::set<std::uint64_t> seeds;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    EXPECT_EQ(pieces[i].seed, plan.pieces[i].seed) << i;
+    seeds.insert(pieces[i].seed);
+  }
+  for (std::uint64_t draw = 1; draw <= 3; ++draw) {
+    pieces = plan.pieces;
+    redraw_pieces(pieces, run, draw);
+    for (const DynamicPiece& p : pieces) seeds.insert(p.seed);
+  }
+  EXPECT_EQ(seeds.size(), 4 * plan.pieces.size());
 }
 
 TEST_F(VehicleRunTest, ResolvesOnlyOnceTheWearReachesTheDepth) {

@@ -110,7 +110,11 @@ struct TimeDomainKeys {
   vehicle::TrackIrregularities measured;  ///< the record when irregularities is file
   std::string irregularity_file;          ///< its resolved path, else empty
   std::uint64_t seed = 1;                 ///< base seed; each section draws its own from it
-  double tangent_length = 200.0;          ///< simulated stretch of each tangent [m]
+  /// Generated irregularities drawn anew at every solve of the vehicle (seeded per section and
+  /// per wear step), so that over a run's solves the tangents' wear averages over many
+  /// stretches of the random track; false: the same track at every solve.
+  bool redraw = false;
+  double tangent_length = 200.0;  ///< simulated stretch of each tangent [m]
   /// Transitions simulated in time, whole; false: each a quasi-static condition at its
   /// midpoint's curvature and cant, as with enabled = false.
   bool simulate_transitions = true;

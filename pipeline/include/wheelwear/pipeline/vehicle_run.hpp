@@ -164,11 +164,18 @@ struct VehicleCollective {
 /// critical speed (searched from the previous solution's where there is one). With `previous` (the
 /// same route's solution on earlier profiles) each case starts where it was, and is not solved
 /// afresh where that fails: a case that converged then keeps that solution (counted in `kept`),
-/// one that did not goes on from its last iterate. Deterministic for any number of threads.
-/// Throws InputError on bad input.
+/// one that did not goes on from its last iterate. `draw`: the wear step the vehicle is solved
+/// at; with TimeDomainKeys::redraw the pieces' generated irregularities are that step's
+/// (redraw_pieces). Deterministic for any number of threads. Throws InputError on bad input.
 VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKernel& kernel,
                                            const std::vector<const profiles::Profile*>& wheels,
-                                           const VehicleCollective* previous = nullptr);
+                                           const VehicleCollective* previous = nullptr,
+                                           std::uint64_t draw = 0);
+
+/// The pieces' seeds of draw `draw` (TimeDomainKeys::redraw): each piece's section in its
+/// direction (sections + i running backwards), 2 sections further on per draw, so that no two
+/// draws or directions share a track; draw 0 is route_plan's.
+void redraw_pieces(std::vector<DynamicPiece>& pieces, const VehicleRun& run, std::uint64_t draw);
 
 /// The contact look-up table of `model` the run interpolates from (VehicleRun::contact_table):
 /// the default grid (contactgeom::WheelsetTableOptions), its loads from a quarter to three times
