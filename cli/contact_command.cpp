@@ -217,7 +217,9 @@ void run_contact(const ContactArgs& args) {
       }
     }
   }
-  if (!contactgeom::carries_load(contact.status)) {
+  // A status other than ok is no usable answer: what was computed is printed, and the command
+  // fails with exit status 3 (docs/cli.md).
+  if (contact.status != contactgeom::WheelRailStatus::ok) {
     throw std::runtime_error(std::string("contact ") + contactgeom::status_name(contact.status) +
                              (contact.message.empty() ? "" : ": " + contact.message));
   }

@@ -7,9 +7,11 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #include "commands.hpp"
 #include "json_writer.hpp"
+#include "output_path.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/scene.hpp"
@@ -129,7 +131,7 @@ void print_text(const vehicle::VehicleCurving& c, const vehicle::SteadyCurve& cu
 
 void export_vehicle(const CurvingArgs& args) {
   const std::filesystem::path dir(args.export_vehicle);
-  std::filesystem::create_directories(dir);
+  make_output_folder(dir, "--export-default-vehicle");
   const std::filesystem::path file = dir / "vehicle.toml";
   if (std::filesystem::exists(file) && !args.overwrite)
     throw InputError("--export-default-vehicle: " + file.string() +
@@ -182,7 +184,9 @@ void curving(const CurvingArgs& args) {
       std::printf("contact table: %zu shifts x %zu loads, %d contact solves, built in %.2f s\n",
                   table->shifts, table->load_levels, table->contact_solves, table->seconds);
   }
-  if (!c.converged) throw InputError("curving did not converge: " + c.message);
+  // Computed but no balance: the last iterate is printed, and the command fails with exit
+  // status 3 (docs/cli.md).
+  if (!c.converged) throw std::runtime_error("curving did not converge: " + c.message);
 }
 
 }  // namespace

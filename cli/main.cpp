@@ -5,14 +5,18 @@
 #include <iostream>
 #include <string>
 
+#include "build_commit.hpp"
 #include "commands.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/version.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
       "wheelwear: railway wheel profile wear prediction with non-elliptic (SDEC) contact.\n"
       "All inputs and outputs are SI (m, N, Pa, 1/m) unless a flag says otherwise.\n"
       "Run `wheelwear COMMAND --help` for the options of a command."};
+  app.set_version_flag("--version", std::string("wheelwear ") + wheelwear::core::version() +
+                                        " (commit " + wheelwear::cli::build_commit() + ")");
   app.require_subcommand(1);
   // A repeated option takes its last value, as in most command-line tools (scripts append
   // overrides).
@@ -40,10 +44,17 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error);
+    // --help and --version end the parse with success; every other parse error is bad usage.
+    if (error.get_exit_code() == 0) return app.exit(error);
+    std::cerr << "wheelwear: error: " << error.what()
+              << "\nRun with --help for more information.\n";
+    return 2;
   } catch (const wheelwear::InputError& error) {
     std::cerr << "wheelwear: error: " << error.what() << '\n';
     return 2;
+  } catch (const wheelwear::IoError& error) {
+    std::cerr << "wheelwear: error: " << error.what() << '\n';
+    return 4;
   } catch (const std::exception& error) {
     std::cerr << "wheelwear: failed: " << error.what() << '\n';
     return 3;

@@ -14,6 +14,7 @@
 
 #include "commands.hpp"
 #include "json_writer.hpp"
+#include "output_path.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/profiles/columns_format.hpp"
 #include "wheelwear/profiles/internal_face.hpp"
@@ -34,7 +35,7 @@ struct ProfileArgs {
   std::string gauge_side = "auto";
   std::string origin{pr::to_string(pr::LoadOptions{}.origin)};
   std::optional<double> taping_line_distance;
-  bool info = false, json = false;
+  bool info = false, json = false, overwrite = false;
   double spacing = 0.5e-3;
   double smoothing = 0.3e-3;
   double max_drop = 0.2;
@@ -148,6 +149,7 @@ std::string ratio(double angle) {
 }
 
 void run_profile(const ProfileArgs& args) {
+  refuse_existing(args.out, "--out", args.overwrite);
   const pr::LoadedProfile loaded = make_profile(args);
   const pr::Profile& profile = loaded.profile;
   const pr::PointList points = profile.resample(args.spacing);
@@ -324,7 +326,8 @@ void add_profile_command(CLI::App& app) {
       "with --origin (auto decides from the profile's extent).\n"
       "Files: plain y z text/CSV (header optional), SIMPACK/CONTACT .prw/.prr, MiniProf\n"
       ".whl/.ban (not .mpt). Bad input gives a message naming file, line and problem, and exit\n"
-      "code 2; an existing --out file is only ever replaced by a complete new one.\n"
+      "code 2; an existing --out file is replaced only with --overwrite, and then only by a\n"
+      "complete new one.\n"
       "A rail file refused whole is cropped to --crop-depth below its top and tried again;\n"
       "--info reports what the reading accepted, the crop, the estimated rail inclination\n"
       "and warnings.\n"
@@ -336,6 +339,7 @@ void add_profile_command(CLI::App& app) {
   cmd->add_option("--rail", args->rail, "60E1 (UIC60 head, EN 15302 arcs) or a rail profile file");
   cmd->add_option("--out", args->out,
                   "write the cleaned, resampled profile as CSV: header y_mm,z_mm, values in mm");
+  cmd->add_flag("--overwrite", args->overwrite, "replace an existing --out file");
   cmd->add_flag("--info", args->info,
                 "print a summary: points kept/dropped, y range, curvature extremes, and Sh, Sd,\n"
                 "qR (EN 15313) for wheels (the default when --out is not given)");

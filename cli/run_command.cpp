@@ -12,12 +12,15 @@
 #include <string>
 #include <vector>
 
+#include "build_commit.hpp"
 #include "commands.hpp"
 #include "json_writer.hpp"
+#include "output_path.hpp"
 #include "stop_message.hpp"
 #include "thread_limit.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
+#include "wheelwear/core/version.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/pipeline/wear_run.hpp"
@@ -203,15 +206,18 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
   }
   std::printf("wrote %s: %d wear steps, %.1f km\n", output.c_str(), last,
               at(last, "distance") / 1e3);
-  std::printf("  %-22s %10s %10s\n", "", "start", "end");
-  std::printf("  %-22s %10.2f %10.2f\n", "Sh [mm]", at(0, wheel + "/Sh") * 1e3,
-              at(last, wheel + "/Sh") * 1e3);
-  std::printf("  %-22s %10.2f %10.2f\n", "Sd [mm]", at(0, wheel + "/Sd") * 1e3,
-              at(last, wheel + "/Sd") * 1e3);
-  std::printf("  %-22s %10.2f %10.2f\n", "qR [mm]", at(0, wheel + "/qR") * 1e3,
-              at(last, wheel + "/qR") * 1e3);
-  std::printf("  %-22s %10.4f %10.4f\n", "conicity (3 mm)", at(0, "equivalent_conicity"),
-              at(last, "equivalent_conicity"));
+  // The change in its own column, to the micrometre: a short run's change is far below the
+  // values' last digit.
+  std::printf("  %-22s %10s %10s %12s\n", "", "start", "end", "change");
+  for (const char* name : {"Sh", "Sd", "qR"}) {
+    const double start = at(0, wheel + "/" + name) * 1e3, end = at(last, wheel + "/" + name) * 1e3;
+    std::printf("  %-22s %10.3f %10.3f %+12.4f\n", (std::string(name) + " [mm]").c_str(), start,
+                end, end - start);
+  }
+  const double conicity_start = at(0, "equivalent_conicity");
+  const double conicity_end = at(last, "equivalent_conicity");
+  std::printf("  %-22s %10.4f %10.4f %+12.4f\n", "conicity (3 mm)", conicity_start, conicity_end,
+              conicity_end - conicity_start);
   std::printf("  %zu state evaluations in %.1f s (%.0f states/s, %zu contact geometries)\n",
               s.evaluations, s.elapsed, rate, s.geometry_solves);
   if (dropped.at("dropped_patches_weight") > 0.0) {
@@ -237,7 +243,7 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
 void run(const RunArgs& args) {
   if (!args.export_default.empty()) {
     const std::filesystem::path dir(args.export_default);
-    std::filesystem::create_directories(dir);
+    make_output_folder(dir, "--export-default-scene");
     for (const auto& [name, text] :
          {std::pair{"default.toml", pipeline::default_scene_text()},
           std::pair{"default_states.csv", pipeline::default_states_text()}}) {
@@ -253,6 +259,8 @@ void run(const RunArgs& args) {
   }
   const auto threads = thread_limit(args.threads);
   pipeline::RunOptions options;
+  options.program =
+      std::string("wheelwear ") + core::version() + " (commit " + build_commit() + ")";
   options.overwrite = args.overwrite;
   options.allow_hook = args.allow_hook;
   const bool quiet = args.quiet;
@@ -301,7 +309,15 @@ void add_run_command(CLI::App& app) {
       "Without SCENE the built-in default scene runs (S1002 on 60E1 1:40, 1000 states of a mixed\n"
       "line, 100 km); `wheelwear run --export-default-scene DIR` writes it out to start from.\n"
       "Each step is published atomically: a killed run keeps every finished step and continues\n"
-      "with --resume. Plots: scripts/plot_run.py FILE.");
+      "with --resume. Plots: scripts/plot_run.py FILE.\n"
+      "A scene (TOML, docs/scenes.md; every key has its unit in its name): [wheel] and [rail]\n"
+      "profiles, [contact] model and friction, [wear] law, [run] distance_m and step sizes, and\n"
+      "the states that wear the wheel: a [load_collective] (inline or a CSV file), or a\n"
+      "[vehicle] on a [route] whose own states the run solves on the current profiles.\n"
+      "Examples:\n"
+      "  wheelwear run -o run.h5                            the built-in scene\n"
+      "  wheelwear run data/scenes/vehicle_route.toml -o vehicle.h5 --threads 2\n"
+      "  wheelwear run --resume run.h5                      continue a killed run");
   cmd->add_option("scene", args->scene, "scene file (TOML); the built-in default when omitted")
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->output, "results file to write (HDF5)");

@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "contact_inputs.hpp"
 #include "json_writer.hpp"
+#include "output_path.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/tangential/contact_model.hpp"
 #include "wheelwear/wear/wear_distribution.hpp"
@@ -31,6 +32,7 @@ struct WearArgs {
   int cells = 50;
   std::string map;
   bool json = false;
+  bool overwrite = false;
 };
 
 // One model's wear of one patch.
@@ -126,7 +128,17 @@ void write_map(const std::string& path, const std::vector<std::vector<ModelWear>
   }
 }
 
+// A contact computed but not ok (a load jump, flange climb, past the flange): its wear is
+// printed, and the command fails with exit status 3 (docs/cli.md).
+void require_ok(const contactgeom::WheelRailContact& contact) {
+  if (contact.status == contactgeom::WheelRailStatus::ok) return;
+  throw std::runtime_error(std::string("contact ") + contactgeom::status_name(contact.status) +
+                           (contact.message.empty() ? "" : ": " + contact.message) +
+                           " (its wear is printed above)");
+}
+
 void run_wear(const WearArgs& args) {
+  refuse_existing(args.map, "--map", args.overwrite);
   require(args.in.motion.speed > 0.0 && std::isfinite(args.in.motion.speed), "--V",
           args.in.motion.speed, "the rolling speed must be positive (m/s)");
   require(args.cells >= 2 && args.cells <= 1000, "--cells", args.cells,
@@ -199,6 +211,7 @@ void run_wear(const WearArgs& args) {
         .add_raw("warnings", json_strings(warnings))
         .add_raw("patches", json_array(patches));
     std::cout << out.str() << '\n';
+    require_ok(contact);
     return;
   }
   std::printf("wear law %s, V = %g m/s\n", args.law.c_str(), args.in.motion.speed);
@@ -216,6 +229,7 @@ void run_wear(const WearArgs& args) {
                   wheel_y(wheel, w.summary.centroid_s) * 1e3, w.summary.band_width * 1e3);
     }
   }
+  require_ok(contact);
 }
 
 }  // namespace
@@ -242,6 +256,7 @@ void add_wear_command(CLI::App& app) {
   cmd->add_flag("--compare", args->compare, "all five contact models side by side");
   cmd->add_option("--cells", args->cells, "FASTSIM cells per direction")->capture_default_str();
   cmd->add_option("--map", args->map, "write the T gamma map and the depth distribution (CSV)");
+  cmd->add_flag("--overwrite", args->overwrite, "replace an existing --map file");
   cmd->add_flag("--json", args->json, "print one JSON object");
   cmd->callback([args] { run_wear(*args); });
 }

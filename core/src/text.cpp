@@ -120,6 +120,9 @@ std::string format_number(double value) {
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored))
+    throw InputError(path.string() + ": is a folder; give a file name");
   const std::filesystem::path folder =
       path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   // O_EXCL with a random name instead of mkstemp: the file gets the usual permissions (0666
@@ -139,9 +142,15 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
     fd = ::open(pattern.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0 && errno != EEXIST) break;
   }
-  if (fd < 0)
-    throw InputError(path.string() + ": cannot create a temporary file in " + folder.string() +
-                     ": " + std::strerror(errno));
+  if (fd < 0) {
+    const int error = errno;
+    // A folder that is not there is the input's fault; one that refuses the file, the system's.
+    if (error == ENOENT || error == ENOTDIR)
+      throw InputError(path.string() + ": the folder " + folder.string() +
+                       " does not exist; create it or choose another path");
+    throw IoError(path.string() + ": cannot create a temporary file in " + folder.string() + ": " +
+                  std::strerror(error));
+  }
   std::size_t written = 0;
   bool ok = true;
   while (written < content.size()) {
@@ -158,7 +167,7 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   if (ok) std::filesystem::rename(pattern, path, error);
   if (!ok || error) {
     std::filesystem::remove(pattern, error);
-    throw InputError(path.string() + ": cannot write the file (left unchanged)");
+    throw IoError(path.string() + ": cannot write the file (left unchanged)");
   }
 }
 

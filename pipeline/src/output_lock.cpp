@@ -55,7 +55,7 @@ OutputLock::OutputLock(const fs::path& output) : path_(lock_path(output)) {
       if (error == ENOTDIR)
         throw InputError("output " + output.string() + ": " + folder_of(output) +
                          " is not a folder; choose another output");
-      throw InputError("output " + output.string() + ": cannot write in the folder " +
+      throw IoError("output " + output.string() + ": cannot write in the folder " +
                        folder_of(output) + " (" + std::strerror(error) +
                        "); choose a writable folder");
     }
@@ -65,7 +65,7 @@ OutputLock::OutputLock(const fs::path& output) : path_(lock_path(output)) {
         const std::string pid = holder(fd_);
         ::close(fd_);
         fd_ = -1;
-        throw InputError("output " + output.string() + ": another run is writing it (process " +
+        throw IoError("output " + output.string() + ": another run is writing it (process " +
                          pid + ", lock " + path_.string() +
                          "); wait for it to end or choose another output");
       }
@@ -77,7 +77,7 @@ OutputLock::OutputLock(const fs::path& output) : path_(lock_path(output)) {
       }
       ::close(fd_);
       fd_ = -1;
-      throw InputError("output " + output.string() + ": cannot lock " + path_.string() + " (" +
+      throw IoError("output " + output.string() + ": cannot lock " + path_.string() + " (" +
                        std::strerror(error) + ")");
     }
     // The run that held the lock may have removed the file before this one locked it: only a

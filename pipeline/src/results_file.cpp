@@ -155,8 +155,8 @@ void write_new_atomically(const fs::path& path, const char* verb, Write write) {
     publish(partial, path);
   } catch (const H5::Exception& error) {
     fs::remove(partial);
-    throw std::runtime_error(std::string("cannot ") + verb + " " + path.string() + ": " +
-                             error.getDetailMsg());
+    throw IoError(std::string("cannot ") + verb + " " + path.string() + ": " +
+                  error.getDetailMsg());
   } catch (...) {
     fs::remove(partial);
     throw;
@@ -178,7 +178,7 @@ void change_atomically(const fs::path& path, Change change) {
   } catch (const H5::Exception& error) {
     // H5::Exception is not a std::exception: translate it, naming the file.
     fs::remove(partial);
-    throw std::runtime_error("cannot update " + path.string() + ": " + error.getDetailMsg());
+    throw IoError("cannot update " + path.string() + ": " + error.getDetailMsg());
   } catch (...) {
     fs::remove(partial);  // FILE keeps its last published state
     throw;
@@ -290,7 +290,7 @@ void ResultsFile::append_step(const GroupRecord& step) {
     H5::Group steps = file.openGroup("/steps");
     if (H5Lcreate_external(linked.c_str(), "/step", steps.getId(), step_digits(index).c_str(),
                            H5P_DEFAULT, H5P_DEFAULT) < 0)
-      throw std::runtime_error("cannot link " + linked + " into " + path_.string());
+      throw IoError("cannot link " + linked + " into " + path_.string());
     write_int_attribute(steps, "completed_steps", index + 1);
   });
   completed_steps_ = index + 1;
@@ -314,7 +314,7 @@ fs::path link_target(const H5::Group& group, const std::string& name, const fs::
   const char* object = nullptr;
   if (H5Lget_val(group.getId(), name.c_str(), value.data(), value.size(), H5P_DEFAULT) < 0 ||
       H5Lunpack_elink_val(value.data(), value.size(), nullptr, &file_name, &object) < 0)
-    throw std::runtime_error("cannot read the link of step " + name + " in " + main.string());
+    throw IoError("cannot read the link of step " + name + " in " + main.string());
   const fs::path target(file_name);
   return target.is_absolute() ? target : main.parent_path() / target;
 }
@@ -352,7 +352,7 @@ void ResultsFile::consolidate() {
       if (H5Ldelete(steps.getId(), name.c_str(), H5P_DEFAULT) < 0 ||
           H5Ocopy(step_file.getId(), "/step", steps.getId(), name.c_str(), H5P_DEFAULT,
                   H5P_DEFAULT) < 0)
-        throw std::runtime_error("cannot copy step " + name + " into " + path_.string());
+        throw IoError("cannot copy step " + name + " into " + path_.string());
       if (std::find(folders.begin(), folders.end(), source.parent_path()) == folders.end())
         folders.push_back(source.parent_path());
     }

@@ -191,13 +191,15 @@ GroupRecord collective_record(const Scene& scene) {
 }
 
 GroupRecord run_info(const fs::path& scene_directory, bool builtin, double elapsed,
-                     std::size_t evaluations, int resumed_from) {
+                     std::size_t evaluations, int resumed_from, const std::string& program) {
   char host[256] = "unknown";
   ::gethostname(host, sizeof host - 1);
   GroupRecord info;
   info.texts.push_back({"scene_directory", scene_directory.string(),
                         "directory the scene's relative file names are resolved in"});
   info.texts.push_back({"host", host, "machine the run (or its last part) ran on"});
+  info.texts.push_back(
+      {"program", program, "program and version that wrote the run (or its last part)"});
   info.texts.push_back({"written", now_iso8601(), "time of writing (UTC)"});
   info.arrays.push_back(scalar("builtin_scene", builtin ? 1.0 : 0.0, "1",
                                "1 when the run uses the built-in default scene"));

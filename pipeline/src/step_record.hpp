@@ -35,6 +35,6 @@ GroupRecord collective_record(const Scene& scene);
 
 // /run_info: host, time, threads, timings (the only place they appear).
 GroupRecord run_info(const std::filesystem::path& scene_directory, bool builtin, double elapsed,
-                     std::size_t evaluations, int resumed_from);
+                     std::size_t evaluations, int resumed_from, const std::string& program);
 
 }  // namespace wheelwear::pipeline::detail

@@ -329,7 +329,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   }
   summary.elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
   file.write_run_info(detail::run_info(scene_directory, builtin, summary.elapsed,
-                                       summary.evaluations, start.step == 0 ? -1 : start.step - 1));
+                                       summary.evaluations, start.step == 0 ? -1 : start.step - 1,
+                                       options.program));
   // The run is over: its step files become part of the one results file.
   file.consolidate();
   return summary;
@@ -371,10 +372,10 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
   if (!lock.warning().empty() && options.warning) options.warning(lock.warning());
   // The run information goes in with the scene, so that a run killed before its first step
   // can be resumed from the start.
-  ResultsFile file =
-      ResultsFile::create(output, scene_text, options.overwrite, detail::collective_record(scene),
-                          {{"creep_table_sha256", table_hash(scene)}},
-                          detail::run_info(scene_directory, builtin_scene, 0.0, 0, -1));
+  ResultsFile file = ResultsFile::create(
+      output, scene_text, options.overwrite, detail::collective_record(scene),
+      {{"creep_table_sha256", table_hash(scene)}},
+      detail::run_info(scene_directory, builtin_scene, 0.0, 0, -1, options.program));
   return loop(scene, evaluator, file, std::move(start), scene_directory, builtin_scene, options);
 }
 

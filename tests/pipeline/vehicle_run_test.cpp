@@ -272,6 +272,21 @@ class VehicleRunTest : public WearRunTest {
     ASSERT_EQ(ResultsFile::read(killed).completed_steps(), 2);
     resume_run(killed, {});
   }
+  // Runs `text` into `killed` as interrupted_then_resumed does, and compares every array of its
+  // three steps with `reference`'s.
+  void expect_resumed_identically(const std::string& text, const fs::path& killed,
+                                  const ResultsFile& reference) {
+    interrupted_then_resumed(text, killed);
+    ASSERT_FALSE(HasFatalFailure());
+    const ResultsFile res = ResultsFile::read(killed);
+    ASSERT_EQ(res.completed_steps(), 3);
+    int compared = 0;
+    for (int step = 0; step < 3; ++step) {
+      expect_same_arrays(reference, res, step, "", compared);
+      ASSERT_FALSE(HasFatalFailure());
+    }
+    EXPECT_GT(compared, 1000);
+  }
 };
 
 TEST_F(VehicleRunTest, RecordsTheVehicleAndResumesToIdenticalResults) {
@@ -313,16 +328,7 @@ TEST_F(VehicleRunTest, RecordsTheVehicleAndResumesToIdenticalResults) {
     EXPECT_NEAR(total, 1.0, 1e-12);
   }
 
-  interrupted_then_resumed(text, killed);
-  ASSERT_FALSE(HasFatalFailure());
-  const ResultsFile res = ResultsFile::read(killed);
-  ASSERT_EQ(res.completed_steps(), 3);
-  int compared = 0;
-  for (int step = 0; step < 3; ++step) {
-    expect_same_arrays(ref, res, step, "", compared);
-    ASSERT_FALSE(HasFatalFailure());
-  }
-  EXPECT_GT(compared, 1000);
+  expect_resumed_identically(text, killed, ref);
 }
 
 // [time_domain] redraw: every solve draws its own track. Draw 0 is the plan's (a run without
@@ -355,16 +361,7 @@ TEST_F(VehicleRunTest, RedrawnTracksDifferAtEverySolveAndResumeIdentically) {
   }
   EXPECT_GT(differ, static_cast<int>(dy_a.size() - 4) / 2);
 
-  interrupted_then_resumed(text, killed);
-  ASSERT_FALSE(HasFatalFailure());
-  const ResultsFile res = ResultsFile::read(killed);
-  ASSERT_EQ(res.completed_steps(), 3);
-  int compared = 0;
-  for (int step = 0; step < 3; ++step) {
-    expect_same_arrays(b, res, step, "", compared);
-    ASSERT_FALSE(HasFatalFailure());
-  }
-  EXPECT_GT(compared, 1000);
+  expect_resumed_identically(text, killed, b);
 }
 
 TEST(RedrawPieces, DrawZeroIsThePlansAndNoTwoDrawsShareATrack) {

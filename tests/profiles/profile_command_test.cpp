@@ -131,7 +131,8 @@ TEST(ProfileCommand, BadInputFailsClearlyAndLeavesTheOutputAlone) {
   const auto out = dir / "kept.csv";
   testing::write_text(out, "previous result\n");
   testing::write_text(dir / "bad.csv", "y,z\n1,2\n3,nan\n4,5\n");
-  const CliRun bad = run("--rail " + quoted(dir / "bad.csv") + " --out " + quoted(out));
+  // With --overwrite, so that the bad profile is what is refused.
+  const CliRun bad = run("--rail " + quoted(dir / "bad.csv") + " --overwrite --out " + quoted(out));
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("bad.csv:3: z = nan: not a finite number"), std::string::npos) << bad.err;
   EXPECT_EQ(testing::read_text(out), "previous result\n");
@@ -287,7 +288,10 @@ TEST(ProfileCommand, RefusesMptFilesAndARailGivenAsAWheelByName) {
     EXPECT_EQ(bad.status, 2) << args;
     EXPECT_TRUE(has(bad.err, "wheelwear: error: " + message)) << args << "\n" << bad.err;
   }
-  EXPECT_GT(run("--rail " + quoted(prr) + " --gauge-side up").status, 100);
+  // A value outside the option's choices is refused by the parser, with the same status.
+  const CliRun parse = run("--rail " + quoted(prr) + " --gauge-side up");
+  EXPECT_EQ(parse.status, 2);
+  EXPECT_TRUE(has(parse.err, "wheelwear: error: --gauge-side")) << parse.err;
 }
 
 }  // namespace

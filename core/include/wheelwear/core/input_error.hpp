@@ -14,6 +14,14 @@ class InputError : public std::invalid_argument {
   explicit InputError(const std::string& message) : std::invalid_argument(message) {}
 };
 
+/// Thrown when the system fails an operation on a valid input: a file that cannot be written
+/// (permissions, a full disk, a read-only file system), an output another process holds. The
+/// message names the path and the cause. (The command line exits with status 4.)
+class IoError : public std::runtime_error {
+ public:
+  explicit IoError(const std::string& message) : std::runtime_error(message) {}
+};
+
 /// Throws InputError("<field> = <value>: <constraint>") unless `condition` holds.
 void require(bool condition, std::string_view field, double value, std::string_view constraint);
 

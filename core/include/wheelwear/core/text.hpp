@@ -38,7 +38,8 @@ std::string format_number(double value);
 std::string format_mm(double metres, int decimals);
 
 /// Writes `content` to `path` through a temporary file in the same folder and a rename, so an
-/// existing file is either replaced whole or left untouched. Throws InputError on failure.
+/// existing file is either replaced whole or left untouched. Throws InputError when the path
+/// is a folder or its folder does not exist, IoError when the system refuses the file.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
 }  // namespace wheelwear::core

@@ -6,6 +6,7 @@
 #include <functional>
 #include <string>
 
+#include "wheelwear/core/version.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/scene.hpp"
 
@@ -35,6 +36,9 @@ struct RunOptions {
   /// Called with what the user should know but does not stop the run (e.g. an output on a file
   /// system without locks, OutputLock::warning); unset: not reported.
   std::function<void(const std::string&)> warning;
+  /// The program and version that writes the run, recorded in /run_info/program (the command
+  /// line gives its version and commit).
+  std::string program = std::string("wheelwear library ") + core::version();
 };
 
 /// What a run did.

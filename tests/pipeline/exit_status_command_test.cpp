@@ -1,0 +1,143 @@
+// One set of exit statuses for every command (docs/cli.md, "Exit status"), one rule for every
+// output file, the program's version on the command line and in the results file, and the
+// run's summary.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "support/csv_table.hpp"
+#include "support/run_command.hpp"
+#include "wear_run_support.hpp"
+#include "wheelwear/pipeline/results_file.hpp"
+
+namespace wheelwear::pipeline {
+namespace {
+
+using testing::run_wheelwear;
+
+const std::regex kVersion(
+    R"(wheelwear [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{12}(-modified)?|unknown)\))");
+
+TEST(ExitStatus, VersionAndHelpSucceed) {
+  const auto version = run_wheelwear("--version");
+  EXPECT_EQ(version.exit_code, 0) << version.err;
+  EXPECT_TRUE(std::regex_search(version.out, kVersion)) << version.out;
+  EXPECT_EQ(run_wheelwear("--help").exit_code, 0);
+  EXPECT_EQ(run_wheelwear("run --help").exit_code, 0);
+}
+
+// Every parse error is bad usage: status 2, `wheelwear: error:` and the hint.
+TEST(ExitStatus, EveryParseErrorIsBadUsage) {
+  int compared = 0;
+  for (const char* args : {"", "contact --dy", "creep --a abc", "run --bogus",
+                           "contact --dy 0 --load 55000 --gauge-side up", "nosuch"}) {
+    const auto r = run_wheelwear(args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("wheelwear: ", 0), 0u) << args << ": " << r.err;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 6);
+}
+
+class OutputRule : public WearRunTest {};
+
+// Computed but no usable answer: a curve in which the worn wheel of tests/data/profiles finds
+// no balance (docs/vehicle.md: a banded tread whose lateral force falls as it shifts out) prints
+// its last iterate and exits with 3.
+TEST_F(OutputRule, CurvingWithoutABalanceExitsWithThree) {
+  write("worn.toml", "[wheel]\nprofile = \"" +
+                         testing::test_data("profiles/s1002_worn_33200km.csv") +
+                         "\"\nradius_m = 0.46\n[rail]\nprofile = \"60E1\"\ninclination = "
+                         "0.025\n[[load_collective.state]]\naxle_load_N = 1e5\nspeed_m_s = 30\n");
+  const auto r = run_wheelwear("curving " + (dir_ / "worn.toml").string() +
+                               " --radius 1000 --cant 0.1 --speed 35 --json");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.out.find("\"converged\": false"), std::string::npos) << r.out.substr(0, 200);
+  EXPECT_NE(r.err.find("wheelwear: failed: curving did not converge"), std::string::npos) << r.err;
+}
+
+std::string text_of(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// An existing file is replaced only with --overwrite, and no folder is made for an output.
+TEST_F(OutputRule, ExistingFilesNeedOverwriteAndNoFolderIsMade) {
+  const fs::path profile = dir_ / "wheel.csv", map = dir_ / "map.csv";
+  ASSERT_EQ(run_wheelwear("profile --wheel S1002 --out " + profile.string()).exit_code, 0);
+  ASSERT_EQ(run_wheelwear("wear --dy 0.002 --load 55000 --map " + map.string()).exit_code, 0);
+  const std::string profile_text = text_of(profile), map_text = text_of(map);
+  // Refused, the file as it was.
+  for (const auto& [args, flag] :
+       {std::pair{"profile --wheel S1002 --spacing 1e-3 --out " + profile.string(), "--out"},
+        std::pair{"wear --dy 0.003 --load 55000 --map " + map.string(), "--map"}}) {
+    const auto r = run_wheelwear(args);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_NE(r.err.find(std::string(flag) + " "), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("pass --overwrite"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(text_of(profile), profile_text);
+  EXPECT_EQ(text_of(map), map_text);
+  // Replaced with --overwrite.
+  ASSERT_EQ(
+      run_wheelwear("profile --wheel S1002 --spacing 1e-3 --overwrite --out " + profile.string())
+          .exit_code,
+      0);
+  EXPECT_NE(text_of(profile), profile_text);
+  // No folder made: a missing one is bad input, and nothing is left behind.
+  const fs::path missing = dir_ / "missing";
+  for (const std::string& args :
+       {"profile --wheel S1002 --out " + (missing / "wheel.csv").string(),
+        "run --export-default-scene " + (missing / "scene").string(),
+        "curving --export-default-vehicle " + (missing / "vehicle").string()}) {
+    const auto r = run_wheelwear(args);
+    EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
+    EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(missing)) << args;
+  }
+  // The exported folder itself may be new when its parent is there.
+  EXPECT_EQ(run_wheelwear("run --export-default-scene " + (dir_ / "scene").string()).exit_code, 0);
+  EXPECT_TRUE(fs::exists(dir_ / "scene" / "default.toml"));
+}
+
+// The program and its commit go into /run_info/program (outside the steps, which stay equal
+// across builds).
+TEST_F(OutputRule, TheResultsFileRecordsTheProgram) {
+  write("scene.toml", small_scene(10e3, 10e3, 1e-3));
+  const fs::path out = dir_ / "run.h5";
+  const auto r = run_wheelwear("run -q " + (dir_ / "scene.toml").string() + " -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto program = ResultsFile::read(out).read_text("/run_info/program");
+  ASSERT_TRUE(program);
+  EXPECT_TRUE(std::regex_match(*program, kVersion)) << *program;
+}
+
+// The summary prints each EN 15313 parameter's change in a column of its own, to 0.1 um: a
+// short run's change (micrometres) is far below the values' own last digit.
+TEST_F(OutputRule, TheSummaryShowsEachParametersChange) {
+  write("scene.toml", small_scene(10e3, 10e3, 1e-3));
+  const fs::path out = dir_ / "run.h5";
+  const auto r = run_wheelwear("run -q " + (dir_ / "scene.toml").string() + " -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const ResultsFile file = ResultsFile::read(out);
+  const int last = file.completed_steps() - 1;
+  int compared = 0;
+  for (const char* name : {"Sh", "Sd", "qR"}) {
+    const std::regex line("  " + std::string(name) +
+                          R"( \[mm\] +([0-9.]+) +([0-9.]+) +([+-][0-9.]+))");
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.out, m, line)) << name << "\n" << r.out;
+    const double change = (file.read_step_array(last, std::string("wheel/") + name).at(0) -
+                           file.read_step_array(0, std::string("wheel/") + name).at(0)) *
+                          1e3;
+    EXPECT_NEAR(std::stod(m[3].str()), change, 0.6e-4) << name;  // printed to 1e-4 mm
+    ++compared;
+  }
+  EXPECT_EQ(compared, 3);
+}
+
+}  // namespace
+}  // namespace wheelwear::pipeline
