@@ -242,6 +242,9 @@ void add_contact_command(CLI::App& app) {
   CLI::Option* creep = cmd->add_flag(
       "--creep", args->creep,
       "also solve the tangential problem with FASTSIM-SDEC (creepages --vx --vy --phi)");
+  // The creepages enter only the tangential problem: given without it they would be ignored.
+  for (const char* name : {"--vx", "--vy", "--phi", "--kinematic"})
+    cmd->get_option(name)->needs(creep);
   cmd->add_option("--tangential", args->tangential,
                   "with --creep: fastsim-sdec (default) or exact, which adds per patch Kalker's\n"
                   "exact theory (Kalker 1990, as in Vollebregt's CONTACT): the undeformed\n"

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "wheelwear/core/plausibility.hpp"
+#include "wheelwear/core/text.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
 
 namespace wheelwear::cli {
@@ -20,7 +21,8 @@ void add_contact_options(CLI::App* cmd, ContactInputs& in) {
   cmd->add_option("--roll", in.pose.roll, "roll of the wheel profile [rad], small")
       ->capture_default_str();
   cmd->add_option("--incl", in.inclination,
-                  "rail inclination to apply [rad]; default 1:40 for 60E1, 0 for files");
+                  "rail inclination to apply: 1:N or a slope tan(theta) (1:40 = 0.025), none;\n"
+                  "default 1:40 for 60E1, none for files (they usually carry theirs)");
   cmd->add_option("--gauge", in.gauge, "track gauge [m]")->capture_default_str();
   cmd->add_option("--back-to-back", in.back_to_back, "back-to-back distance [m]")
       ->capture_default_str();
@@ -86,7 +88,10 @@ SolvedContact solve_contact(const ContactInputs& in) {
   // The loaders' warnings (an origin the rule contradicts, a rail without a gauge point or
   // probably mirrored) belong to this contact: a user sees them here or not at all.
   profiles::Profile wheel = profiles::wheel_profile(in.wheel, in.wheel_radius, files, &warnings);
-  profiles::Profile rail = profiles::rail_profile(in.rail, in.inclination, files, &warnings);
+  const std::optional<double> inclination =
+      in.inclination.empty() ? std::nullopt
+                             : std::optional(core::parse_inclination(in.inclination, "--incl"));
+  profiles::Profile rail = profiles::rail_profile(in.rail, inclination, files, &warnings);
   SolvedContact out{
       contactgeom::WheelRailPair(std::move(wheel), std::move(rail)), {}, std::move(warnings)};
   out.pair.gauge = in.gauge;

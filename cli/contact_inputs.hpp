@@ -22,7 +22,7 @@ struct ContactInputs {
   std::string rail = "60E1";
   contactgeom::WheelsetPose pose;
   double load = 0.0;
-  std::optional<double> inclination;
+  std::string inclination;  ///< --incl as given (core::parse_inclination); empty: the default
   double gauge = 1.435;
   double back_to_back = 1.360;
   /// Nominal rolling radius [m]; default the wheel file header's diameter / 2, else 0.46.

@@ -16,6 +16,7 @@
 #include "json_writer.hpp"
 #include "output_path.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 #include "wheelwear/profiles/columns_format.hpp"
 #include "wheelwear/profiles/internal_face.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
@@ -57,13 +58,6 @@ constexpr double kLevelInclination = 1.0 / 200.0;
 std::string upper(std::string text) {
   for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return text;
-}
-
-double parse_inclination(const std::string& text) {
-  if (text == "none" || text == "0") return 0.0;
-  if (text == "1:40" || text == "40") return pr::inclination_angle(pr::RailInclination::one_in_40);
-  if (text == "1:20" || text == "20") return pr::inclination_angle(pr::RailInclination::one_in_20);
-  throw InputError("--inclination " + text + ": must be none, 1:40 or 1:20");
 }
 
 pr::LoadedProfile make_profile(const ProfileArgs& args) {
@@ -112,7 +106,7 @@ pr::LoadedProfile make_profile(const ProfileArgs& args) {
     } else {
       pr::Rail60E1Options r;
       r.side = side;
-      r.inclination = parse_inclination(args.inclination);
+      r.inclination = core::parse_inclination(args.inclination, "--inclination");
       raw.source = "60E1";
       raw.points = pr::rail_60e1_points(r);
     }
@@ -401,7 +395,8 @@ void add_profile_command(CLI::App& app) {
                                  "wheels: nominal rolling radius at the taping line [m] (recorded)")
                      ->capture_default_str();
   args->inclination_option = cmd->add_option("--inclination", args->inclination,
-                                             "60E1 rail inclination: none, 1:40 or 1:20")
+                                             "60E1 rail inclination: 1:N or a slope tan(theta) "
+                                             "(1:40 = 0.025), none")
                                  ->capture_default_str();
   cmd->callback([args] {
     ProfileArgs run = *args;

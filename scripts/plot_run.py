@@ -100,38 +100,65 @@ def wheel_label(name):
     return f"wheelset {parts[1]} {parts[2]}" if len(parts) == 3 else parts[0]
 
 
+# EN 15313's in-service parameters with the scene's limits (/steps/N/limits): (key, limit, sense).
+PARAMETERS = (("Sd", "Sd_min", "flange thickness", ">="), ("Sh", "Sh_max", "flange height", "<="),
+              ("qR", "qR_min", "flange slope qR", ">="))
+
+
+def parameter_panel(ax, groups, names, key, limit_key, title, sense, distance):
+    """One parameter on its own axis, a line per wheel, and its limit where it is in reach."""
+    colours = plt.cm.tab10(np.arange(4))
+    several = len(names) > 1
+    values = []
+    for i, name in enumerate(names):
+        v = np.array([g[name][key][()] for g in groups]) * 1e3
+        values.append(v)
+        ax.plot(distance, v, marker="o", ms=3,
+                ls="--" if several and name.endswith("right") else "-",
+                color=colours[i // 2 if len(names) > 2 else i] if several else "C0",
+                label=wheel_label(name) if several else None)
+    values = np.concatenate(values)
+    values = values[np.isfinite(values)]
+    limit = groups[-1]["limits"][limit_key][()] * 1e3 if "limits" in groups[-1] else np.nan
+    title = f"{key}: {title} [mm]"
+    if np.isfinite(limit):
+        title += f", limit {sense} {limit:.1f}"
+        # The limit drawn where it does not squeeze the change into a line: within three
+        # times the parameter's range of its values.
+        span = max(values.max() - values.min(), 0.05) if values.size else 0.05
+        if values.size and abs(limit - values.mean()) < 3.0 * span + 0.5:
+            ax.axhline(limit, color="crimson", ls=":", lw=1.2, label="EN 15313 limit")
+    ax.set_title(title, fontsize=10)
+    ax.set_xlabel("distance [km]")
+    ax.set_ylabel(f"{key} [mm]")
+    ax.grid(alpha=0.3)
+    if several or ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=7)
+
+
 def plot_parameters(f, out):
     groups = steps(f)
     distance = np.array([g["distance"][()] for g in groups]) / 1e3
     names = wheel_groups(groups[0])
-    # One profile: its three parameters in one panel. Several (left and right, or each
-    # wheelset's two): a panel for Sd and one for Sh, a line per wheel (solid left, dashed right).
-    panels = [("Sh", "Sd", "qR")] if len(names) == 1 else [("Sd",), ("Sh",)]
-    fig, axes = plt.subplots(1, len(panels) + 1, figsize=(5 * (len(panels) + 1), 4))
+    # Each parameter on its own axis (a real change of tenths of a millimetre must not look
+    # flat beside another parameter's 20 mm), a line per wheel (solid left, dashed right).
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
+    for ax, (key, limit_key, title, sense) in zip(axes.flat, PARAMETERS):
+        parameter_panel(ax, groups, names, key, limit_key, title, sense, distance)
+    ax = axes.flat[3]
     colours = plt.cm.tab10(np.arange(4))
-    for ax, keys in zip(axes, panels):
-        for i, name in enumerate(names):
-            for key in keys:
-                several = len(names) > 1
-                ax.plot(distance, [g[name][key][()] * 1e3 for g in groups], marker="o", ms=3,
-                        ls="--" if several and name.endswith("right") else "-",
-                        color=colours[i // 2 if len(names) > 2 else i] if several else None,
-                        label=wheel_label(name) if several else key)
-        ax.set_xlabel("distance [km]")
-        ax.set_ylabel("[mm]")
-        ax.legend(fontsize=7 if len(names) > 2 else None)
-        ax.set_title("EN 15313 parameters" if len(keys) > 1 else f"{keys[0]} (EN 15313)")
     wheelsets = [k for k in range(1, 5) if f"wheelsets/{k}/equivalent_conicity" in groups[0]]
     if wheelsets:
         for k in wheelsets:
-            axes[-1].plot(distance, [g[f"wheelsets/{k}/equivalent_conicity"][()] for g in groups],
-                          marker="o", ms=3, color=colours[k - 1], label=f"wheelset {k}")
-        axes[-1].legend()
+            ax.plot(distance, [g[f"wheelsets/{k}/equivalent_conicity"][()] for g in groups],
+                    marker="o", ms=3, color=colours[k - 1], label=f"wheelset {k}")
+        ax.legend(fontsize=7)
     else:
-        axes[-1].plot(distance, [g["equivalent_conicity"][()] for g in groups], marker="o", ms=3)
-    axes[-1].set_xlabel("distance [km]")
-    axes[-1].set_ylabel("tan γe at 3 mm")
-    axes[-1].set_title("equivalent conicity (EN 15302)")
+        ax.plot(distance, [g["equivalent_conicity"][()] for g in groups], marker="o", ms=3)
+    ax.set_xlabel("distance [km]")
+    ax.set_ylabel("tan γe at 3 mm")
+    ax.set_title("equivalent conicity (EN 15302)", fontsize=10)
+    ax.grid(alpha=0.3)
     path = os.path.join(out, "parameters.png")
     fig.tight_layout()
     fig.savefig(path, dpi=130)

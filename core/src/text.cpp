@@ -171,4 +171,22 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   }
 }
 
+double parse_inclination(std::string_view text, std::string_view field) {
+  const auto refuse = [&] {
+    return InputError(std::string(field) + " " + std::string(text) +
+                      ": give 1:N (1:40) or a slope tan(theta) (0.025), or none");
+  };
+  if (text == "none") return 0.0;
+  if (const std::size_t colon = text.find(':'); colon != std::string_view::npos) {
+    const auto one = parse_number(text.substr(0, colon));
+    const auto n = parse_number(text.substr(colon + 1));
+    if (!one || *one != 1.0 || !n || !std::isfinite(*n) || *n < 5.0) throw refuse();
+    return std::atan(1.0 / *n);
+  }
+  const auto slope = parse_number(text);
+  // A bare 40 is 1:40 mistyped, not a slope of 40.
+  if (!slope || !std::isfinite(*slope) || std::abs(*slope) > 0.2) throw refuse();
+  return std::atan(*slope);
+}
+
 }  // namespace wheelwear::core

@@ -131,8 +131,12 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                          }},
                         {"inclination",
                          [&](const auto& n, const auto& k) {
-                           s.rail_inclination = std::atan(
-                               number(n, k, -0.1, 0.1, "the inclination as a slope (1:40 = 0.025)"));
+                           // A slope (0.025) or, as the commands take it, "1:40".
+                           s.rail_inclination =
+                               n.is_string()
+                                   ? core::parse_inclination(text(n, k), where(n.source(), k))
+                                   : std::atan(number(n, k, -0.1, 0.1,
+                                                      "the inclination as a slope (1:40 = 0.025)"));
                            inclination_given = true;
                          }}})},
       {"track",

@@ -33,16 +33,31 @@ TEST(ExitStatus, VersionAndHelpSucceed) {
 TEST(ExitStatus, EveryParseErrorIsBadUsage) {
   int compared = 0;
   for (const char* args : {"", "contact --dy", "creep --a abc", "run --bogus",
-                           "contact --dy 0 --load 55000 --gauge-side up", "nosuch"}) {
+                           "contact --dy 0 --load 55000 --gauge-side up", "nosuch",
+                           // creepages without the tangential problem they belong to
+                           "contact --dy 0 --load 55000 --vx 1e-3"}) {
     const auto r = run_wheelwear(args);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_EQ(r.err.rfind("wheelwear: ", 0), 0u) << args << ": " << r.err;
     ++compared;
   }
-  EXPECT_EQ(compared, 6);
+  EXPECT_EQ(compared, 7);
 }
 
 class OutputRule : public WearRunTest {};
+
+// A rail's inclination is 1:N or a slope everywhere: contact --incl 1:40 and 0.025 are one
+// angle, so one contact to the last digit.
+TEST(Inclination, OneInFortyIsTheSlopeOfOneFortieth) {
+  const std::string args = "contact --dy 0.003 --load 55000 --json --incl ";
+  const auto ratio = run_wheelwear(args + "1:40");
+  const auto slope = run_wheelwear(args + "0.025");
+  ASSERT_EQ(ratio.exit_code, 0) << ratio.err;
+  EXPECT_EQ(ratio.out, slope.out);
+  const auto mistyped = run_wheelwear(args + "40");
+  EXPECT_EQ(mistyped.exit_code, 2);
+  EXPECT_NE(mistyped.err.find("--incl 40: give 1:N"), std::string::npos) << mistyped.err;
+}
 
 // Computed but no usable answer: a curve in which the worn wheel of tests/data/profiles finds
 // no balance (docs/vehicle.md: a banded tread whose lateral force falls as it shifts out) prints

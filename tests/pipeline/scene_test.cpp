@@ -64,6 +64,11 @@ TEST_F(SceneTest, ReadsEveryKeyInSiUnits) {
   EXPECT_EQ(s.rail_file.rail_gauge_side, profiles::Mirror::flip);
   ASSERT_TRUE(s.rail_inclination.has_value());
   EXPECT_NEAR(*s.rail_inclination, std::atan(0.05), 1e-15);
+  // As the commands take it: "1:20" is the same slope; a bare 20 is refused.
+  const Scene one_in = parse_scene("[rail]\ninclination = \"1:20\"\n" + std::string(kState), dir_);
+  EXPECT_EQ(*one_in.rail_inclination, std::atan(1.0 / 20.0));
+  EXPECT_THROW(parse_scene("[rail]\ninclination = \"20\"\n" + std::string(kState), dir_),
+               InputError);
   EXPECT_DOUBLE_EQ(s.gauge, 1.432);
   EXPECT_DOUBLE_EQ(s.back_to_back, 1.358);
   EXPECT_DOUBLE_EQ(s.youngs_modulus, 210e9);

@@ -140,7 +140,7 @@ TEST(ProfileCommand, BadInputFailsClearlyAndLeavesTheOutputAlone) {
        {std::string("--wheel S1002 --rail 60E1"), std::string(""),
         "--wheel " + quoted(dir / "absent.prw"),
         "--rail " + quoted(testing::measured_rail_file()) + " --flange-height 0.03",
-        std::string("--rail 60E1 --inclination 1:30"), std::string("--wheel S1002 --spacing 0"),
+        std::string("--rail 60E1 --inclination 40"), std::string("--wheel S1002 --spacing 0"),
         std::string("--wheel S1002 --flange-thickness 0.034")}) {
     const CliRun r = run(args);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.out;

@@ -15,6 +15,7 @@ namespace wheelwear::profiles {
 
 using core::check_text;
 using core::format_number;
+using core::parse_inclination;
 using core::parse_number;
 using core::read_text_file;
 using core::write_file_atomically;
@@ -84,6 +85,28 @@ TEST(TextFile, ParsesNumbersStrictly) {
   EXPECT_FALSE(parse_number("1,5"));
   EXPECT_EQ(format_number(0.1), "0.1");
   EXPECT_EQ(*parse_number(format_number(1.0 / 3.0)), 1.0 / 3.0);
+}
+
+// One way to give a rail's inclination everywhere: 1:N or a slope, none or 0.
+TEST(Inclination, IsOneInNOrASlope) {
+  EXPECT_EQ(parse_inclination("1:40", "--incl"), std::atan(1.0 / 40.0));
+  EXPECT_EQ(parse_inclination("0.025", "--incl"), std::atan(0.025));  // the same angle
+  EXPECT_EQ(parse_inclination("1:20", "--incl"), std::atan(0.05));
+  EXPECT_EQ(parse_inclination("-0.025", "--incl"), std::atan(-0.025));
+  EXPECT_EQ(parse_inclination("none", "--incl"), 0.0);
+  EXPECT_EQ(parse_inclination("0", "--incl"), 0.0);
+  int refused = 0;
+  for (const char* bad : {"40", "1:0", "1:2", "2:40", "1:", "abc", "0.3", "nan", ""}) {
+    try {
+      parse_inclination(bad, "--incl");
+      ADD_FAILURE() << bad << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("--incl"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("1:N"), std::string::npos) << e.what();
+      ++refused;
+    }
+  }
+  EXPECT_EQ(refused, 9);
 }
 
 TEST(TextFile, RejectsMissingEmptyAndBinaryFiles) {

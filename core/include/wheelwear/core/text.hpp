@@ -34,6 +34,11 @@ std::optional<double> parse_number(std::string_view token);
 /// Shortest text that reads back to exactly `value` (std::to_chars).
 std::string format_number(double value);
 
+/// A rail's inclination as every command and scene takes it: "1:N" (N >= 5; 1:40 is atan(1/40))
+/// or a slope tan(theta) as a number (|slope| <= 0.2; 0.025 is 1:40), "none" or 0 for none.
+/// Returns the angle [rad]; throws InputError naming `field` otherwise.
+double parse_inclination(std::string_view text, std::string_view field);
+
 /// A length in metres as millimetres with `decimals` places and the unit: "12.3 mm".
 std::string format_mm(double metres, int decimals);
 
