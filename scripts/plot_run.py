@@ -39,22 +39,33 @@ def wheel_groups(step):
     return [name for name in names if name in step]
 
 
+def distance_colours(groups):
+    """A colour per step from its distance, and the colour bar's mappable (km)."""
+    km = np.array([g["distance"][()] for g in groups]) / 1e3
+    norm = plt.Normalize(0.0, max(km[-1], 1e-9))
+    mappable = plt.cm.ScalarMappable(norm=norm, cmap=plt.cm.viridis)
+    return [plt.cm.viridis(norm(d)) for d in km], mappable
+
+
 def plot_profiles(f, out):
     groups = steps(f)
-    fig, axes = plt.subplots(2, 1, figsize=(9, 7), sharex=True)
+    fig, axes = plt.subplots(3, 1, figsize=(9, 9.5),
+                             gridspec_kw={"height_ratios": [1.0, 1.0, 0.7]})
     first = groups[0]
     name = wheel_groups(first)[0]
     y0 = np.asarray(first[name]["y"]) * 1e3
     z0 = np.asarray(first[name]["z"]) * 1e3
-    colours = plt.cm.viridis(np.linspace(0, 1, len(groups)))
+    colours, mappable = distance_colours(groups)
     grid = np.linspace(-45.0, 50.0, 951)
     worn = np.zeros_like(grid)
+    area = []
     for g, colour in zip(groups, colours):
         y = np.asarray(g[name]["y"]) * 1e3
         z = np.asarray(g[name]["z"]) * 1e3
         axes[0].plot(y, z, color=colour, lw=0.8)
         # Cumulative wear normal to the surface: the sum of the steps' depths so far.
         axes[1].plot(grid, worn * 1e6, color=colour, lw=0.8)
+        area.append(np.trapz(worn * 1e3, grid))  # [mm^2]: depth in mm along y in mm
         step = g[name]["wear_step"]
         if len(step["y"]) >= 2:
             worn += np.interp(grid, np.asarray(step["y"]) * 1e3, np.asarray(step["depth"]),
@@ -66,7 +77,16 @@ def plot_profiles(f, out):
                       f"to {groups[-1]['distance'][()] / 1e3:.1f} km")
     axes[1].set_ylabel("worn depth, normal [µm]")
     axes[1].set_xlabel("y [mm] (+ field side, flange at -y)")
-    axes[1].set_xlim(-45, 50)
+    for ax in axes[:2]:
+        ax.set_xlim(-45, 50)
+        fig.colorbar(mappable, ax=ax, label="distance [km]", pad=0.01)
+    km = np.array([g["distance"][()] for g in groups]) / 1e3
+    axes[2].plot(km, area, marker="o", ms=3)
+    axes[2].set_xlabel("distance [km]")
+    axes[2].set_ylabel("worn area [mm²]")
+    axes[2].set_title("worn cross-section (the worn depth integrated across the profile)",
+                      fontsize=10)
+    axes[2].grid(alpha=0.3)
     path = os.path.join(out, "profile_evolution.png")
     fig.tight_layout()
     fig.savefig(path, dpi=130)
@@ -77,7 +97,7 @@ def plot_profiles(f, out):
 def plot_wear_depth(f, out):
     groups = steps(f)
     fig, ax = plt.subplots(figsize=(9, 4.5))
-    colours = plt.cm.viridis(np.linspace(0, 1, len(groups)))
+    colours, mappable = distance_colours(groups)
     for g, colour in zip(groups[:-1], colours):
         for name in wheel_groups(g):
             step = g[name]["wear_step"]
@@ -86,7 +106,8 @@ def plot_wear_depth(f, out):
     ax.set_xlabel("y on the wheel [mm]")
     ax.set_ylabel("wear depth of the step [µm]")
     ax.set_xlim(-40, 50)
-    ax.set_title("wear depth per step (colour: step)")
+    ax.set_title("wear depth of each step")
+    fig.colorbar(mappable, ax=ax, label="distance at the step's start [km]", pad=0.01)
     path = os.path.join(out, "wear_depth_per_step.png")
     fig.tight_layout()
     fig.savefig(path, dpi=130)
@@ -106,31 +127,34 @@ PARAMETERS = (("Sd", "Sd_min", "flange thickness", ">="), ("Sh", "Sh_max", "flan
 
 
 def parameter_panel(ax, groups, names, key, limit_key, title, sense, distance):
-    """One parameter on its own axis, a line per wheel, and its limit where it is in reach."""
+    """One parameter on its own axis, a line per wheel, and its limit where it is in reach.
+    A change below 50 µm is drawn in µm from the start value, which the label states."""
     colours = plt.cm.tab10(np.arange(4))
     several = len(names) > 1
-    values = []
-    for i, name in enumerate(names):
-        v = np.array([g[name][key][()] for g in groups]) * 1e3
-        values.append(v)
-        ax.plot(distance, v, marker="o", ms=3,
+    series = [np.array([g[name][key][()] for g in groups]) * 1e3 for name in names]
+    values = np.concatenate(series)
+    values = values[np.isfinite(values)]
+    span = values.max() - values.min() if values.size else 0.0
+    small = span < 0.05
+    origin = series[0][0] if small else 0.0
+    scale = 1e3 if small else 1.0
+    for i, (name, v) in enumerate(zip(names, series)):
+        ax.plot(distance, (v - origin) * scale, marker="o", ms=3,
                 ls="--" if several and name.endswith("right") else "-",
                 color=colours[i // 2 if len(names) > 2 else i] if several else "C0",
                 label=wheel_label(name) if several else None)
-    values = np.concatenate(values)
-    values = values[np.isfinite(values)]
     limit = groups[-1]["limits"][limit_key][()] * 1e3 if "limits" in groups[-1] else np.nan
-    title = f"{key}: {title} [mm]"
+    heading = f"{key}: {title}"
     if np.isfinite(limit):
-        title += f", limit {sense} {limit:.1f}"
+        heading += f", limit {sense} {limit:.1f} mm"
         # The limit drawn where it does not squeeze the change into a line: within three
         # times the parameter's range of its values.
-        span = max(values.max() - values.min(), 0.05) if values.size else 0.05
-        if values.size and abs(limit - values.mean()) < 3.0 * span + 0.5:
+        if not small and values.size and abs(limit - values.mean()) < 3.0 * max(span, 0.05) + 0.5:
             ax.axhline(limit, color="crimson", ls=":", lw=1.2, label="EN 15313 limit")
-    ax.set_title(title, fontsize=10)
+    ax.set_title(heading, fontsize=10)
     ax.set_xlabel("distance [km]")
-    ax.set_ylabel(f"{key} [mm]")
+    ax.set_ylabel(f"{key} − {origin:.3f} mm [µm]" if small else f"{key} [mm]")
+    ax.ticklabel_format(axis="y", useOffset=False)
     ax.grid(alpha=0.3)
     if several or ax.get_legend_handles_labels()[0]:
         ax.legend(fontsize=7)
