@@ -190,6 +190,7 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
         .add("qR_end", at(last, wheel + "/qR"))
         .add("conicity_start", at(0, "equivalent_conicity"))
         .add("conicity_end", at(last, "equivalent_conicity"))
+        .add("worn_area", s.worn_area)
         .add("elapsed", s.elapsed)
         .add("evaluations", static_cast<double>(s.evaluations))
         .add("states_steps_per_second", rate)
