@@ -1,6 +1,6 @@
 #pragma once
-// The results file's record of a vehicle run's step: the collective the vehicle made (the
-// columns of a load collective, so that a resumed run reads back exactly the states it wore
+// The results file's record of a vehicle run's step: the collective the vehicle made (its
+// columns in collective_record.hpp, so that a resumed run reads back exactly the states it wore
 // with) and per running condition of the route the vehicle's solved state (docs/results.md,
 // "Vehicle runs"). The readers rebuild what a resumed run carries on with.
 
@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "collective_record.hpp"
 #include "step_record.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/pipeline/vehicle_run.hpp"
@@ -19,14 +20,6 @@ namespace wheelwear::pipeline::detail {
 // the pieces.
 void add_vehicle_record(GroupRecord& g, const VehicleCollective& vehicle, bool solved,
                         double depth_since_solve);
-
-// The states as load-collective columns under `prefix` ("" or e.g. "collective/").
-void add_collective(GroupRecord& g, const std::string& prefix,
-                    const std::vector<WheelsetStateSpec>& states);
-
-// The states written by add_collective in step `step` under `prefix`.
-std::vector<WheelsetStateSpec> read_collective(const ResultsFile& file, int step,
-                                               const std::string& prefix);
 
 // vehicle/cases/...: per case of the route its conditions, whether its solve converged, the
 // bodies' placements and per wheelset its state and the wheels' forces.
