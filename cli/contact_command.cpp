@@ -89,8 +89,9 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
       .add("a", p.sdec.a)
       .add("b", p.sdec.b)
       .add("psi", p.sdec.psi)
-      .add("y_wheel", p.y_wheel)
-      .add("y_rail", p.y_rail)
+      // Positions on the profiles in each profile's own frame (+ towards the field side).
+      .add("y_wheel", -p.y_wheel)
+      .add("y_rail", -p.y_rail)
       .add("contact_angle", p.contact_angle)
       .add("N", p.normal_force)
       .add("pmax", p.pmax)
@@ -186,10 +187,11 @@ void run_contact(const ContactArgs& args) {
     int k = 0;
     for (const auto& p : contact.patches) {
       std::printf(
-          "patch %d: N %.6g N, angle %.4f rad, O at %.3f mm on the rail, %.3f mm on the wheel\n"
+          "patch %d: N %.6g N, angle %.4f rad, O at y = %.3f mm on the rail, %.3f mm on the "
+          "wheel (profile frames, + towards the field side)\n"
           "  area %.4g mm2, length %.3f mm, width %.3f mm, W1 %.3f mm, W2 %.3f mm, pmax %.1f MPa\n"
           "  SDEC a %.3f mm, b %.3f mm, psi %+.3f\n",
-          ++k, p.normal_force, p.contact_angle, p.y_rail * 1e3, p.y_wheel * 1e3,
+          ++k, p.normal_force, p.contact_angle, -p.y_rail * 1e3, -p.y_wheel * 1e3,
           p.measures.area * 1e6, p.measures.length * 1e3, p.measures.width * 1e3,
           p.measures.W1 * 1e3, p.measures.W2 * 1e3, p.pmax * 1e-6, p.sdec.a * 1e3, p.sdec.b * 1e3,
           p.sdec.psi);

@@ -34,6 +34,7 @@ struct RunArgs {
   std::string scene;
   std::string output;
   std::string resume;
+  bool resume_stored = false;
   int threads = 0;
   bool overwrite = false;
   bool allow_hook = false;
@@ -264,6 +265,7 @@ void run(const RunArgs& args) {
       std::string("wheelwear ") + core::version() + " (commit " + build_commit() + ")";
   options.overwrite = args.overwrite;
   options.allow_hook = args.allow_hook;
+  options.resume_stored = args.resume_stored;
   const bool quiet = args.quiet;
   options.progress = [quiet](const pipeline::RunProgress& p) {
     StopMessage::steps_written();
@@ -273,6 +275,8 @@ void run(const RunArgs& args) {
     std::fprintf(stderr, "wheelwear: warning: %s\n", text.c_str());
   };
 
+  if (args.resume_stored && args.resume.empty())
+    throw InputError("--resume-stored: it goes with --resume FILE (a new run reads its inputs)");
   if (!args.resume.empty()) {
     if (!args.scene.empty() || !args.output.empty()) {
       throw InputError("--resume " + args.resume +
@@ -325,6 +329,9 @@ void add_run_command(CLI::App& app) {
   cmd->add_option("--resume", args->resume,
                   "continue the run recorded in this results file from its last step")
       ->check(CLI::ExistingFile);
+  cmd->add_flag("--resume-stored", args->resume_stored,
+                "with --resume: go on with the inputs stored in the results file although a file "
+                "the scene names has changed since the run started (refused without it)");
   cmd->add_option("--threads", args->threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 4096));
   cmd->add_flag("--overwrite", args->overwrite, "replace an existing output file");

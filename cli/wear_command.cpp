@@ -44,8 +44,10 @@ struct ModelWear {
 };
 
 // Lateral position on the wheel, + towards the flange, of arc length s [m].
+// Lateral position on the wheel in its profile frame (+ towards the field side, 0 at the taping
+// line), as every output gives it.
 double wheel_y(const profiles::Profile& wheel, double s) {
-  return -wheel.position(s).x();
+  return wheel.position(s).x();
 }
 
 ModelWear wear_of(const WearArgs& args, const contactgeom::WheelRailPair& pair,
@@ -102,7 +104,9 @@ void write_map(const std::string& path, const std::vector<std::vector<ModelWear>
     if (!out) throw InputError("--map " + path + ": cannot write there");
     out << "# wheelwear wear map. kind=tgamma: frictional work density per metre rolled [J/m^2/m]"
            " at cell (x_m, y_m) of the patch frame (+y towards the flange); kind=depth: worn"
-           " depth per metre running [m/m] at wheel arc length s_wheel_m\n";
+           " depth per metre running [m/m] at wheel arc length s_wheel_m, lateral position "
+           "y_wheel_m"
+           " (profile frame, + towards the field side, 0 at the taping line)\n";
     out << "patch,model,kind,x_m,y_m,s_wheel_m,y_wheel_m,value\n";
     out.precision(10);
     for (std::size_t k = 0; k < per_patch.size(); ++k) {
@@ -195,7 +199,7 @@ void run_wear(const WearArgs& args) {
       const ModelWear& first = per_patch[k].front();
       JsonObject o;
       o.add("N", p.normal_force)
-          .add("y_wheel", p.y_wheel)
+          .add("y_wheel", -p.y_wheel)
           .add("contact_angle", p.contact_angle)
           .add("worn_volume_per_metre", first.summary.volume_per_metre)
           .add("peak_depth_per_metre", first.summary.peak_depth)
@@ -217,8 +221,10 @@ void run_wear(const WearArgs& args) {
   std::printf("wear law %s, V = %g m/s\n", args.law.c_str(), args.in.motion.speed);
   for (std::size_t k = 0; k < per_patch.size(); ++k) {
     const auto& p = contact.patches[k];
-    std::printf("patch %zu: N %.5g N, O at %.2f mm on the wheel (+ towards the flange)\n", k + 1,
-                p.normal_force, p.y_wheel * 1e3);
+    std::printf(
+        "patch %zu: N %.5g N, O at y = %.2f mm on the wheel (profile frame, + towards the "
+        "field side)\n",
+        k + 1, p.normal_force, -p.y_wheel * 1e3);
     std::printf("  %-12s %14s %14s %12s %12s %10s\n", "model", "volume mm2/km", "peak um/km",
                 "peak y mm", "centroid mm", "band mm");
     for (const ModelWear& w : per_patch[k]) {

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""Plots of a wheelwear results file: profile evolution, wear depth per step, wheel parameters
-and conicity, T gamma maps where the run recorded them, and a vehicle run's curving states,
-time-domain pieces and linear critical speed.
+"""Plots of a wheelwear results file: profile evolution (the profiles, the depth worn since new,
+Delta r(y), the worn area) of every worn wheel, wear depth per step, wheel parameters and
+conicity, where the contacts fall on the wheel, T gamma maps where the run recorded them, and a
+vehicle run's curving states, the route sections the wear comes from, time-domain pieces and
+linear critical speed.
 
     scripts/plot_run.py RUN.h5 [--out DIR]
 
@@ -47,47 +49,118 @@ def distance_colours(groups):
     return [plt.cm.viridis(norm(d)) for d in km], mappable
 
 
+def text(dataset):
+    """A text dataset as str (h5py returns variable-length strings as bytes)."""
+    value = dataset[()]
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def file_label(name):
+    """'wheelsets/2/wheel_left' -> 'wheelset2_left' for file names."""
+    return name.replace("wheelsets/", "wheelset").replace("/wheel_", "_").replace("/", "_")
+
+
 def plot_profiles(f, out):
+    """Per worn profile: the profiles, the depth worn since step 0 (along the new profile's
+    normal, as recorded), the change of rolling radius and the worn area, against distance."""
     groups = steps(f)
-    fig, axes = plt.subplots(3, 1, figsize=(9, 9.5),
-                             gridspec_kw={"height_ratios": [1.0, 1.0, 0.7]})
+    paths = []
+    for index, name in enumerate(wheel_groups(groups[0])):
+        paths.append(plot_profile(groups, name, out, "profile_evolution.png" if index == 0
+                                  else f"profile_evolution_{file_label(name)}.png"))
+    return paths
+
+
+def plot_profile(groups, name, out, file_name):
+    fig, axes = plt.subplots(4, 1, figsize=(9, 12),
+                             gridspec_kw={"height_ratios": [1.0, 1.0, 1.0, 0.7]})
     first = groups[0]
-    name = wheel_groups(first)[0]
     y0 = np.asarray(first[name]["y"]) * 1e3
     z0 = np.asarray(first[name]["z"]) * 1e3
+    s0 = np.asarray(first[name]["cumulative_wear"]["s"])
+    # Where each point of the new profile's arc-length grid lies across the wheel.
+    y_of_s = np.interp(s0, np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(y0), np.diff(z0)))])
+                       / 1e3, y0)
     colours, mappable = distance_colours(groups)
-    grid = np.linspace(-45.0, 50.0, 951)
-    worn = np.zeros_like(grid)
+    # Delta r in um while it stays below 0.1 mm, so that a running-in run does not look flat.
+    last_dr = np.asarray(groups[-1][name]["radius_change"]["value"])
+    small = not np.nanmax(np.abs(last_dr), initial=0.0) >= 1e-4
+    dr_scale, dr_unit = (1e6, "µm") if small else (1e3, "mm")
     area = []
     for g, colour in zip(groups, colours):
-        y = np.asarray(g[name]["y"]) * 1e3
-        z = np.asarray(g[name]["z"]) * 1e3
-        axes[0].plot(y, z, color=colour, lw=0.8)
-        # Cumulative wear normal to the surface: the sum of the steps' depths so far.
-        axes[1].plot(grid, worn * 1e6, color=colour, lw=0.8)
-        area.append(np.trapz(worn * 1e3, grid))  # [mm^2]: depth in mm along y in mm
-        step = g[name]["wear_step"]
-        if len(step["y"]) >= 2:
-            worn += np.interp(grid, np.asarray(step["y"]) * 1e3, np.asarray(step["depth"]),
-                              left=0.0, right=0.0)
+        p = g[name]
+        axes[0].plot(np.asarray(p["y"]) * 1e3, np.asarray(p["z"]) * 1e3, color=colour, lw=0.8)
+        depth = np.asarray(p["cumulative_wear"]["depth"])
+        axes[1].plot(y_of_s, depth * 1e6, color=colour, lw=0.8)
+        area.append(np.trapz(np.nan_to_num(depth), s0) * 1e6)  # [mm^2]
+        axes[2].plot(np.asarray(p["radius_change"]["y"]) * 1e3,
+                     np.asarray(p["radius_change"]["value"]) * dr_scale, color=colour, lw=0.8)
     mask = (y0 > -45) & (y0 < 50)
     axes[0].set_ylim(z0[mask].max() + 1, z0[mask].min() - 1)
     axes[0].set_ylabel("z [mm] (down)")
-    axes[0].set_title(f"{name} profile, {len(groups) - 1} wear steps "
+    axes[0].set_title(f"{wheel_label(name)} profile, {len(groups) - 1} wear steps "
                       f"to {groups[-1]['distance'][()] / 1e3:.1f} km")
-    axes[1].set_ylabel("worn depth, normal [µm]")
-    axes[1].set_xlabel("y [mm] (+ field side, flange at -y)")
-    for ax in axes[:2]:
+    axes[1].set_ylabel("worn since new, normal [µm]")
+    axes[1].set_title("depth worn since step 0, along the new profile's normal", fontsize=10)
+    axes[2].set_ylabel(f"Δr(y) [{dr_unit}]")
+    axes[2].set_title("change of rolling radius at each lateral position", fontsize=10)
+    axes[2].set_xlabel("y [mm] (profile frame: + field side, 0 taping line, flange at -y)")
+    for ax in axes[:3]:
         ax.set_xlim(-45, 50)
+        ax.grid(alpha=0.3)
         fig.colorbar(mappable, ax=ax, label="distance [km]", pad=0.01)
     km = np.array([g["distance"][()] for g in groups]) / 1e3
-    axes[2].plot(km, area, marker="o", ms=3)
-    axes[2].set_xlabel("distance [km]")
-    axes[2].set_ylabel("worn area [mm²]")
-    axes[2].set_title("worn cross-section (the worn depth integrated across the profile)",
+    axes[3].plot(km, area, marker="o", ms=3)
+    axes[3].set_xlabel("distance [km]")
+    axes[3].set_ylabel("worn area [mm²]")
+    axes[3].set_title("worn cross-section (the worn depth integrated along the profile)",
                       fontsize=10)
-    axes[2].grid(alpha=0.3)
-    path = os.path.join(out, "profile_evolution.png")
+    axes[3].grid(alpha=0.3)
+    path = os.path.join(out, file_name)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
+def state_weights(f, g):
+    """Each state's share of the running distance at step g (the step's own collective in a
+    vehicle or hook run, else the run's)."""
+    collective = g["collective"] if "collective" in g else f["load_collective"]
+    weight = np.asarray(collective["weight"], dtype=float)
+    return weight / weight.sum(), collective
+
+
+def plot_contact_positions(f, out):
+    """Where the contacts fall on each wheel, first and last step: the normal force of every
+    patch weighted by its state's share of the distance, in 1 mm bins across the wheel."""
+    groups = steps(f)
+    if "states" not in groups[0] or "y_wheel" not in groups[0]["states"]:
+        return None
+    fig, axes = plt.subplots(2, 1, figsize=(9, 7), sharex=True)
+    bins = np.arange(-45.0, 51.0, 1.0)
+    for g, style, when in ((groups[0], "-", "first step"), (groups[-1], "--", "last step")):
+        weight, _ = state_weights(f, g)
+        y = np.asarray(g["states"]["y_wheel"]) * 1e3
+        force = np.asarray(g["states"]["normal_force"])
+        angle = np.asarray(g["states"]["contact_angle"])
+        for wheel, side in enumerate(("left", "right")):
+            w = (weight[:, None] * force[:, wheel, :]).ravel()
+            yy = y[:, wheel, :].ravel()
+            ok = np.isfinite(yy) & np.isfinite(w)
+            hist, _ = np.histogram(yy[ok], bins=bins, weights=w[ok] / 1e3)
+            axes[0].step(bins[:-1], hist, style, where="post", label=f"{side} wheel, {when}")
+            a = angle[:, wheel, :].ravel()
+            axes[1].plot(yy[ok], np.degrees(a[ok]), "o" if when == "first step" else "x",
+                         ms=3, alpha=0.5, label=f"{side} wheel, {when}")
+    axes[0].set_ylabel("normal force × share [kN] per mm")
+    axes[0].set_title("where the contacts fall on the wheel")
+    axes[1].set_ylabel("contact angle [°]")
+    axes[1].set_xlabel("y on the wheel [mm] (profile frame: + field side, flange at -y)")
+    for ax in axes:
+        ax.legend(fontsize=7)
+        ax.grid(alpha=0.3)
+    path = os.path.join(out, "contact_positions.png")
     fig.tight_layout()
     fig.savefig(path, dpi=130)
     plt.close(fig)
@@ -270,7 +343,7 @@ def plot_vehicle(f, out):
         area = np.nansum(np.asarray(first["states"]["worn_area"]), axis=(1, 2))
         weight = np.asarray(first["collective"]["weight"])
         weight = weight / weight.sum()
-        labels = first["collective"]["label"][()].decode().splitlines()
+        labels = text(first["collective"]["label"]).splitlines()
         conditions = [label.rsplit(", wheelset", 1)[0] for label in labels]
         totals = {}
         for condition, a, w in zip(conditions, area, weight):
@@ -349,11 +422,12 @@ def main():
     with f:
         if "steps" not in f or len(f["steps"]) == 0:
             sys.exit(f"plot_run.py: {args.run} holds no steps")
-        for plot in (plot_profiles, plot_wear_depth, plot_parameters, plot_tgamma, plot_vehicle,
-                     plot_vehicle_motion):
-            path = plot(f, out)
-            if path:
-                print(path)
+        for plot in (plot_profiles, plot_wear_depth, plot_parameters, plot_contact_positions,
+                     plot_tgamma, plot_vehicle, plot_vehicle_motion):
+            paths = plot(f, out)
+            for path in paths if isinstance(paths, list) else [paths]:
+                if path:
+                    print(path)
 
 
 if __name__ == "__main__":

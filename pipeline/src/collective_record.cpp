@@ -57,7 +57,7 @@ const std::vector<CollectiveColumn>& collective_columns() {
        [](const S& s) { return s.weight; }},
       {"wheelset", "1",
        "physical wheelset (1-4, forward order of travel) whose own profiles the state wears "
-       "(NaN: not given)",
+       "(-1: not given)",
        [](const S& s) { return s.wheelset < 0 ? kNaN : s.wheelset + 1.0; }},
       {"reversed", "1", "1: the vehicle runs the route backwards (left in travel = physical right)",
        [](const S& s) { return s.reversed ? 1.0 : 0.0; }},
@@ -75,6 +75,8 @@ void add_collective(GroupRecord& g, const std::string& prefix,
     std::vector<double> values;
     for (const WheelsetStateSpec& s : states) values.push_back(c.get(s));
     g.arrays.push_back(vector(prefix + c.name, std::move(values), c.units, c.description));
+    const std::string_view name = c.name;
+    g.arrays.back().integer = name == "wheelset" || name == "reversed";
   }
   std::vector<double> line;
   std::string labels;
@@ -82,7 +84,8 @@ void add_collective(GroupRecord& g, const std::string& prefix,
     line.push_back(s.line);
     labels += s.label + '\n';
   }
-  g.arrays.push_back(vector(prefix + "line", line, "1", "line of the state in its scene or file"));
+  g.arrays.push_back(
+      as_integer(vector(prefix + "line", line, "1", "line of the state in its scene or file")));
   g.texts.push_back({prefix + "label", labels, "the states' labels, one per line"});
 }
 
@@ -103,7 +106,8 @@ std::vector<WheelsetStateSpec> read_collective(const ResultsFile& file, int step
       throw InputError(where + c.name + ": " + std::to_string(values.size()) + " rows, " +
                        std::to_string(states.size()) + " expected");
     for (std::size_t i = 0; i < values.size(); ++i)
-      if (!std::isnan(values[i])) set_state_field(states[i], {c.name, values[i], {}}, where);
+      if (value_given(c.name, values[i]))
+        set_state_field(states[i], {c.name, values[i], {}}, where);
   }
   const std::vector<double> line = file.read_step_array(step, prefix + "line");
   std::istringstream labels(

@@ -44,8 +44,8 @@ std::optional<HookCall> update_hook(const CosimulationHook& hook, const fs::path
 
 void add_hook_record(GroupRecord& g, const std::optional<HookCall>& call, const HookCarry& carry,
                      double depth_after) {
-  g.arrays.push_back(
-      scalar("hook/called", call ? 1.0 : 0.0, "1", "1 when the hook made this step's collective"));
+  g.arrays.push_back(as_integer(
+      scalar("hook/called", call ? 1.0 : 0.0, "1", "1 when the hook made this step's collective")));
   g.arrays.push_back(scalar("hook/depth_since_call", depth_after, "m",
                             "deepest wear since the hook's last call, this step's included "
                             "(an upper bound: the steps' deepest increments summed)"));

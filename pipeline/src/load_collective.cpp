@@ -229,12 +229,22 @@ std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
   return states;
 }
 
-std::vector<WheelsetStateSpec> read_collective_hdf5(const std::filesystem::path& path,
+bool value_given(std::string_view column, double value) {
+  return !std::isnan(value) && !(column == "wheelset" && value < 0.0);
+}
+
+std::vector<WheelsetStateSpec> read_collective_hdf5(const std::string& image,
+                                                    const std::string& file_name,
                                                     const std::string& group) {
-  const std::string file_name = path.string();
   try {
     H5::Exception::dontPrint();
-    H5::H5File file(file_name, H5F_ACC_RDONLY);
+    // Opened from the bytes the scene read (its stored copy on resume), not from the disk.
+    H5::FileAccPropList access;
+    H5Pset_fapl_core(access.getId(), 1 << 16, false);
+    H5Pset_file_image(access.getId(), const_cast<char*>(image.data()), image.size());
+    // The core driver refuses a name that exists on disk: the image gets one of its own.
+    H5::H5File file("wheelwear collective image", H5F_ACC_RDONLY, H5::FileCreatPropList::DEFAULT,
+                    access);
     if (!file.nameExists(group))
       throw InputError(file_name + ": no group '" + group + "' with the collective's columns");
     H5::Group g = file.openGroup(group);
@@ -263,8 +273,9 @@ std::vector<WheelsetStateSpec> read_collective_hdf5(const std::filesystem::path&
       const std::string where = file_name + " row " + std::to_string(r);
       states[r].line = static_cast<int>(r);
       for (const auto& [name, values] : data) {
-        // NaN marks a value not given in an optional column, as blank cells do in CSV.
-        if (std::isnan(values[r])) continue;
+        // NaN (or -1 in the integer wheelset column) marks a value not given in an optional
+        // column, as blank cells do in CSV.
+        if (!value_given(name, values[r])) continue;
         set_state_field(states[r], {name, values[r], {}}, where);
       }
       finish_state(states[r], where);

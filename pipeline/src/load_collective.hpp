@@ -36,8 +36,14 @@ std::string state_field_names();
 std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
                                                    const std::string& file_name);
 
-/// States from an HDF5 file: one 1-D dataset per column (same names) in `group`.
-std::vector<WheelsetStateSpec> read_collective_hdf5(const std::filesystem::path& path,
+/// Whether a column's value in an HDF5 collective is given: NaN is not, nor is the integer
+/// fill value -1 of the `wheelset` column.
+bool value_given(std::string_view column, double value);
+
+/// States from an HDF5 file's bytes (`image`; `file_name` names it in messages): one 1-D
+/// dataset per column (same names) in `group`.
+std::vector<WheelsetStateSpec> read_collective_hdf5(const std::string& image,
+                                                    const std::string& file_name,
                                                     const std::string& group);
 
 }  // namespace wheelwear::pipeline::detail

@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <system_error>
 #include <vector>
@@ -56,11 +58,18 @@ void publish(const fs::path& partial, const fs::path& path) {
   sync_to_disk(directory, true);
 }
 
+// Text as variable-length UTF-8 strings: h5py reads them as str, not bytes.
+H5::StrType utf8_text() {
+  H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
+  type.setCset(H5T_CSET_UTF8);
+  return type;
+}
+
 void write_string_attribute(H5::H5Object& object, const std::string& name,
                             const std::string& value) {
-  const H5::StrType type(H5::PredType::C_S1, value.empty() ? 1 : value.size());
+  const H5::StrType type = utf8_text();
   H5::Attribute attribute = object.createAttribute(name, type, H5::DataSpace(H5S_SCALAR));
-  attribute.write(type, value.empty() ? std::string(1, '\0') : value);
+  attribute.write(type, value);
 }
 
 void write_int_attribute(H5::H5Object& object, const std::string& name, int value) {
@@ -94,7 +103,7 @@ std::string ensure_parents(H5::H5File& file, const std::string& root, const std:
 
 void write_text(H5::H5File& file, const std::string& path, const std::string& text,
                 const std::string& description) {
-  const H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
+  const H5::StrType type = utf8_text();
   H5::DataSet data = file.createDataSet(path, type, H5::DataSpace(H5S_SCALAR));
   data.write(text, type);
   // Every dataset carries units; a text has none to give.
@@ -131,14 +140,40 @@ void write_group(H5::H5File& file, const std::string& root, const GroupRecord& g
       properties.setShuffle();
       properties.setDeflate(4);
     }
-    H5::DataSet data = file.createDataSet(ensure_parents(file, root, array.name),
-                                          H5::PredType::NATIVE_DOUBLE, space, properties);
-    if (count > 0) data.write(array.values.data(), H5::PredType::NATIVE_DOUBLE);
+    H5::DataSet data;
+    if (array.integer) {
+      const std::int64_t fill = -1;
+      properties.setFillValue(H5::PredType::NATIVE_INT64, &fill);
+      std::vector<std::int64_t> integers(count, fill);
+      for (std::size_t i = 0; i < count; ++i) {
+        const double v = array.values[i];
+        if (std::isnan(v)) continue;
+        require(v == std::round(v) && std::abs(v) < 9e15, array.name, v,
+                "an integer dataset takes integral values");
+        integers[i] = static_cast<std::int64_t>(v);
+      }
+      data = file.createDataSet(ensure_parents(file, root, array.name), H5::PredType::STD_I64LE,
+                                space, properties);
+      if (count > 0) data.write(integers.data(), H5::PredType::NATIVE_INT64);
+    } else {
+      data = file.createDataSet(ensure_parents(file, root, array.name), H5::PredType::NATIVE_DOUBLE,
+                                space, properties);
+      if (count > 0) data.write(array.values.data(), H5::PredType::NATIVE_DOUBLE);
+    }
     write_string_attribute(data, "units", array.units);
     write_string_attribute(data, "description", array.description);
   }
   for (const TextRecord& text : group.texts)
     write_text(file, ensure_parents(file, root, text.name), text.text, text.description);
+  for (const BytesRecord& record : group.bytes) {
+    const hsize_t size = record.bytes.size();
+    H5::DataSet data = file.createDataSet(ensure_parents(file, root, record.name),
+                                          H5::PredType::NATIVE_UINT8, H5::DataSpace(1, &size));
+    if (size > 0) data.write(record.bytes.data(), H5::PredType::NATIVE_UINT8);
+    write_string_attribute(data, "units", "bytes");
+    write_string_attribute(data, "description", record.description);
+    for (const auto& [name, value] : record.attributes) write_string_attribute(data, name, value);
+  }
 }
 
 // Writes a new file by `write` as `path`'s partial copy and publishes it; on any failure the
@@ -214,7 +249,7 @@ std::string ResultsFile::step_group(int step) {
 ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_text, bool overwrite,
                                 const GroupRecord& load_collective,
                                 const std::map<std::string, std::string>& root_attributes,
-                                const GroupRecord& run_info) {
+                                const GroupRecord& run_info, const GroupRecord& inputs) {
   if (fs::exists(path) && !overwrite) {
     throw InputError("output " + path.string() +
                      ": the file exists; choose another name or pass --overwrite to replace it");
@@ -230,6 +265,7 @@ ResultsFile ResultsFile::create(const fs::path& path, std::string_view scene_tex
     write_int_attribute(steps, "completed_steps", 0);
     if (!run_info.arrays.empty() || !run_info.texts.empty())
       write_group(file, "/run_info", run_info);
+    if (!inputs.bytes.empty()) write_group(file, "/inputs", inputs);
   });
   // The step files of an earlier run under this name belong to the file just replaced.
   fs::remove_all(steps_directory(path));
@@ -262,7 +298,7 @@ ResultsFile ResultsFile::read(const fs::path& path) {
       throw InputError("results file " + path.string() + ": not a wheelwear results file");
     H5::DataSet scene = file.openDataSet("/scene");
     std::string text;
-    scene.read(text, H5::StrType(H5::PredType::C_S1, H5T_VARIABLE));
+    scene.read(text, scene.getStrType());
     const int steps = read_int_attribute(file.openGroup("/steps"), "completed_steps");
     return ResultsFile(path, text, steps);
   } catch (const H5::Exception& error) {
@@ -363,6 +399,13 @@ void ResultsFile::consolidate() {
     if (folder.extension() == ".steps") fs::remove_all(folder);
 }
 
+void ResultsFile::link(const std::string& link, const std::string& target) {
+  change_atomically(path_, [&](H5::H5File& file) {
+    if (file.nameExists(link)) file.unlink(link);
+    file.link(H5L_TYPE_SOFT, target, link);
+  });
+}
+
 void ResultsFile::write_run_info(const GroupRecord& info) {
   change_atomically(path_, [&](H5::H5File& file) {
     if (file.nameExists("/run_info")) file.unlink("/run_info");
@@ -453,12 +496,48 @@ std::optional<std::string> ResultsFile::read_text(const std::string& full) const
     H5::H5File file(path_.string(), H5F_ACC_RDONLY);
     if (!file.nameExists(full)) return std::nullopt;
     std::string text;
-    file.openDataSet(full).read(text, H5::StrType(H5::PredType::C_S1, H5T_VARIABLE));
+    const H5::DataSet data = file.openDataSet(full);
+    data.read(text, data.getStrType());
     return text;
   } catch (const H5::Exception& error) {
     throw InputError("results file " + path_.string() + ": cannot read " + full + " (" +
                      error.getDetailMsg() + ")");
   }
+}
+
+std::vector<BytesRecord> ResultsFile::read_bytes(const std::string& group) const {
+  std::vector<BytesRecord> records;
+  try {
+    H5::Exception::dontPrint();
+    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
+    if (!file.nameExists(group)) return records;
+    const H5::Group g = file.openGroup(group);
+    for (hsize_t i = 0; i < g.getNumObjs(); ++i) {
+      const std::string name = g.getObjnameByIdx(i);
+      if (g.getObjTypeByIdx(i) != H5G_DATASET) continue;
+      const H5::DataSet data = g.openDataSet(name);
+      if (data.getTypeClass() != H5T_INTEGER) continue;
+      BytesRecord record;
+      record.name = name;
+      record.bytes.resize(static_cast<std::size_t>(data.getSpace().getSimpleExtentNpoints()));
+      if (!record.bytes.empty()) data.read(record.bytes.data(), H5::PredType::NATIVE_UINT8);
+      for (int a = 0; a < data.getNumAttrs(); ++a) {
+        const H5::Attribute attribute = data.openAttribute(static_cast<unsigned>(a));
+        if (attribute.getTypeClass() != H5T_STRING) continue;
+        std::string value;
+        attribute.read(attribute.getStrType(), value);
+        if (attribute.getName() == "description")
+          record.description = value;
+        else
+          record.attributes[attribute.getName()] = value;
+      }
+      records.push_back(std::move(record));
+    }
+  } catch (const H5::Exception& error) {
+    throw InputError("results file " + path_.string() + ": cannot read " + group + " (" +
+                     error.getDetailMsg() + ")");
+  }
+  return records;
 }
 
 }  // namespace wheelwear::pipeline

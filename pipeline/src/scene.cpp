@@ -39,7 +39,6 @@ using detail::builtin_or_file;
 using detail::inline_states;
 using detail::max_drop;
 using detail::profile_spec;
-using detail::resolve;
 using detail::scene_tangential_method;
 using detail::wheel_origin;
 
@@ -56,6 +55,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
     throw InputError(out.str());
   }
   Scene s;
+  detail::SceneFiles files(base_directory, read);
   bool inclination_given = false;
   std::optional<int> collective_line;
   int tangential_line = 0;
@@ -90,7 +90,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
       {"wheel", section("wheel",
                         {{"profile",
                           [&](const auto& n, const auto& k) {
-                            s.wheel_profile = profile_spec(n, k, base_directory, "S1002");
+                            s.wheel_profile = profile_spec(n, k, files, "S1002", s.wheel_file);
                           }},
                          {"radius_m",
                           [&](const auto& n, const auto& k) {
@@ -113,7 +113,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
       {"rail", section("rail",
                        {{"profile",
                          [&](const auto& n, const auto& k) {
-                           s.rail_profile = profile_spec(n, k, base_directory, "60E1");
+                           s.rail_profile = profile_spec(n, k, files, "60E1", s.rail_file);
                          }},
                         {"max_drop",
                          [&](const auto& n, const auto& k) {
@@ -241,12 +241,14 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                                             : "archard";
                          }},
                         {"law_table", [&](const auto& n, const auto& k) {
-                           const fs::path file = resolve(base_directory, text(n, k));
-                           if (!fs::is_regular_file(file)) {
+                           const fs::path file = files.resolve(text(n, k));
+                           auto content = files.read(k, file);
+                           if (!content) {
                              throw InputError(where(n.source(), k) + ": no such file " +
                                               file.string());
                            }
                            law_table = file.string();
+                           s.wear_law_text = std::move(*content);
                          }}})},
       {"run",
        section(
@@ -299,13 +301,15 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                  [&](const auto& n, const auto& k) {
                    vehicle_line = static_cast<int>(n.source().begin.line);
                    const auto file = builtin_or_file(
-                       n, k, base_directory,
-                       "the built-in coach",
+                       n, k, files, "the built-in coach",
                        "a vehicle file (wheelwear curving --export-default-vehicle DIR writes "
                        "one to start from)");
                    VehicleRun& run = vehicle_run();
-                   run.vehicle = file ? vehicle::read_vehicle(*file) : vehicle::default_vehicle();
-                   run.vehicle_file = file ? file->string() : std::string();
+                   run.vehicle =
+                       file ? vehicle::parse_vehicle(file->content, "vehicle file " +
+                                                                        file->path.string())
+                            : vehicle::default_vehicle();
+                   run.vehicle_file = file ? file->path.string() : std::string();
                  }},
                 {"wheelsets",
                  [&](const auto& n, const auto& k) {
@@ -336,11 +340,13 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                           [&](const auto& n, const auto& k) {
                             route_line = static_cast<int>(n.source().begin.line);
                             const auto file = builtin_or_file(
-                                n, k, base_directory,
-                                "the built-in mixed line", "a route file (docs/routes.md)");
+                                n, k, files, "the built-in mixed line",
+                                "a route file (docs/routes.md)");
                             VehicleRun& run = vehicle_run();
-                            run.route = file ? vehicle::read_route(*file) : vehicle::default_route();
-                            run.route_file = file ? file->string() : std::string();
+                            run.route = file ? vehicle::parse_route(file->content,
+                                                                    file->path.string())
+                                             : vehicle::default_route();
+                            run.route_file = file ? file->path.string() : std::string();
                           }},
                          {"direction", [&](const auto& n, const auto& k) {
                             vehicle_run().direction = static_cast<RunningDirection>(one_of(
@@ -351,31 +357,25 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
       {"time_domain", section("time_domain",
                               detail::time_domain_keys(
                                   [&]() -> TimeDomainKeys& { return vehicle_run().time_domain; },
-                                  base_directory))},
+                                  files))},
       {"hook", section("hook", detail::hook_keys(hook))},
       {"load_collective",
        section("load_collective",
                {{"file",
                  [&](const auto& n, const auto& k) {
                    collective_line = static_cast<int>(n.source().begin.line);
-                   const fs::path file = resolve(base_directory, text(n, k));
+                   const fs::path file = files.resolve(text(n, k));
                    const std::string ext = core::to_lower(file.extension().string());
-                   if (ext == ".h5" || ext == ".hdf5") {
-                     if (!fs::is_regular_file(file))
-                       throw InputError(where(n.source(), k) + ": no such file " + file.string());
-                     auto states = detail::read_collective_hdf5(file, "/");
+                   const bool hdf5 = ext == ".h5" || ext == ".hdf5";
+                   const auto content = files.read(k, file, !hdf5);
+                   if (!content)
+                     throw InputError(where(n.source(), k) + ": no such file " + file.string());
+                   if (hdf5) {
+                     auto states = detail::read_collective_hdf5(*content, file.string(), "/");
                      s.states.insert(s.states.end(), states.begin(), states.end());
                      return;
                    }
-                   std::string content;
-                   if (read) {
-                     content = read(file);
-                   } else {
-                     if (!fs::is_regular_file(file))
-                       throw InputError(where(n.source(), k) + ": no such file " + file.string());
-                     content = core::read_text_file(file);
-                   }
-                   auto states = detail::read_collective_csv(content, file.filename().string());
+                   auto states = detail::read_collective_csv(*content, file.filename().string());
                    s.states.insert(s.states.end(), states.begin(), states.end());
                  }},
                 {"state", [&](const auto& n, const auto& k) {
@@ -413,6 +413,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                      " is beyond 400 x 400 (seconds and gigabytes per patch): use at most 400");
   }
   s.wear_law_table = law_table;
+  s.inputs = files.take();
   s.step_distance = std::min(s.step_distance, s.distance);  // one step need not exceed the run
   const double steps = std::ceil(s.distance / s.step_distance);
   if (steps > kStepsLimit) {
@@ -476,7 +477,8 @@ Scene load_scene(const fs::path& path) {
   if (!fs::is_regular_file(path)) throw InputError("scene " + path.string() + ": no such file");
   const std::string text = core::read_text_file(path);
   try {
-    return parse_scene(text, path.parent_path());
+    // Absolute: the files it names are recorded by the paths a resumed run looks them up by.
+    return parse_scene(text, fs::absolute(path).parent_path());
   } catch (const InputError& error) {
     throw InputError(path.string() + ": " + error.what());
   }

@@ -8,11 +8,13 @@
 namespace wheelwear::pipeline::detail {
 
 std::map<std::string, KeyHandler> time_domain_keys(const std::function<TimeDomainKeys&()>& keys,
-                                                   const std::filesystem::path& base) {
+                                                   SceneFiles& files) {
   return {
       {"enabled", [=](const auto& n, const auto& k) { keys().enabled = boolean(n, k); }},
       {"irregularities",
-       [=](const auto& n, const auto& k) { time_domain_irregularities(n, k, base, keys()); }},
+       [=, &files](const auto& n, const auto& k) {
+         time_domain_irregularities(n, k, files, keys());
+       }},
       {"seed",
        [=](const auto& n, const auto& k) {
          keys().seed =

@@ -33,17 +33,14 @@ std::optional<SceneTangential> scene_tangential_method(const std::string& name) 
   }
 }
 
-std::filesystem::path resolve(const std::filesystem::path& base, const std::string& name) {
-  const std::filesystem::path p(name);
-  return p.is_absolute() || base.empty() ? p : base / p;
-}
-
-std::string profile_spec(const toml::node& node, const std::string& key,
-                         const std::filesystem::path& base, std::string_view standard) {
+std::string profile_spec(const toml::node& node, const std::string& key, SceneFiles& files,
+                         std::string_view standard, profiles::ProfileFileOptions& options) {
   const std::string spec = text(node, key);
+  options.text.reset();
   if (core::to_lower(spec) == core::to_lower(standard)) return std::string(standard);
-  const std::filesystem::path file = resolve(base, spec);
-  if (!std::filesystem::is_regular_file(file)) {
+  const std::filesystem::path file = files.resolve(spec);
+  options.text = files.read(key, file);
+  if (!options.text) {
     throw InputError(where(node.source(), key) + " = \"" + spec + "\": no such file (looked for " +
                      file.string() + "); give \"" + std::string(standard) +
                      "\" or a profile file, relative to the scene file");
@@ -51,23 +48,23 @@ std::string profile_spec(const toml::node& node, const std::string& key,
   return file.string();
 }
 
-std::optional<std::filesystem::path> builtin_or_file(const toml::node& node, const std::string& key,
-                                                     const std::filesystem::path& base,
-                                                     std::string_view builtin,
-                                                     std::string_view file_kind) {
+std::optional<BuiltinOrFile> builtin_or_file(const toml::node& node, const std::string& key,
+                                             SceneFiles& files, std::string_view builtin,
+                                             std::string_view file_kind) {
   const std::string name = text(node, key);
   if (name == "default") return std::nullopt;
-  const std::filesystem::path file = resolve(base, name);
-  if (!std::filesystem::is_regular_file(file)) {
+  const std::filesystem::path file = files.resolve(name);
+  auto content = files.read(key, file);
+  if (!content) {
     throw InputError(where(node.source(), key) + " = \"" + name + "\": no such file (looked for " +
                      file.string() + "); give \"default\" (" + std::string(builtin) + ") or " +
                      std::string(file_kind));
   }
-  return file;
+  return BuiltinOrFile{file, std::move(*content)};
 }
 
-void time_domain_irregularities(const toml::node& node, const std::string& key,
-                                const std::filesystem::path& base, TimeDomainKeys& keys) {
+void time_domain_irregularities(const toml::node& node, const std::string& key, SceneFiles& files,
+                                TimeDomainKeys& keys) {
   const std::string name = text(node, key);
   if (name == "none" || name == "erri-low" || name == "erri-high") {
     keys.irregularities = name == "none"       ? IrregularitySource::none
@@ -77,15 +74,16 @@ void time_domain_irregularities(const toml::node& node, const std::string& key,
     keys.irregularity_file.clear();
     return;
   }
-  const std::filesystem::path file = resolve(base, name);
-  if (!std::filesystem::is_regular_file(file))
+  const std::filesystem::path file = files.resolve(name);
+  const auto content = files.read(key, file);
+  if (!content)
     throw InputError(where(node.source(), key) + " = \"" + name + "\": no such file (looked for " +
                      file.string() +
                      "); give erri-low or erri-high (ERRI B176 spectra, generated "
                      "per section from [time_domain] seed), none (ideal track) or a measured "
                      "irregularity file (docs/track_irregularities.md)");
   try {
-    keys.measured = vehicle::read_irregularities(file);
+    keys.measured = vehicle::parse_irregularities(*content, file.string());
   } catch (const InputError& e) {
     throw InputError(where(node.source(), key) + ": " + e.what());
   }
@@ -133,7 +131,7 @@ std::vector<std::string> hook_command(const toml::node& node, const std::string&
   }
   const std::filesystem::path program(command.front());
   if (program.is_relative() && command.front().find('/') != std::string::npos)
-    command.front() = resolve(base, command.front()).string();
+    command.front() = SceneFiles(base, {}).resolve(command.front()).string();
   return command;
 }
 

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "scene_files.hpp"
 #include "wheelwear/pipeline/scene.hpp"
 
 namespace wheelwear::pipeline::detail {
@@ -26,24 +27,27 @@ struct SceneTangential {
 // The method a name gives; none for names that are no scene method.
 std::optional<SceneTangential> scene_tangential_method(const std::string& name);
 
-// `name` taken relative to `base` unless it is absolute or `base` is empty.
-std::filesystem::path resolve(const std::filesystem::path& base, const std::string& name);
+// A profile is a standard name (`standard`, any case) or a file, which must exist; a file's
+// bytes go to options.text.
+std::string profile_spec(const toml::node& node, const std::string& key, SceneFiles& files,
+                         std::string_view standard, profiles::ProfileFileOptions& options);
 
-// A profile is a standard name (`standard`, any case) or a file, which must exist.
-std::string profile_spec(const toml::node& node, const std::string& key,
-                         const std::filesystem::path& base, std::string_view standard);
+// A file a key names, as read.
+struct BuiltinOrFile {
+  std::filesystem::path path;
+  std::string content;
+};
 
 // A file named by `key`, or none for "default" (the built-in one, `builtin`); a file that does
 // not exist is refused, naming both choices (`file_kind`: what kind of file to give).
-std::optional<std::filesystem::path> builtin_or_file(const toml::node& node, const std::string& key,
-                                                     const std::filesystem::path& base,
-                                                     std::string_view builtin,
-                                                     std::string_view file_kind);
+std::optional<BuiltinOrFile> builtin_or_file(const toml::node& node, const std::string& key,
+                                             SceneFiles& files, std::string_view builtin,
+                                             std::string_view file_kind);
 
 // [time_domain] irregularities: "erri-low", "erri-high", "none" or a measured file (read here,
 // refused naming the key if it cannot be).
-void time_domain_irregularities(const toml::node& node, const std::string& key,
-                                const std::filesystem::path& base, TimeDomainKeys& keys);
+void time_domain_irregularities(const toml::node& node, const std::string& key, SceneFiles& files,
+                                TimeDomainKeys& keys);
 
 // [wheel] origin: "auto", "taping-line" or "internal-face" (profiles::WheelOrigin).
 profiles::WheelOrigin wheel_origin(const toml::node& node, const std::string& key);

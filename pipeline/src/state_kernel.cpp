@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "wheelwear/contactgeom/kinematics.hpp"
 #include "wheelwear/core/input_error.hpp"
@@ -101,8 +102,10 @@ StateKernel::StateKernel(const Scene& scene)
       law_(wear::TgammaLaw::usfd()),
       method_(scene_method(scene.model, scene.tangential)) {
   if (!scene.wear_law_table.empty()) {
-    if (scene.wear_law == "usfd") law_ = wear::TgammaLaw::load_csv(scene.wear_law_table);
-    if (scene.wear_law == "archard") law_ = wear::ArchardLaw::load_csv(scene.wear_law_table);
+    // The table as the scene read it (the stored copy on resume), not the file as it is now.
+    std::istringstream table(scene.wear_law_text);
+    if (scene.wear_law == "usfd") law_ = wear::TgammaLaw::read_csv(table, scene.wear_law_table);
+    if (scene.wear_law == "archard") law_ = wear::ArchardLaw::read_csv(table, scene.wear_law_table);
   } else {
     const auto law = wear::default_wear_law(scene.wear_law);
     if (!law) throw InputError("scene: wear.law = " + scene.wear_law + ": unknown wear law");

@@ -10,6 +10,7 @@
 
 #include "vehicle_record.hpp"
 #include "wheelwear/contactgeom/equivalent_conicity.hpp"
+#include "wheelwear/profiles/wear_measures.hpp"
 
 namespace wheelwear::pipeline::detail {
 
@@ -78,23 +79,26 @@ void add_state_summaries(GroupRecord& g, const std::vector<StateOutcome>& states
   const std::size_t n = states.size();
   const std::size_t slots = largest_patch_count(states);
   auto wheel_array = [&](const char* name, std::vector<double> v, const char* units,
-                         const char* what) {
-    g.arrays.push_back({std::string("states/") + name, std::move(v), {n, 2}, units, what});
+                         const char* what, bool integer = false) {
+    g.arrays.push_back({std::string("states/") + name, std::move(v), {n, 2}, units, what, integer});
   };
   auto patch_array = [&](const char* name, std::vector<double> v, const char* units,
-                         const char* what) {
-    g.arrays.push_back({std::string("states/") + name, std::move(v), {n, 2, slots}, units, what});
+                         const char* what, bool integer = false) {
+    g.arrays.push_back(
+        {std::string("states/") + name, std::move(v), {n, 2, slots}, units, what, integer});
   };
   using P = const PatchOutcome&;
   using W = const WheelOutcome&;
   wheel_array("status", per_wheel(states, [](W w) { return static_cast<double>(w.status); }), "1",
               "[state, wheel (left, right)] contact status: 0 ok, 1 no contact, 2 flange climb, "
-              "3 not converged, 4 load jump, 5 profile end, 6 past the flange");
+              "3 not converged, 4 load jump, 5 profile end, 6 past the flange",
+              true);
   wheel_array("drop_reason",
               per_wheel(states, [](W w) { return static_cast<double>(w.drop_reason()); }), "1",
               "[state, wheel] why the wheel keeps its state from being worn: 0 none, 1 failed, "
               "2 climbing, 3 load jump, 4 beyond Nadal's limit (a state with any reason is not "
-              "worn)");
+              "worn)",
+              true);
   wheel_array("nadal_delta", per_wheel(states, [](W w) { return w.nadal.delta; }), "rad",
               "[state, wheel] Nadal's delta: the largest contact angle of the patches carrying "
               "10 % of the wheel's normal load (status ok only, else 0)");
@@ -106,7 +110,7 @@ void add_state_summaries(GroupRecord& g, const std::vector<StateOutcome>& states
   wheel_array(
       "patches",
       per_wheel(states, [](W w) { return w.usable() ? static_cast<double>(w.patches.size()) : 0; }),
-      "1", "[state, wheel] number of contact patches (the per-patch arrays' entries)");
+      "1", "[state, wheel] number of contact patches (the per-patch arrays' entries)", true);
   wheel_array("dy", per_wheel(states, [](W w) { return w.dy; }), "m",
               "[state, wheel] lateral shift of the wheel, + towards its flange");
   std::vector<double> roll(n);
@@ -121,7 +125,8 @@ void add_state_summaries(GroupRecord& g, const std::vector<StateOutcome>& states
   wheel_array("lateral_fit",
               per_wheel(states, [](W w) { return static_cast<double>(w.lateral_fit); }), "1",
               "[state, wheel] prescribed lateral force: 0 not given, 1 matched, 2 position kept, "
-              "3 flange just unloaded, 4 not matched");
+              "3 flange just unloaded, 4 not matched",
+              true);
   patch_array("normal_force", per_patch(states, slots, false, [](P p) { return p.normal_force; }),
               "N", "[state, wheel, patch] normal force");
   patch_array("a", per_patch(states, slots, false, [](P p) { return p.sdec.a; }), "m",
@@ -130,8 +135,9 @@ void add_state_summaries(GroupRecord& g, const std::vector<StateOutcome>& states
               "[state, wheel, patch] SDEC semi-axis along y (Eq. 13)");
   patch_array("psi", per_patch(states, slots, false, [](P p) { return p.sdec.psi; }), "1",
               "[state, wheel, patch] SDEC asymmetry psi (Eq. 14)");
-  patch_array("y_wheel", per_patch(states, slots, false, [](P p) { return p.y_wheel; }), "m",
-              "[state, wheel, patch] O on the wheel, + towards the flange");
+  patch_array("y_wheel", per_patch(states, slots, false, [](P p) { return -p.y_wheel; }), "m",
+              "[state, wheel, patch] O on the wheel: lateral position in the profile frame (+ "
+              "towards the field side, 0 at the taping line), as wheel/y");
   patch_array("contact_angle", per_patch(states, slots, false, [](P p) { return p.contact_angle; }),
               "rad", "[state, wheel, patch] contact angle");
   patch_array("vx", per_patch(states, slots, true, [](P p) { return p.creepages.vx; }), "1",
@@ -154,7 +160,26 @@ void add_state_summaries(GroupRecord& g, const std::vector<StateOutcome>& states
               per_patch(states, slots, true, [](P p) { return p.solution.from_table ? 1.0 : 0.0; }),
               "1",
               "[state, wheel, patch] 1: Fx, Fy and the frictional work from the book of tables "
-              "of Kalker's exact theory (tangential_method = best), 0: not from the table");
+              "of Kalker's exact theory (tangential_method = best), 0: not from the table, -1: "
+              "no solved patch",
+              true);
+}
+
+void add_wear_measures(GroupRecord& g, const std::string& name, const profiles::Profile& original,
+                       const profiles::Profile& current) {
+  const profiles::NormalWear worn = profiles::normal_wear(original, current);
+  g.arrays.push_back(vector(name + "/cumulative_wear/s", worn.s, "m",
+                            "arc length on the step-0 profile, every 0.1 mm from its flange end"));
+  g.arrays.push_back(vector(name + "/cumulative_wear/depth", worn.depth, "m",
+                            "depth worn since step 0, along the step-0 profile's inward normal "
+                            "(> 0 worn; NaN where the normal does not meet this profile)"));
+  const profiles::RadiusChange radius = profiles::radius_change(original, current);
+  g.arrays.push_back(vector(name + "/radius_change/y", radius.y, "m",
+                            "lateral position, profile frame (+ towards the field side, 0 at the "
+                            "taping line), every 0.1 mm: the same grid at every step"));
+  g.arrays.push_back(vector(name + "/radius_change/value", radius.delta, "m",
+                            "rolling radius change since step 0, r(y) - r0(y) (< 0 worn; NaN "
+                            "where either profile has no surface at y)"));
 }
 
 void add_tgamma_maps(GroupRecord& g, const std::vector<StateOutcome>& states, int nx, int ny) {
@@ -201,15 +226,16 @@ GroupRecord run_info(const fs::path& scene_directory, bool builtin, double elaps
   info.texts.push_back(
       {"program", program, "program and version that wrote the run (or its last part)"});
   info.texts.push_back({"written", now_iso8601(), "time of writing (UTC)"});
-  info.arrays.push_back(scalar("builtin_scene", builtin ? 1.0 : 0.0, "1",
-                               "1 when the run uses the built-in default scene"));
-  info.arrays.push_back(scalar("threads", tbb::this_task_arena::max_concurrency(), "1",
-                               "worker threads available to this process"));
+  info.arrays.push_back(as_integer(scalar("builtin_scene", builtin ? 1.0 : 0.0, "1",
+                                          "1 when the run uses the built-in default scene")));
+  info.arrays.push_back(as_integer(scalar("threads", tbb::this_task_arena::max_concurrency(), "1",
+                                          "worker threads available to this process")));
   info.arrays.push_back(scalar("elapsed", elapsed, "s", "wall time of this process"));
-  info.arrays.push_back(scalar("evaluations", static_cast<double>(evaluations), "1",
-                               "wheelset states evaluated by this process"));
-  info.arrays.push_back(scalar("resumed_from_step", resumed_from, "1",
-                               "step this process resumed after; -1 for a run from the start"));
+  info.arrays.push_back(as_integer(scalar("evaluations", static_cast<double>(evaluations), "1",
+                                          "wheelset states evaluated by this process")));
+  info.arrays.push_back(
+      as_integer(scalar("resumed_from_step", resumed_from, "1",
+                        "step this process resumed after; -1 for a run from the start")));
   return info;
 }
 

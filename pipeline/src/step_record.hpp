@@ -25,6 +25,12 @@ void add_state_summaries(GroupRecord& g, const std::vector<StateOutcome>& states
 // tgamma/...: every patch's cells, shape [states, 2, P, ny, nx], NaN where there is no patch.
 void add_tgamma_maps(GroupRecord& g, const std::vector<StateOutcome>& states, int nx, int ny);
 
+// NAME/cumulative_wear/ (the depth worn since step 0 along the step-0 profile's normal, on its
+// arc-length grid of 0.1 mm) and NAME/radius_change/ (r(y) - r(y) at step 0 on a fixed 0.1 mm
+// lateral grid) of the profile `current`, worn from `original`.
+void add_wear_measures(GroupRecord& g, const std::string& name, const profiles::Profile& original,
+                       const profiles::Profile& current);
+
 // equivalent_conicity and delta_r/ of the wheelset the profiles make (left, right), or with
 // eight profiles (each wheelset its own) wheelset 1's there and each one's under wheelsets/K/.
 void add_conicity(GroupRecord& g, const CollectiveEvaluator& evaluator,

@@ -48,22 +48,25 @@ void add_vehicle_record(GroupRecord& g, const VehicleCollective& vehicle, bool s
                         double depth_since_solve) {
   g.arrays.push_back(scalar("vehicle/solved", solved ? 1.0 : 0.0, "1",
                             "1 when the vehicle was solved on this step's profiles"));
+  g.arrays.back().integer = true;
   g.arrays.push_back(scalar("vehicle/unconverged_cases", static_cast<double>(vehicle.unconverged),
                             "1",
                             "running conditions whose quasi-static solve did not converge "
                             "(their last iterate is used)"));
+  g.arrays.back().integer = true;
   g.arrays.push_back(scalar("vehicle/kept_cases", static_cast<double>(vehicle.kept), "1",
                             "running conditions whose solve on this solve's profiles did not "
                             "converge from their last converged solution, which they keep"));
+  g.arrays.back().integer = true;
   g.arrays.push_back(scalar("vehicle/depth_since_solve", depth_since_solve, "m",
                             "deepest wear since the vehicle's last solve, this step's "
                             "included (an upper bound: the steps' deepest increments summed)"));
   if (!vehicle.pieces.empty())
-    g.arrays.push_back(
+    g.arrays.push_back(as_integer(
         scalar("vehicle/incomplete_pieces", static_cast<double>(vehicle.incomplete()), "1",
                "time-domain pieces whose simulation stopped early (the "
                "vehicle left the rails); their samples up to there keep their weight, and "
-               "the start state stands for the rest"));
+               "the start state stands for the rest")));
   g.arrays.push_back(scalar("vehicle/critical_speed", vehicle.critical_speed, "m/s",
                             "linear critical speed on tangent track on the profiles of the "
                             "vehicle's last solve; NaN: not computed or not found "
@@ -106,16 +109,19 @@ void add_vehicle_cases(GroupRecord& g, const VehicleCollective& v) {
       p + "reversed", per_case(v, [](const C& c, const V&) { return c.reversed ? 1.0 : 0.0; }), "1",
       "1: met running the route backwards (radius and wheelsets as seen "
       "in travel)"));
+  g.arrays.back().integer = true;
   g.arrays.push_back(vector(p + "cant_deficiency_m",
                             per_case(v, [](const C&, const V& c) { return c.cant_deficiency; }),
                             "m", "cant deficiency (EN 13803's approximation)"));
   g.arrays.push_back(vector(
       p + "converged", per_case(v, [](const C&, const V& c) { return c.converged ? 1.0 : 0.0; }),
       "1", "1 when the quasi-static solve converged (else its last iterate)"));
+  g.arrays.back().integer = true;
   g.arrays.push_back(
       vector(p + "iterations",
              per_case(v, [](const C&, const V& c) { return static_cast<double>(c.iterations); }),
              "1", "Newton iterations of the solve"));
+  g.arrays.back().integer = true;
   g.arrays.push_back(vector(p + "car_body_y",
                             per_case(v, [](const C&, const V& c) { return c.car_body.y; }), "m",
                             "car body's lateral shift, + left"));
@@ -207,21 +213,22 @@ void add_vehicle_pieces(GroupRecord& g, const VehicleCollective& v) {
   g.texts.push_back(
       {p + "message", messages, "why a piece's simulation stopped early, else empty"});
   const auto per_piece = [&](const std::string& name, auto value, const std::string& units,
-                             const std::string& description) {
+                             const std::string& description, bool integer = false) {
     std::vector<double> values;
     for (std::size_t i = 0; i < n; ++i) values.push_back(value(v.pieces[i], v.piece_runs[i]));
     g.arrays.push_back(vector(p + name, std::move(values), units, description));
+    g.arrays.back().integer = integer;
   };
   using D = DynamicPiece;
   per_piece(
       "section", [](const D& d, const PieceRun&) { return static_cast<double>(d.section) + 1.0; },
-      "1", "the route section (1-based)");
+      "1", "the route section (1-based)", true);
   per_piece(
       "tangent", [](const D& d, const PieceRun&) { return d.tangent ? 1.0 : 0.0; }, "1",
-      "1 for a tangent's stretch, 0 for a whole transition");
+      "1 for a tangent's stretch, 0 for a whole transition", true);
   per_piece(
       "reversed", [](const D& d, const PieceRun&) { return d.reversed ? 1.0 : 0.0; }, "1",
-      "1: run backwards (section and distances along the reversed route)");
+      "1: run backwards (section and distances along the reversed route)", true);
   per_piece(
       "start_m", [](const D& d, const PieceRun&) { return d.start_m; }, "m",
       "where the simulated stretch starts along the route");
@@ -235,19 +242,20 @@ void add_vehicle_pieces(GroupRecord& g, const VehicleCollective& v) {
       "speed_m_s", [](const D& d, const PieceRun&) { return d.speed; }, "m/s", "running speed");
   per_piece(
       "completed", [](const D&, const PieceRun& r) { return r.completed ? 1.0 : 0.0; }, "1",
-      "1 when the simulation ran through the whole stretch");
+      "1 when the simulation ran through the whole stretch", true);
   per_piece(
       "time_step", [](const D&, const PieceRun& r) { return r.time_step; }, "s",
       "integration step");
   per_piece(
       "steps", [](const D&, const PieceRun& r) { return static_cast<double>(r.steps); }, "1",
-      "integration steps");
+      "integration steps", true);
   const std::vector<std::size_t> ws{n, vehicle::kWheelsets};
   using R = PieceRun;
   g.arrays.push_back(
       shaped(p + "samples",
              per_piece_wheelset(v, [](const R& r, std::size_t k) { return 1.0 * r.samples[k]; }),
              ws, "1", "states sampled in the stretch [piece, wheelset in order of travel]"));
+  g.arrays.back().integer = true;
   g.arrays.push_back(shaped(
       p + "dy_rms", per_piece_wheelset(v, [](const R& r, std::size_t k) { return r.dy_rms[k]; }),
       ws, "m", "root mean square of the wheelset's shift [piece, wheelset]"));

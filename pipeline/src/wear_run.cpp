@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <map>
+#include <memory>
 #include <optional>
 
 #include "hook_run.hpp"
@@ -59,6 +61,7 @@ struct LoopStart {
   int step = 0;
   double distance = 0.0;
   std::vector<WornProfile> worn;
+  std::vector<WornProfile> initial;  // the profiles at step 0, which the wear is measured from
   VehicleCarry vehicle;
   detail::HookCarry hook;
   fs::path hook_directory;  // the hook's files, a directory per call
@@ -172,6 +175,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   int step = start.step;
   double distance = start.distance;
   std::vector<WornProfile> worn = std::move(start.worn);
+  std::vector<profiles::Profile> originals;
+  for (const WornProfile& w : start.initial) originals.push_back(w.build());
   VehicleCarry carry = std::move(start.vehicle);
   detail::HookCarry hook = std::move(start.hook);
   // The depth arrives smoothed (smoothed() above): the update adds no smoothing of its own.
@@ -231,25 +236,31 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     g.arrays.push_back(scalar("distance", distance, "m", "running distance at this step"));
     g.arrays.push_back(scalar("step_distance", step_distance, "m",
                               "distance of the wear increment taken from here (0: the end)"));
-    for (const auto& [name, value] : cw.dropped.named())
-      g.arrays.push_back(scalar(name, value, "1", dropped_description(name)));
+    for (const auto& [name, value] : cw.dropped.named()) {
+      ArrayRecord r = scalar(name, value, "1", dropped_description(name));
+      r.integer = !name.ends_with("_weight");  // a count, not a share
+      g.arrays.push_back(std::move(r));
+    }
     g.arrays.push_back(scalar("limits/Sd_min", limits.Sd_min, "m", "least flange thickness"));
     g.arrays.push_back(scalar("limits/Sh_max", limits.Sh_max, "m", "largest flange height"));
     g.arrays.push_back(scalar("limits/qR_min", limits.qR_min, "m", "least qR"));
-    g.arrays.push_back(scalar("limits/stopped", stop ? 1.0 : 0.0, "1",
-                              "1 when the run ends here because a profile reached a limit"));
     g.arrays.push_back(
-        scalar("patches", static_cast<double>(cw.patches), "1", "contact patches solved"));
-    g.arrays.push_back(scalar("table_patches", static_cast<double>(cw.table_patches), "1",
-                              "of them, with totals from the book of tables "
-                              "(tangential_method = best)"));
-    g.arrays.push_back(scalar("unconverged_patches", static_cast<double>(cw.unconverged_patches),
-                              "1",
-                              "exact solves (tangential_method = exact) stopped at their "
-                              "iteration cap; their last iterate is used"));
-    g.arrays.push_back(scalar("hertz_dropped", static_cast<double>(cw.hertz_dropped), "1",
-                              "patches not solved nor worn: the contact model is hertz and they "
-                              "have no Hertz ellipse (lateral relative curvature not positive)"));
+        as_integer(scalar("limits/stopped", stop ? 1.0 : 0.0, "1",
+                          "1 when the run ends here because a profile reached a limit")));
+    g.arrays.push_back(as_integer(
+        scalar("patches", static_cast<double>(cw.patches), "1", "contact patches solved")));
+    g.arrays.push_back(
+        as_integer(scalar("table_patches", static_cast<double>(cw.table_patches), "1",
+                          "of them, with totals from the book of tables "
+                          "(tangential_method = best)")));
+    g.arrays.push_back(
+        as_integer(scalar("unconverged_patches", static_cast<double>(cw.unconverged_patches), "1",
+                          "exact solves (tangential_method = exact) stopped at their "
+                          "iteration cap; their last iterate is used")));
+    g.arrays.push_back(
+        as_integer(scalar("hertz_dropped", static_cast<double>(cw.hertz_dropped), "1",
+                          "patches not solved nor worn: the contact model is hertz and they "
+                          "have no Hertz ellipse (lateral relative curvature not positive)")));
     std::vector<profiles::WearDepth> increments;
     for (std::size_t p = 0; p < worn.size(); ++p) {
       const std::string& n = worn[p].name;
@@ -258,15 +269,18 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
         y.push_back(point.x());
         z.push_back(point.y());
       }
-      g.arrays.push_back(vector(n + "/y", y, "m", "profile points, lateral (+ field side)"));
+      g.arrays.push_back(vector(n + "/y", y, "m",
+                                "profile points, lateral: profile frame, + towards the field "
+                                "side, 0 at the taping line"));
       g.arrays.push_back(vector(n + "/z", z, "m", "profile points, vertical (+ down)"));
       g.arrays.push_back(scalar(n + "/Sh", parameters[p].Sh, "m", "flange height (EN 15313)"));
       g.arrays.push_back(scalar(n + "/Sd", parameters[p].Sd, "m", "flange thickness (EN 15313)"));
       g.arrays.push_back(
           scalar(n + "/qR", parameters[p].qR, "m", "flange slope measure qR (EN 15313)"));
       g.arrays.push_back(
-          scalar(n + "/limits_reached", static_cast<double>(limits_reached[p]), "1",
-                 "in-service limits (limits/) this profile has reached: Sd, Sh, qR"));
+          as_integer(scalar(n + "/limits_reached", static_cast<double>(limits_reached[p]), "1",
+                            "in-service limits (limits/) this profile has reached: Sd, Sh, qR")));
+      detail::add_wear_measures(g, n, originals[p], wheels[p]);
       const wear::WearDistribution& rate = cw.rate[p];
       std::vector<double> s(rate.depth.size()), ys(rate.depth.size());
       for (std::size_t k = 0; k < s.size(); ++k) {
@@ -275,13 +289,16 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       }
       g.arrays.push_back(
           vector(n + "/wear_rate/s", s, "m", "bin centre, arc length on the profile"));
-      g.arrays.push_back(vector(n + "/wear_rate/y", ys, "m", "bin centre, lateral position"));
+      g.arrays.push_back(vector(n + "/wear_rate/y", ys, "m",
+                                "bin centre, lateral position in the profile frame (+ towards the "
+                                "field side, 0 at the taping line)"));
       g.arrays.push_back(
           vector(n + "/wear_rate/depth", rate.depth, "m/m",
                  "worn depth per metre running, weighted over the collective (unsmoothed)"));
       increments.push_back(depth_on_y(wheels[p], smooth_rate[p], step_distance));
       g.arrays.push_back(vector(n + "/wear_step/y", increments.back().y, "m",
-                                "lateral positions of the step's wear depth"));
+                                "lateral positions of the step's wear depth (profile frame, + "
+                                "towards the field side)"));
       g.arrays.push_back(
           vector(n + "/wear_step/depth", increments.back().depth, "m",
                  "wear depth of the step (smoothed wear rate times the step distance)"));
@@ -331,8 +348,10 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   file.write_run_info(detail::run_info(scene_directory, builtin, summary.elapsed,
                                        summary.evaluations, start.step == 0 ? -1 : start.step - 1,
                                        options.program));
-  // The run is over: its step files become part of the one results file.
+  // The run is over: its step files become part of the one results file, and its last step
+  // (the final profiles) gets a fixed name.
   file.consolidate();
+  file.link("/final", ResultsFile::step_group(step));
   return summary;
 }
 
@@ -347,6 +366,45 @@ std::string table_hash(const Scene& scene) {
   } catch (const InputError&) {
     return "none";  // the reason names this machine's paths, which the file must not hold
   }
+}
+
+// The files the scene names, as the run read them, for /inputs.
+GroupRecord stored_inputs(const Scene& scene) {
+  GroupRecord group;
+  for (std::size_t i = 0; i < scene.inputs.size(); ++i) {
+    const SceneInput& in = scene.inputs[i];
+    group.bytes.push_back(
+        {(i < 10 ? "0" : "") + std::to_string(i),
+         in.content,
+         "a file the scene names, as the run read it (its bytes)",
+         {{"key", in.key}, {"path", in.path}, {"sha256", tangential::sha256_hex(in.content)}}});
+  }
+  return group;
+}
+
+// A reader of the scene's files from their copies in `file` (/inputs), after checking that no
+// file still on disk where the scene named it has changed since, unless `resume_stored`.
+SceneFileReader stored_reader(const ResultsFile& file, bool resume_stored) {
+  auto stored = std::make_shared<std::map<std::string, std::string>>();
+  std::string changed;
+  for (BytesRecord& in : file.read_bytes("/inputs")) {
+    const std::string& path = in.attributes["path"];
+    const std::optional<std::string> now = read_scene_file_from_disk(path);
+    if (now && tangential::sha256_hex(*now) != in.attributes["sha256"])
+      changed += "\n  " + path + " (" + in.attributes["key"] + ")";
+    (*stored)[path] = std::move(in.bytes);
+  }
+  if (!changed.empty() && !resume_stored)
+    throw InputError("results file " + file.path().string() +
+                     ": these files the scene names have changed since the run started:" + changed +
+                     "\nthe run goes on only with the inputs it started with: resume with "
+                     "--resume-stored to use the copies stored in the results file, or start a "
+                     "new run with -o");
+  return [stored](const fs::path& path) -> std::optional<std::string> {
+    const auto it = stored->find(path.string());
+    if (it == stored->end()) return std::nullopt;
+    return it->second;
+  };
 }
 
 }  // namespace
@@ -366,6 +424,7 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
   detail::check_hook_allowed(scene, options);
   const CollectiveEvaluator evaluator(scene);
   LoopStart start{0, 0.0, new_profiles(scene)};
+  start.initial = start.worn;
   start.hook_directory = hook_directory(output);
   for (const WornProfile& w : start.worn) evaluator.pair(w.build());
   const OutputLock lock(output);
@@ -375,7 +434,8 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
   ResultsFile file = ResultsFile::create(
       output, scene_text, options.overwrite, detail::collective_record(scene),
       {{"creep_table_sha256", table_hash(scene)}},
-      detail::run_info(scene_directory, builtin_scene, 0.0, 0, -1, options.program));
+      detail::run_info(scene_directory, builtin_scene, 0.0, 0, -1, options.program),
+      stored_inputs(scene));
   return loop(scene, evaluator, file, std::move(start), scene_directory, builtin_scene, options);
 }
 
@@ -397,13 +457,22 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
     throw InputError("results file " + output.string() +
                      ": no /run_info/scene_directory; it was not written by wheelwear run");
   }
+  const auto program = file.read_text("/run_info/program");
+  if (program && *program != options.program)
+    throw InputError("results file " + output.string() + ": written by " + *program + ", this is " +
+                     options.program +
+                     "; one run's steps come from one program: continue it with that program, "
+                     "or start a new run with -o");
   const bool builtin = file.read_array("/run_info/builtin_scene").at(0) != 0.0;
-  const Scene scene = builtin ? default_scene() : parse_scene(file.scene_text(), *directory);
+  const Scene scene = builtin ? default_scene()
+                              : parse_scene(file.scene_text(), *directory,
+                                            stored_reader(file, options.resume_stored));
   const int last = file.completed_steps() - 1;
   const double step_distance = last < 0 ? -1.0 : file.read_step_array(last, "step_distance").at(0);
   if (step_distance == 0.0) {
     // A run killed while it consolidated its step files: finish that, then say it is complete.
     file.consolidate();
+    file.link("/final", ResultsFile::step_group(last));
     const bool at_limit = file.has(ResultsFile::step_group(last) + "/limits/stopped") &&
                           file.read_step_array(last, "limits/stopped").at(0) != 0.0;
     throw InputError("results file " + output.string() +
@@ -426,6 +495,7 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   if (last < 0) {
     // Killed before its first step was published: the run starts over from its stored scene.
     LoopStart start{0, 0.0, new_profiles(scene)};
+    start.initial = start.worn;
     start.hook_directory = hook_directory(output);
     return loop(scene, evaluator, file, std::move(start), *directory, builtin, options);
   }
@@ -441,14 +511,20 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
                      "profile (an earlier program's layout); this program wears each wheelset's "
                      "own: start a new run with -o");
   const profiles::WearUpdateOptions update{0.0};  // as in loop()
-  for (WornProfile& w : start.worn) {
-    const auto y = file.read_step_array(last, w.name + "/y");
-    const auto z = file.read_step_array(last, w.name + "/z");
+  // A profile as step `at` recorded it.
+  const auto recorded = [&](WornProfile& w, int at) {
+    const auto y = file.read_step_array(at, w.name + "/y");
+    const auto z = file.read_step_array(at, w.name + "/z");
     if (y.size() != z.size() || y.size() < 4)
-      throw InputError("results file " + output.string() + ": step " + std::to_string(last) +
+      throw InputError("results file " + output.string() + ": step " + std::to_string(at) +
                        " holds no valid " + w.name + " profile");
     w.points.clear();
     for (std::size_t i = 0; i < y.size(); ++i) w.points.emplace_back(y[i], z[i]);
+  };
+  start.initial = start.worn;
+  for (WornProfile& w : start.initial) recorded(w, 0);
+  for (WornProfile& w : start.worn) {
+    recorded(w, last);
     profiles::WearDepth depth;
     depth.y = file.read_step_array(last, w.name + "/wear_step/y");
     depth.depth = file.read_step_array(last, w.name + "/wear_step/depth");

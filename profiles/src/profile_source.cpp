@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/profiles/profile_io.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
@@ -51,9 +52,12 @@ LoadOptions ProfileFileOptions::load_options(Body body) const {
 
 namespace {
 
-profiles::Profile loaded(const std::string& spec, const LoadOptions& options,
-                         std::vector<std::string>* warnings) {
-  LoadedProfile file = profiles::load_profile(spec, options);
+profiles::Profile loaded(const std::string& spec, const std::optional<std::string>& text,
+                         const LoadOptions& options, std::vector<std::string>* warnings) {
+  LoadedProfile file =
+      text ? prepare_profile(
+                 parse_profile_text(*text, spec, detect_format(spec, *text), options.read), options)
+           : profiles::load_profile(spec, options);
   if (warnings)
     warnings->insert(warnings->end(), file.cleaning.warnings.begin(), file.cleaning.warnings.end());
   return std::move(file.profile);
@@ -74,7 +78,7 @@ profiles::Profile wheel_profile(const std::string& spec, std::optional<double> r
   profiles::LoadOptions options = files.load_options(Body::wheel);
   options.nominal_radius = radius;
   options.fallback_nominal_radius = kDefaultWheelRadius;
-  return loaded(spec, options, warnings);
+  return loaded(spec, files.text, options, warnings);
 }
 
 profiles::Profile rail_profile(const std::string& spec, std::optional<double> inclination,
@@ -90,7 +94,7 @@ profiles::Profile rail_profile(const std::string& spec, std::optional<double> in
     options.inclination = angle;
     return profiles::rail_60e1(options);
   }
-  const profiles::Profile rail = loaded(spec, files.load_options(Body::rail), warnings);
+  const profiles::Profile rail = loaded(spec, files.text, files.load_options(Body::rail), warnings);
   return angle == 0.0 ? rail : canted(rail, angle);
 }
 

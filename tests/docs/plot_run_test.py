@@ -49,23 +49,22 @@ def run_and_plot(exe, folder, wheels):
     os.mkdir(plots)
     subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "scripts", "plot_run.py"), out,
                     "--out", plots], check=True, capture_output=True, text=True)
-    for name in ("profile_evolution.png", "wear_depth_per_step.png", "parameters.png"):
+    names = ["profile_evolution.png", "wear_depth_per_step.png", "parameters.png",
+             "contact_positions.png"]
+    if wheels == "separate":  # both wheels, each its own evolution
+        names.append("profile_evolution_wheel_right.png")
+    for name in names:
         path = os.path.join(plots, name)
         assert os.path.getsize(path) > 10000, f"{wheels}: {name} missing or empty"
     return out, summary
 
 
 def drawn_worn_area(path):
-    """The worn area plot_run.py draws at the last step, recomputed the same way [mm^2]."""
+    """The worn area plot_run.py draws at the last step, recomputed the same way [mm^2]: the
+    recorded depth since new integrated along the new profile."""
     with h5py.File(path) as f:
-        groups = [f["steps"][k] for k in sorted(f["steps"].keys())]
-        grid = np.linspace(-45.0, 50.0, 951)
-        worn = np.zeros_like(grid)
-        for g in groups[:-1]:
-            step = g["wheel"]["wear_step"]
-            worn += np.interp(grid, np.asarray(step["y"]) * 1e3, np.asarray(step["depth"]),
-                              left=0.0, right=0.0)
-        return np.trapz(worn * 1e3, grid)
+        worn = f["final"]["wheel"]["cumulative_wear"]
+        return np.trapz(np.nan_to_num(np.asarray(worn["depth"])), np.asarray(worn["s"])) * 1e6
 
 
 def main():

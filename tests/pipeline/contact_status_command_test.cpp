@@ -29,6 +29,20 @@ bool json_true(const std::string& json, const std::string& key) {
   return json.find("\"" + key + "\": true") != std::string::npos;
 }
 
+// O's positions are given in each profile's own frame, + towards the field side: the wheel's
+// taping line is 0, its flange (and the rail's gauge face) lie at negative y. On the tread (dy
+// 0) O is within 5 mm of the taping line; on the flank (dy 8 mm) it is on the flange, beyond
+// the flange root at about -25 mm (S1002, EN 13715), and on the rail 25 mm further towards the
+// gauge face than on the tread.
+TEST(ContactStatusCommand, PositionsAreInTheProfileFrames) {
+  const auto tread = run_wheelwear(pair_args(0.0)), flank = run_wheelwear(pair_args(0.008));
+  ASSERT_EQ(tread.exit_code, 0) << tread.err;
+  ASSERT_EQ(flank.exit_code, 0) << flank.err;
+  EXPECT_LT(std::abs(*json_number(tread.out, "y_wheel")), 5e-3);
+  EXPECT_LT(*json_number(flank.out, "y_wheel"), -25e-3);
+  EXPECT_LT(*json_number(flank.out, "y_rail"), *json_number(tread.out, "y_rail") - 25e-3);
+}
+
 TEST(ContactStatusCommand, FlankContactBeyondNadalsLimitIsFlagged) {
   const auto r = run_wheelwear(pair_args(0.008));  // CONTACT's y_ws = -8 mm
   ASSERT_EQ(r.exit_code, 0) << r.err;

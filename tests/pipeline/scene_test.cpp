@@ -9,11 +9,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <tuple>
 #include <vector>
 
 #include "support/run_command.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/state_kernel.hpp"
 
 namespace wheelwear::pipeline {
@@ -148,6 +150,45 @@ TEST_F(SceneTest, CollectiveFromHdf5AsAMultibodyExportWritesIt) {
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("broken.h5"), std::string::npos) << error.what();
   }
+}
+
+// Every file a scene names comes through its reader, once, and the scene keeps its bytes: what
+// a run stores and a resumed run reads instead of the disk (none of these paths exist).
+TEST_F(SceneTest, EveryFileNamedIsReadOnceThroughTheReaderAndKept) {
+  const fs::path data = fs::path(WHEELWEAR_TEST_DATA);
+  const std::map<std::string, fs::path> sources = {
+      {"/stored/wheel.whl", data / "profiles" / "s1002_taping_line.whl"},
+      {"/stored/rail.ban", data / "profiles" / "rail_base.ban"},
+      {"/stored/usfd.csv", data / ".." / ".." / "data" / "wear" / "usfd.csv"},
+      {"/stored/coach.toml", data / ".." / ".." / "data" / "vehicles" / "default.toml"},
+      {"/stored/line.toml", data / ".." / ".." / "data" / "routes" / "default.toml"}};
+  std::map<std::string, int> reads;
+  const SceneFileReader reader = [&](const fs::path& path) -> std::optional<std::string> {
+    ++reads[path.string()];
+    const auto it = sources.find(path.string());
+    if (it == sources.end()) return std::nullopt;
+    return core::read_text_file(it->second);
+  };
+  const Scene s = parse_scene(
+      "[wheel]\nprofile = \"wheel.whl\"\n[rail]\nprofile = \"rail.ban\"\n"
+      "[wear]\nlaw_table = \"usfd.csv\"\n[vehicle]\nfile = \"coach.toml\"\n"
+      "[route]\nfile = \"line.toml\"\n",
+      "/stored", reader);
+  ASSERT_EQ(s.inputs.size(), sources.size());
+  for (const SceneInput& in : s.inputs) {
+    ASSERT_TRUE(sources.count(in.path)) << in.path;
+    EXPECT_EQ(in.content, core::read_text_file(sources.at(in.path))) << in.path;
+    EXPECT_EQ(reads[in.path], 1) << in.path;
+  }
+  std::map<std::string, std::string> keys;
+  for (const SceneInput& in : s.inputs) keys[in.path] = in.key;
+  EXPECT_EQ(keys["/stored/wheel.whl"], "wheel.profile");
+  EXPECT_EQ(keys["/stored/line.toml"], "route.file");
+  // The profiles are built from the kept bytes, not from their (missing) files.
+  EXPECT_NO_THROW(StateKernel{s});
+  EXPECT_NO_THROW(profiles::wheel_profile(s.wheel_profile, s.wheel_radius, s.wheel_file));
+  ASSERT_TRUE(s.vehicle_run.has_value());
+  EXPECT_EQ(s.vehicle_run->route.sections.size(), vehicle::default_route().sections.size());
 }
 
 TEST(DefaultScene, HasAThousandStatesOfTangentAndCurves) {

@@ -270,7 +270,81 @@ TEST_F(WearRunTest, WornAreaEqualsAccumulatedWearAndGrowsMonotonically) {
     // 0.5 % for 0.1 mm on the 15 mm flange root), the wear on the flange back's side is
     // dropped, and the polygon closes over re-interpolated ends: 1 % covers these.
     EXPECT_NEAR(area, accumulated, 0.01 * accumulated) << "step " << next;
+
+    // The recorded cumulative wear, integrated along the step-0 profile, is that area too
+    // (same 1 %: it is the normal depth of the same curved surface).
+    const auto s = file.read_step_array(next, "wheel/cumulative_wear/s");
+    const auto normal = file.read_step_array(next, "wheel/cumulative_wear/depth");
+    double integral = 0.0;
+    for (std::size_t i = 0; i + 1 < s.size(); ++i)
+      if (std::isfinite(normal[i]) && std::isfinite(normal[i + 1]))
+        integral += 0.5 * (normal[i] + normal[i + 1]) * (s[i + 1] - s[i]);
+    EXPECT_NEAR(integral, area, 0.01 * area) << "step " << next;
+    // On the tread (within +-25 mm) the radius falls by the normal depth over the cosine of the
+    // surface's slope; 1 % allows for the depth's own gradient over the normal's lateral offset.
+    const auto ry = file.read_step_array(next, "wheel/radius_change/y");
+    const auto dr = file.read_step_array(next, "wheel/radius_change/value");
+    const profiles::Profile original(points(y0, z0), {"step0", profiles::Body::wheel});
+    const double peak = *std::max_element(normal.begin(), normal.end(), [](double p, double q) {
+      return !(p >= q) && std::isfinite(q);
+    });
+    int compared = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const double y = original.position(s[i]).x();
+      if (std::abs(y) > 0.025 || !(normal[i] > 0.1 * peak)) continue;
+      // Delta r at y, linear between the 0.1 mm grid's points.
+      const auto k = static_cast<std::size_t>(std::floor((y - ry.front()) / (ry[1] - ry[0])));
+      if (k + 1 >= ry.size()) continue;
+      const double u = (y - ry[k]) / (ry[k + 1] - ry[k]);
+      const double at_y = (1.0 - u) * dr[k] + u * dr[k + 1];
+      const double cos_slope = std::abs(original.normal(s[i]).y());
+      EXPECT_NEAR(-at_y * cos_slope, normal[i], 0.01 * normal[i]) << "y " << y << " step " << next;
+      ++compared;
+    }
+    if (next == last) EXPECT_GT(compared, 50);
   }
+  // The final profile at its fixed name is the last step's.
+  const auto final_y = file.read_array("/final/wheel/y");
+  EXPECT_EQ(final_y, file.read_step_array(last, "wheel/y"));
+  EXPECT_EQ(file.read_array("/final/wheel/z"), file.read_step_array(last, "wheel/z"));
+}
+
+// Counts, flags and statuses are integers, with -1 where a slot is empty; every text and
+// attribute is a variable-length UTF-8 string (h5py reads str, not bytes).
+TEST_F(WearRunTest, IntegersAreStoredAsIntegersAndTextsAsUtf8) {
+  const fs::path out = dir_ / "types.h5";
+  // A wheelset against its left flange: two patches there, one on the right wheel.
+  run(small_scene(10e3, 10e3, 1e-3) +
+          "[[load_collective.state]]\ndy_m = 0.0068\naxle_load_N = 110e3\nspeed_m_s = 20\n"
+          "weight = 1\n",
+      out);
+  H5::H5File file(out.string(), H5F_ACC_RDONLY);
+  const std::string step = ResultsFile::step_group(0) + "/";
+  int integers = 0;
+  for (const char* name : {"states/status", "states/from_table", "states/patches", "patches",
+                           "failed_contacts", "limits/stopped", "wheel/limits_reached"}) {
+    EXPECT_EQ(file.openDataSet(step + name).getTypeClass(), H5T_INTEGER) << name;
+    ++integers;
+  }
+  EXPECT_EQ(integers, 7);
+  for (const char* name : {"distance", "failed_contacts_weight", "states/Fx", "wheel/y"})
+    EXPECT_EQ(file.openDataSet(step + name).getTypeClass(), H5T_FLOAT) << name;
+  // A patch slot beyond a wheel's count holds -1 where the float arrays hold NaN.
+  const auto fx = ResultsFile::read(out).read_step_array(0, "states/Fx");
+  const auto table = ResultsFile::read(out).read_step_array(0, "states/from_table");
+  ASSERT_EQ(fx.size(), table.size());
+  int empty = 0;
+  for (std::size_t i = 0; i < fx.size(); ++i) {
+    EXPECT_EQ(std::isnan(fx[i]), table[i] == -1.0) << i;
+    empty += std::isnan(fx[i]);
+  }
+  EXPECT_GT(empty, 0);
+  const H5::Attribute units = file.openDataSet(step + "distance").openAttribute("units");
+  EXPECT_TRUE(units.getStrType().isVariableStr());
+  EXPECT_EQ(units.getStrType().getCset(), H5T_CSET_UTF8);
+  const H5::Attribute hash = file.openGroup("/").openAttribute("creep_table_sha256");
+  EXPECT_EQ(hash.getStrType().getCset(), H5T_CSET_UTF8);
+  EXPECT_EQ(file.openDataSet("/scene").getStrType().getCset(), H5T_CSET_UTF8);
 }
 
 // tangential_method = "best": where the book of tables covers a patch its recorded totals are

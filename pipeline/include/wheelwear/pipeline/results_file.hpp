@@ -18,8 +18,10 @@
 ///                     the run passes (e.g. `creep_table_sha256`)
 ///   /scene            the scene text (TOML)
 ///   /load_collective  the wheelset states of the run, one dataset per quantity
+///   /inputs/NN        the files the scene names, their bytes (attributes key, path, sha256)
 ///   /steps            attribute `completed_steps`
 ///   /steps/NNNNNN/... the arrays of step NNNNNN (six digits)
+///   /final            a soft link to the last step of a finished run (its final profiles)
 ///   /run_info/...     timings and host information, the only place they appear
 
 #include <cstddef>
@@ -38,7 +40,7 @@ namespace wheelwear::pipeline {
 /// 3: states dropped whole by reason (`failed_contacts` ... `dropped_patches` and their
 /// `_weight`s replace `failed_contacts`, `failed_weight`), per-state `drop_reason`, Nadal's
 /// `nadal_delta`, `Y_over_Q`, `nadal_limit`, status 6 past the flange, strip-wise forces.
-inline constexpr int kFormatVersion = 5;
+inline constexpr int kFormatVersion = 6;
 
 /// One dataset: values in row-major order with their shape ({} for a scalar, {n}, {rows, cols}).
 struct ArrayRecord {
@@ -47,7 +49,16 @@ struct ArrayRecord {
   std::vector<std::size_t> shape;  ///< empty for a scalar
   std::string units;               ///< SI units, "1" for dimensionless
   std::string description;         ///< one line for a reader of the file
+  /// Stored as 64-bit integers (counts, flags, statuses, indices), NaN as -1, the dataset's fill
+  /// value; every value must be integral.
+  bool integer = false;
 };
+
+/// The record with its values stored as integers (ArrayRecord::integer).
+inline ArrayRecord as_integer(ArrayRecord record) {
+  record.integer = true;
+  return record;
+}
 
 /// One text dataset (for names and labels).
 struct TextRecord {
@@ -56,22 +67,32 @@ struct TextRecord {
   std::string description;
 };
 
+/// One byte string (a stored input file), a 1-D uint8 dataset with text attributes.
+struct BytesRecord {
+  std::string name;
+  std::string bytes;
+  std::string description;
+  std::map<std::string, std::string> attributes;
+};
+
 /// What one group of the file holds.
 struct GroupRecord {
   std::vector<ArrayRecord> arrays;
   std::vector<TextRecord> texts;
+  std::vector<BytesRecord> bytes;
 };
 
 /// Durable, step-by-step writer and reader of a results file.
 class ResultsFile {
  public:
   /// Creates FILE with the scene text, the group /load_collective (the states as the run
-  /// resolved them), the first /run_info (if given) and no steps. Throws InputError if FILE
-  /// exists and `overwrite` is false; the existing file is then left untouched.
+  /// resolved them), the first /run_info (if given), the group /inputs (the files the scene
+  /// names, if any) and no steps. Throws InputError if FILE exists and `overwrite` is false;
+  /// the existing file is then left untouched.
   static ResultsFile create(const std::filesystem::path& path, std::string_view scene_text,
                             bool overwrite, const GroupRecord& load_collective = {},
                             const std::map<std::string, std::string>& root_attributes = {},
-                            const GroupRecord& run_info = {});
+                            const GroupRecord& run_info = {}, const GroupRecord& inputs = {});
   /// Opens an existing results file to continue it (resume): a stray FILE.partial of a killed
   /// run is discarded. Throws InputError when the file is missing or is not a results file.
   static ResultsFile open(const std::filesystem::path& path);
@@ -86,6 +107,9 @@ class ResultsFile {
   void consolidate();
   /// Whether some step is still an external link to its own file (a run not yet consolidated).
   bool has_linked_steps() const;
+  /// Makes `link` (e.g. "/final") a soft link to the object `target` ("/steps/000012"),
+  /// replacing an earlier link of that name, atomically.
+  void link(const std::string& link, const std::string& target);
   /// Publishes the /run_info group atomically (replacing an earlier one).
   void write_run_info(const GroupRecord& info);
 
@@ -110,6 +134,9 @@ class ResultsFile {
   std::optional<std::string> root_attribute(const std::string& name) const;
   /// Reads a text dataset by its full path; std::nullopt when missing.
   std::optional<std::string> read_text(const std::string& full_path) const;
+  /// The byte strings directly below `group` ("/inputs"), by name, with their text attributes;
+  /// none when the group is missing.
+  std::vector<BytesRecord> read_bytes(const std::string& group) const;
 
   /// The group name of a step: "/steps/000012".
   static std::string step_group(int step);

@@ -167,6 +167,14 @@ struct LimitKeys {
 inline constexpr double kStepsLimit = 1e5;
 inline constexpr double kStepsWarning = 1e4;
 
+/// A file a scene names (a profile, the collective, a wear table, the vehicle, the route, a
+/// measured irregularity record), as it was read.
+struct SceneInput {
+  std::string key;      ///< the scene key that names it, e.g. "[wheel] profile"
+  std::string path;     ///< resolved from the scene's folder
+  std::string content;  ///< its bytes
+};
+
 /// Everything a run needs. Defaults are those of the built-in scene.
 struct Scene {
   std::string title;
@@ -199,6 +207,7 @@ struct Scene {
   double max_contact_angle = 1.35;
   std::string wear_law = "usfd";   ///< usfd or archard
   std::string wear_law_table;      ///< resolved path of the user's table, empty: built-in
+  std::string wear_law_text;       ///< that table's content, read when the scene was parsed
   double distance = 100e3;         ///< running distance of the run [m]
   double step_distance = 5e3;      ///< longest step [m]
   double max_depth_step = 0.1e-3;  ///< deepest wear increment of one step [m]
@@ -211,6 +220,9 @@ struct Scene {
   std::vector<WheelsetStateSpec> states;
   /// The vehicle and its route ([vehicle] and [route]), instead of a hand-written collective.
   std::optional<VehicleRun> vehicle_run;
+  /// Every file the scene names, read once when it was parsed: what the run depends on beyond
+  /// the scene's text, stored in its results file so that a resumed run uses the same inputs.
+  std::vector<SceneInput> inputs;
   /// What the scene's reader noticed that does not stop a run (e.g. many steps); a run passes
   /// them to RunOptions::warning.
   std::vector<std::string> warnings;
@@ -218,11 +230,16 @@ struct Scene {
   std::optional<CosimulationHook> hook;
 };
 
-/// Reads a file named in a scene (a profile, the collective, a wear table) as text.
-using SceneFileReader = std::function<std::string(const std::filesystem::path&)>;
+/// Reads a file named in a scene (a profile, the collective, a wear table, ...): its bytes, or
+/// none when there is no such file.
+using SceneFileReader = std::function<std::optional<std::string>(const std::filesystem::path&)>;
 
-/// Parses a scene. Relative file names are taken from `base_directory`; `read` reads the
-/// collective file (default: from disk). Every problem (TOML syntax, unknown key, wrong type,
+/// The reader of files on disk (a regular file's bytes, else none).
+std::optional<std::string> read_scene_file_from_disk(const std::filesystem::path& path);
+
+/// Parses a scene. Relative file names are taken from `base_directory`; `read` reads every file
+/// the scene names (default: from disk), each once, and the scene keeps them (Scene::inputs).
+/// Every problem (TOML syntax, unknown key, wrong type,
 /// a value out of range, a missing file) throws InputError naming the key and its line, before
 /// any work starts.
 Scene parse_scene(std::string_view toml_text, const std::filesystem::path& base_directory,

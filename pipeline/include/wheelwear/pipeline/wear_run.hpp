@@ -36,6 +36,9 @@ struct RunOptions {
   /// Called with what the user should know but does not stop the run (e.g. an output on a file
   /// system without locks, OutputLock::warning); unset: not reported.
   std::function<void(const std::string&)> warning;
+  /// Resume with the inputs stored in the results file even where a file the scene names has
+  /// changed since (without it such a resume is refused, naming the file).
+  bool resume_stored = false;
   /// The program and version that writes the run, recorded in /run_info/program (the command
   /// line gives its version and commit).
   std::string program = std::string("wheelwear library ") + core::version();
@@ -66,7 +69,11 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
                      const std::filesystem::path& output, const RunOptions& options);
 
 /// Continues the run recorded in `output` from its last complete step; the result is identical
-/// to an uninterrupted run. Throws InputError when the file is not a run or is complete.
+/// to an uninterrupted run. The scene and every file it names come from the results file
+/// (/scene, /inputs), never from the disk: a file that still exists where the scene named it
+/// but has changed is refused by name unless options.resume_stored. Throws InputError when the
+/// file is not a run, is complete, or was written by another program version or with another
+/// book of creep-force tables.
 RunSummary resume_run(const std::filesystem::path& output, const RunOptions& options);
 
 }  // namespace wheelwear::pipeline

@@ -21,6 +21,9 @@ struct ProfileFileOptions {
   /// Rails: where the file has its gauge face on its lateral axis (OrientationOptions::mirror_y:
   /// automatic, keep = the smaller values, flip = the larger ones).
   Mirror rail_gauge_side = Mirror::automatic;
+  /// The file's bytes where they were read before (a scene's stored input): parsed instead of
+  /// reading the file again, the path naming it in messages and giving its format.
+  std::optional<std::string> text;
 
   /// LoadOptions for a file of `body`, with these choices.
   LoadOptions load_options(Body body) const;
