@@ -43,7 +43,6 @@ struct ModelWear {
   wear::WearSummary summary;
 };
 
-// Lateral position on the wheel, + towards the flange, of arc length s [m].
 // Lateral position on the wheel in its profile frame (+ towards the field side, 0 at the taping
 // line), as every output gives it.
 double wheel_y(const profiles::Profile& wheel, double s) {

@@ -25,10 +25,14 @@ except ImportError as error:  # pragma: no cover - depends on the machine
 PER = 1e8  # 10^5 km in m
 
 
-def worn_area(y0, z0, y1, z1):
-    """Area between the new profile and a worn one [m^2] on the new one's lateral grid (z is +
-    down: the worn surface lies above the new one, at smaller z)."""
-    z1_on_0 = np.interp(y0, y1, z1)
+def worn_area(profile, y0, z0):
+    """Worn cross-section since new [m^2]: the recorded depth along the new profile's normal
+    integrated along it (results version 6); for older files the vertical gap between the new
+    and the worn profile, which overstates the flange's share (steep there)."""
+    if "cumulative_wear" in profile:
+        worn = profile["cumulative_wear"]
+        return float(np.trapz(np.nan_to_num(np.asarray(worn["depth"])), np.asarray(worn["s"])))
+    z1_on_0 = np.interp(y0, np.asarray(profile["y"]), np.asarray(profile["z"]))
     return float(np.trapz(np.clip(z0 - z1_on_0, 0.0, None), y0))
 
 
@@ -41,15 +45,13 @@ def history(path):
         z0 = np.asarray(groups[0][name]["z"])
         rows = []
         for g in groups:
-            y = np.asarray(g[name]["y"])
-            z = np.asarray(g[name]["z"])
             rows.append({
                 "distance_km": g["distance"][()] / 1e3,
                 "Sd_mm": g[name]["Sd"][()] * 1e3,
                 "Sh_mm": g[name]["Sh"][()] * 1e3,
                 "qR_mm": g[name]["qR"][()] * 1e3,
                 "conicity": g["equivalent_conicity"][()],
-                "worn_area_mm2": worn_area(y0, z0, y, z) * 1e6,
+                "worn_area_mm2": worn_area(g[name], y0, z0) * 1e6,
             })
         return rows
 

@@ -27,6 +27,10 @@ except ImportError as error:  # pragma: no cover - depends on the machine
     sys.exit(f"plot_run.py: {error}; install python3-h5py and python3-matplotlib")
 
 
+# The results file layout this script reads (docs/results.md).
+FORMAT_VERSION = 6
+
+
 def steps(f):
     return [f["steps"][name] for name in sorted(f["steps"].keys())]
 
@@ -422,6 +426,11 @@ def main():
     with f:
         if "steps" not in f or len(f["steps"]) == 0:
             sys.exit(f"plot_run.py: {args.run} holds no steps")
+        version = int(f.attrs.get("format_version", 1))
+        if version < FORMAT_VERSION:
+            sys.exit(f"plot_run.py: {args.run} has results layout version {version}; this script "
+                     f"reads version {FORMAT_VERSION} (docs/results.md): run the scene again "
+                     "with this program")
         for plot in (plot_profiles, plot_wear_depth, plot_parameters, plot_contact_positions,
                      plot_tgamma, plot_vehicle, plot_vehicle_motion):
             paths = plot(f, out)

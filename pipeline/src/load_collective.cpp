@@ -230,7 +230,7 @@ std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
 }
 
 bool value_given(std::string_view column, double value) {
-  return !std::isnan(value) && !(column == "wheelset" && value < 0.0);
+  return !std::isnan(value) && !(column == "wheelset" && value == -1.0);
 }
 
 std::vector<WheelsetStateSpec> read_collective_hdf5(const std::string& image,
@@ -242,9 +242,9 @@ std::vector<WheelsetStateSpec> read_collective_hdf5(const std::string& image,
     H5::FileAccPropList access;
     H5Pset_fapl_core(access.getId(), 1 << 16, false);
     H5Pset_file_image(access.getId(), const_cast<char*>(image.data()), image.size());
-    // The core driver refuses a name that exists on disk: the image gets one of its own.
-    H5::H5File file("wheelwear collective image", H5F_ACC_RDONLY, H5::FileCreatPropList::DEFAULT,
-                    access);
+    // The core driver refuses a name that exists on disk: the image gets one that cannot.
+    H5::H5File file("/dev/null/wheelwear-collective-image", H5F_ACC_RDONLY,
+                    H5::FileCreatPropList::DEFAULT, access);
     if (!file.nameExists(group))
       throw InputError(file_name + ": no group '" + group + "' with the collective's columns");
     H5::Group g = file.openGroup(group);

@@ -36,8 +36,8 @@ std::string state_field_names();
 std::vector<WheelsetStateSpec> read_collective_csv(std::string_view text,
                                                    const std::string& file_name);
 
-/// Whether a column's value in an HDF5 collective is given: NaN is not, nor is the integer
-/// fill value -1 of the `wheelset` column.
+/// Whether a column's value in an HDF5 collective is given: NaN is not, nor is -1 in the
+/// `wheelset` column (the results file's integer fill value).
 bool value_given(std::string_view column, double value);
 
 /// States from an HDF5 file's bytes (`image`; `file_name` names it in messages): one 1-D

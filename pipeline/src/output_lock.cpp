@@ -56,8 +56,8 @@ OutputLock::OutputLock(const fs::path& output) : path_(lock_path(output)) {
         throw InputError("output " + output.string() + ": " + folder_of(output) +
                          " is not a folder; choose another output");
       throw IoError("output " + output.string() + ": cannot write in the folder " +
-                       folder_of(output) + " (" + std::strerror(error) +
-                       "); choose a writable folder");
+                    folder_of(output) + " (" + std::strerror(error) +
+                    "); choose a writable folder");
     }
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
       const int error = errno;
@@ -65,9 +65,9 @@ OutputLock::OutputLock(const fs::path& output) : path_(lock_path(output)) {
         const std::string pid = holder(fd_);
         ::close(fd_);
         fd_ = -1;
-        throw IoError("output " + output.string() + ": another run is writing it (process " +
-                         pid + ", lock " + path_.string() +
-                         "); wait for it to end or choose another output");
+        throw IoError("output " + output.string() + ": another run is writing it (process " + pid +
+                      ", lock " + path_.string() +
+                      "); wait for it to end or choose another output");
       }
       if (error == ENOLCK || error == EOPNOTSUPP) {
         warning_ = "output " + output.string() + ": the file system has no locks (" +
@@ -78,7 +78,7 @@ OutputLock::OutputLock(const fs::path& output) : path_(lock_path(output)) {
       ::close(fd_);
       fd_ = -1;
       throw IoError("output " + output.string() + ": cannot lock " + path_.string() + " (" +
-                       std::strerror(error) + ")");
+                    std::strerror(error) + ")");
     }
     // The run that held the lock may have removed the file before this one locked it: only a
     // lock on the file that is there now counts.

@@ -58,7 +58,8 @@ void publish(const fs::path& partial, const fs::path& path) {
   sync_to_disk(directory, true);
 }
 
-// Text as variable-length UTF-8 strings: h5py reads them as str, not bytes.
+// Text as variable-length UTF-8 strings: h5py reads attributes as str (datasets as bytes that
+// .asstr() decodes), where fixed-length ASCII attributes came back as bytes.
 H5::StrType utf8_text() {
   H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
   type.setCset(H5T_CSET_UTF8);

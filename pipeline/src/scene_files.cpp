@@ -38,7 +38,12 @@ std::optional<std::string> SceneFiles::read(const std::string& key,
   if (!content) return content;
   if (text) {
     if (content->empty()) throw InputError(key + " = " + path + ": the file is empty");
-    core::check_text(*content, key + " = " + path);
+    try {
+      core::check_text(*content, path);
+    } catch (const InputError&) {
+      throw InputError(key + " = " + path +
+                       ": binary data, not a text file; give the text file this key expects");
+    }
   }
   kept_.push_back({key, path, *content});
   return content;

@@ -276,6 +276,7 @@ void add_vehicle_pieces(GroupRecord& g, const VehicleCollective& v) {
              ws, "1",
              "samples whose contact kept a side of a jump of Q across the wheel's load [piece, "
              "wheelset]"));
+  g.arrays.back().integer = true;
 }
 
 std::vector<PieceRun> read_vehicle_pieces(const ResultsFile& file, int step, std::size_t pieces) {

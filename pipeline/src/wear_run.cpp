@@ -348,10 +348,10 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   file.write_run_info(detail::run_info(scene_directory, builtin, summary.elapsed,
                                        summary.evaluations, start.step == 0 ? -1 : start.step - 1,
                                        options.program));
-  // The run is over: its step files become part of the one results file, and its last step
-  // (the final profiles) gets a fixed name.
-  file.consolidate();
+  // The run is over: its last step (the final profiles) gets a fixed name while the file is
+  // still small, and its step files become part of the one results file.
   file.link("/final", ResultsFile::step_group(step));
+  file.consolidate();
   return summary;
 }
 
@@ -457,6 +457,21 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
     throw InputError("results file " + output.string() +
                      ": no /run_info/scene_directory; it was not written by wheelwear run");
   }
+  const int last = file.completed_steps() - 1;
+  const double step_distance = last < 0 ? -1.0 : file.read_step_array(last, "step_distance").at(0);
+  if (step_distance == 0.0) {
+    // A run killed while it ended (naming its last step, consolidating its step files): finish
+    // that, then say it is complete. A complete file is left as it is.
+    if (!file.has("/final")) file.link("/final", ResultsFile::step_group(last));
+    file.consolidate();
+    const bool at_limit = file.has(ResultsFile::step_group(last) + "/limits/stopped") &&
+                          file.read_step_array(last, "limits/stopped").at(0) != 0.0;
+    throw InputError("results file " + output.string() +
+                     (at_limit ? ": the run stopped at an in-service limit ([limits] stop); "
+                                 "nothing to resume (raise the limit and start a new run with -o)"
+                               : ": the run is complete; nothing to resume (start a new run "
+                                 "with -o)"));
+  }
   const auto program = file.read_text("/run_info/program");
   if (program && *program != options.program)
     throw InputError("results file " + output.string() + ": written by " + *program + ", this is " +
@@ -467,20 +482,6 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   const Scene scene = builtin ? default_scene()
                               : parse_scene(file.scene_text(), *directory,
                                             stored_reader(file, options.resume_stored));
-  const int last = file.completed_steps() - 1;
-  const double step_distance = last < 0 ? -1.0 : file.read_step_array(last, "step_distance").at(0);
-  if (step_distance == 0.0) {
-    // A run killed while it consolidated its step files: finish that, then say it is complete.
-    file.consolidate();
-    file.link("/final", ResultsFile::step_group(last));
-    const bool at_limit = file.has(ResultsFile::step_group(last) + "/limits/stopped") &&
-                          file.read_step_array(last, "limits/stopped").at(0) != 0.0;
-    throw InputError("results file " + output.string() +
-                     (at_limit ? ": the run stopped at an in-service limit ([limits] stop); "
-                                 "nothing to resume (raise the limit and start a new run with -o)"
-                               : ": the run is complete; nothing to resume (start a new run "
-                                 "with -o)"));
-  }
   if (scene.tangential == TangentialMethod::best &&
       file.root_attribute("creep_table_sha256") != tangential::creep_table_sha256()) {
     throw InputError("results file " + output.string() +

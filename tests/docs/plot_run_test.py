@@ -75,6 +75,12 @@ def main():
         area = drawn_worn_area(shared)
         reference = summary["worn_area"] * 1e6
         assert abs(area - reference) <= 0.01 * reference, (area, reference)
+        # A file of an earlier layout is refused with a message, not a traceback.
+        with h5py.File(shared, "r+") as f:
+            f.attrs["format_version"] = 5
+        old = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "scripts", "plot_run.py"),
+                              shared, "--out", folder], capture_output=True, text=True)
+        assert old.returncode != 0 and "layout version 5" in old.stderr, old.stderr
     print("plot_run: both runs plotted; worn area %.4g mm2 drawn, %.4g mm2 computed"
           % (area, reference))
 

@@ -2,6 +2,7 @@
 // a file changed since is refused by name unless --resume-stored, a file moved away is no
 // obstacle, and another program version is refused.
 
+#include <H5Cpp.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -155,6 +156,66 @@ TEST_F(StoredInputsTest, AFileMovedAwayIsNoObstacle) {
   fs::remove(dir_ / "wheel.csv");
   resume_run(killed, {});
   EXPECT_GT(compare_steps(reference, killed), 1000);
+}
+
+TEST_F(StoredInputsTest, AnHdf5CollectiveMovedAwayResumesFromItsStoredBytes) {
+  {
+    H5::H5File h5((dir_ / "states.h5").string(), H5F_ACC_TRUNC);
+    const auto column = [&](const char* name, std::vector<double> values) {
+      const hsize_t n = values.size();
+      h5.createDataSet(name, H5::PredType::NATIVE_DOUBLE, H5::DataSpace(1, &n))
+          .write(values.data(), H5::PredType::NATIVE_DOUBLE);
+    };
+    column("dy_m", {0.001, -0.0065});
+    column("yaw_rad", {2e-4, -2e-3});
+    column("axle_load_N", {110e3, 110e3});
+    column("speed_m_s", {40, 22});
+    column("curve_radius_m", {0, -500});
+    column("weight", {3, 1});
+  }
+  std::string text = file_scene();
+  text.replace(text.find("states.csv"), 10, "states.h5");
+  scene_ = write("scene.toml", text);
+  const fs::path reference = dir_ / "reference.h5", killed = dir_ / "killed.h5";
+  run_scene_file(reference);
+  run_scene_file(killed, 2);
+  fs::remove(dir_ / "states.h5");
+  resume_run(killed, {});
+  EXPECT_GT(compare_steps(reference, killed), 1000);
+}
+
+TEST_F(StoredInputsTest, AChangedWearTableIsRefusedByItsKey) {
+  write("usfd.csv", core::read_text_file(fs::path(WHEELWEAR_TEST_DATA) / ".." / ".." / "data" /
+                                         "wear" / "usfd.csv"));
+  scene_ = write("scene.toml", file_scene() + "[wear]\nlaw_table = \"usfd.csv\"\n");
+  const fs::path killed = dir_ / "killed.h5";
+  run_scene_file(killed, 2);
+  std::ofstream(dir_ / "usfd.csv", std::ios::app) << "# edited\n";
+  try {
+    resume_run(killed, {});
+    FAIL() << "a run whose wear table changed was resumed";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("usfd.csv (wear.law_table)"), std::string::npos)
+        << error.what();
+  }
+}
+
+// A complete run is not resumed, whatever changed since, and its file is left as it was.
+TEST_F(StoredInputsTest, ACompleteRunIsLeftAsItIs) {
+  const fs::path out = dir_ / "complete.h5";
+  run_scene_file(out);
+  write("states.csv", kStatesHeavier);
+  const auto before = fs::last_write_time(out);
+  const auto size = fs::file_size(out);
+  try {
+    resume_run(out, {});
+    FAIL() << "a complete run was resumed";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("the run is complete"), std::string::npos)
+        << error.what();
+  }
+  EXPECT_EQ(fs::last_write_time(out), before);
+  EXPECT_EQ(fs::file_size(out), size);
 }
 
 TEST_F(StoredInputsTest, AnotherProgramVersionIsRefused) {

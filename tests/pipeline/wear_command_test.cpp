@@ -38,6 +38,26 @@ TEST(WearCommand, ComparesTheFiveContactModels) {
   EXPECT_TRUE(json_number(r.out, "centroid_y_wheel").has_value());
 }
 
+// Positions on the wheel are in its profile frame (+ towards the field side, 0 at the taping
+// line): the worn band's centroid lies within the patch's reach (its SDEC b, 2-6 mm here) of O,
+// on the tread, and on the flange flank (S1002: about -30 to -42 mm, at
+// negative y) when the wheelset is shifted 6.8 mm towards the flange.
+TEST(WearCommand, PositionsAreInTheWheelsProfileFrame) {
+  const auto tread = run_wheelwear(kCase + " --json");
+  ASSERT_EQ(tread.exit_code, 0) << tread.err;
+  const double o = *json_number(tread.out, "y_wheel");
+  EXPECT_GT(o, -20e-3);  // on the tread: beyond the flange root ...
+  EXPECT_LT(o, 30e-3);   // ... and short of the chamfer
+  EXPECT_LT(std::abs(*json_number(tread.out, "centroid_y_wheel") - o), 6e-3);
+  const auto flange = run_wheelwear(
+      "wear --wheel S1002 --rail 60E1 --dy 0.0068 --load 55000 --vx 1e-3 --V 20 --mu 0.35 "
+      "--cells 30 --json");
+  ASSERT_EQ(flange.exit_code, 0) << flange.err;
+  const double flank = *json_number(flange.out, "centroid_y_wheel");
+  EXPECT_LT(flank, -30e-3);
+  EXPECT_GT(flank, -42e-3);
+}
+
 // The map's depth rows integrate (times the 0.1 mm bin width) to the worn volume the command
 // reports for the same model.
 TEST(WearCommand, MapHoldsTheDepthDistributionItSummarises) {

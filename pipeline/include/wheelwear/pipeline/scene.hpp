@@ -170,7 +170,7 @@ inline constexpr double kStepsWarning = 1e4;
 /// A file a scene names (a profile, the collective, a wear table, the vehicle, the route, a
 /// measured irregularity record), as it was read.
 struct SceneInput {
-  std::string key;      ///< the scene key that names it, e.g. "[wheel] profile"
+  std::string key;      ///< the scene key that names it, e.g. "wheel.profile"
   std::string path;     ///< resolved from the scene's folder
   std::string content;  ///< its bytes
 };
