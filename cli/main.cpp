@@ -8,15 +8,13 @@
 #include "build_commit.hpp"
 #include "commands.hpp"
 #include "wheelwear/core/input_error.hpp"
-#include "wheelwear/core/version.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
       "wheelwear: railway wheel profile wear prediction with non-elliptic (SDEC) contact.\n"
       "All inputs and outputs are SI (m, N, Pa, 1/m) unless a flag says otherwise.\n"
       "Run `wheelwear COMMAND --help` for the options of a command."};
-  app.set_version_flag("--version", std::string("wheelwear ") + wheelwear::core::version() +
-                                        " (commit " + wheelwear::cli::build_commit() + ")");
+  app.set_version_flag("--version", wheelwear::cli::program_identity());
   app.require_subcommand(1);
   // A repeated option takes its last value, as in most command-line tools (scripts append
   // overrides).

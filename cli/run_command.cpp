@@ -20,7 +20,6 @@
 #include "thread_limit.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
-#include "wheelwear/core/version.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
 #include "wheelwear/pipeline/wear_run.hpp"
@@ -261,8 +260,7 @@ void run(const RunArgs& args) {
   }
   const auto threads = thread_limit(args.threads);
   pipeline::RunOptions options;
-  options.program =
-      std::string("wheelwear ") + core::version() + " (commit " + build_commit() + ")";
+  options.program = program_identity();
   options.overwrite = args.overwrite;
   options.allow_hook = args.allow_hook;
   options.resume_stored = args.resume_stored;

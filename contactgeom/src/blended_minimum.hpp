@@ -19,6 +19,8 @@
 #include <limits>
 #include <vector>
 
+#include "parabola_vertex.hpp"
+
 namespace wheelwear::contactgeom::detail {
 
 // How far the lowest gap may rise and still share O with a deeper minimum [m]: 4 um is 5-15 %
@@ -57,12 +59,11 @@ BlendedMinimum blended_minimum(const Gap& h, std::ptrdiff_t first, std::ptrdiff_
     const double left = h(p - 1), right = h(q + 1);
     if (left > hp && right > hp) {
       Minimum m{0.5 * static_cast<double>(p + q), hp, hp};
-      const double curvature = left - 2.0 * hp + right;
-      if (p == q && std::isfinite(left) && std::isfinite(right) && curvature > 0.0) {
-        const double t = 0.5 * (left - right) / curvature;  // |t| <= 1/2 at a minimum
-        m.index += t;
-        m.h = hp - 0.25 * (left - right) * t;
-      }
+      if (p == q && std::isfinite(left) && std::isfinite(right))
+        if (const auto vertex = parabola_vertex(left, hp, right)) {
+          m.index += vertex->offset;
+          m.h = vertex->h;
+        }
       if (!minima.empty()) ridges.push_back(ridge);
       minima.push_back(m);
       ridge = -inf;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "parabola_vertex.hpp"
 #include "wheelwear/profiles/track.hpp"
 
 namespace wheelwear::contactgeom::detail {
@@ -379,12 +380,9 @@ GapMinimum refined_minimum(const GapSamples& g, std::size_t first, std::size_t l
   GapMinimum m{g.y[k], g.h[k]};
   if (k > 0 && k + 1 < g.h.size() && g.window[k - 1] == g.window[k] &&
       g.window[k + 1] == g.window[k]) {
-    const double hm = g.h[k - 1], h0 = g.h[k], hp = g.h[k + 1];
-    const double curvature = hm - 2.0 * h0 + hp;
-    if (curvature > 0.0) {
-      const double offset = 0.5 * (hm - hp) / curvature;  // in samples, |offset| <= 1/2
-      m.y = g.y[k] + offset * g.dy;
-      m.h = h0 - 0.25 * (hm - hp) * offset;
+    if (const auto vertex = parabola_vertex(g.h[k - 1], g.h[k], g.h[k + 1])) {
+      m.y = g.y[k] + vertex->offset * g.dy;
+      m.h = vertex->h;
     }
   }
   return m;

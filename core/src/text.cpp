@@ -20,7 +20,7 @@
 
 namespace wheelwear::core {
 
-std::string read_text_file(const std::filesystem::path& path) {
+std::string read_file_bytes(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::exists(path, error)) throw InputError(path.string() + ": no such file");
   if (!std::filesystem::is_regular_file(path, error))
@@ -30,7 +30,11 @@ std::string read_text_file(const std::filesystem::path& path) {
   std::ostringstream buffer;
   buffer << in.rdbuf();
   if (in.bad()) throw InputError(path.string() + ": read error");
-  std::string text = buffer.str();
+  return buffer.str();
+}
+
+std::string read_text_file(const std::filesystem::path& path) {
+  std::string text = read_file_bytes(path);
   if (text.empty()) throw InputError(path.string() + ": the file is empty");
   check_text(text, path.string());
   return text;

@@ -80,12 +80,6 @@ void write_int_attribute(H5::H5Object& object, const std::string& name, int valu
   attribute.write(H5::PredType::NATIVE_INT, &value);
 }
 
-int read_int_attribute(const H5::H5Object& object, const std::string& name) {
-  int value = 0;
-  object.openAttribute(name).read(H5::PredType::NATIVE_INT, &value);
-  return value;
-}
-
 // Creates the intermediate groups of "a/b/c" below `root` and returns the last one's path.
 std::string ensure_parents(H5::H5File& file, const std::string& root, const std::string& name) {
   std::string path = root;
@@ -221,21 +215,6 @@ void change_atomically(const fs::path& path, Change change) {
   }
 }
 
-// The numeric datasets below `group`, as paths relative to it ("wheel/y"). Walks the groups
-// with the C++ API, which is the same in HDF5 1.10 and later.
-void collect_numeric_datasets(const H5::Group& group, const std::string& prefix,
-                              std::vector<std::string>& names) {
-  for (hsize_t i = 0; i < group.getNumObjs(); ++i) {
-    const std::string name = group.getObjnameByIdx(i);
-    const H5G_obj_t type = group.getObjTypeByIdx(i);
-    if (type == H5G_GROUP) {
-      collect_numeric_datasets(group.openGroup(name), prefix + name + "/", names);
-    } else if (type == H5G_DATASET && group.openDataSet(name).getTypeClass() != H5T_STRING) {
-      names.push_back(prefix + name);
-    }
-  }
-}
-
 }  // namespace
 
 ResultsFile::ResultsFile(fs::path path, std::string scene_text, int completed_steps)
@@ -290,24 +269,6 @@ ResultsFile ResultsFile::open(const fs::path& path) {
   return file;
 }
 
-ResultsFile ResultsFile::read(const fs::path& path) {
-  if (!fs::exists(path)) throw InputError("results file " + path.string() + ": does not exist");
-  try {
-    H5::Exception::dontPrint();
-    H5::H5File file(path.string(), H5F_ACC_RDONLY);
-    if (!file.nameExists("/scene") || !file.nameExists("/steps"))
-      throw InputError("results file " + path.string() + ": not a wheelwear results file");
-    H5::DataSet scene = file.openDataSet("/scene");
-    std::string text;
-    scene.read(text, scene.getStrType());
-    const int steps = read_int_attribute(file.openGroup("/steps"), "completed_steps");
-    return ResultsFile(path, text, steps);
-  } catch (const H5::Exception& error) {
-    throw InputError("results file " + path.string() + ": unreadable HDF5 (" +
-                     error.getDetailMsg() + ")");
-  }
-}
-
 fs::path ResultsFile::steps_directory(const fs::path& path) {
   fs::path directory = path;
   directory += ".steps";
@@ -335,14 +296,14 @@ void ResultsFile::append_step(const GroupRecord& step) {
 
 namespace {
 
-// The file an external link of `group` points to, resolved as HDF5 resolves it: beside `main`
-// when relative. Empty for a link of another kind.
 // Whether `name` in `group` is an external link; its info in `info`.
 bool is_external(const H5::Group& group, const std::string& name, H5L_info_t& info) {
   return H5Lget_info(group.getId(), name.c_str(), &info, H5P_DEFAULT) >= 0 &&
          info.type == H5L_TYPE_EXTERNAL;
 }
 
+// The file an external link of `group` points to, resolved as HDF5 resolves it: beside `main`
+// when relative. Empty for a link of another kind.
 fs::path link_target(const H5::Group& group, const std::string& name, const fs::path& main) {
   H5L_info_t info;
   if (!is_external(group, name, info)) return {};
@@ -412,133 +373,6 @@ void ResultsFile::write_run_info(const GroupRecord& info) {
     if (file.nameExists("/run_info")) file.unlink("/run_info");
     write_group(file, "/run_info", info);
   });
-}
-
-std::vector<double> ResultsFile::read_step_array(int step, const std::string& name) const {
-  return read_array(step_group(step) + "/" + name);
-}
-
-std::vector<double> ResultsFile::read_array(const std::string& full) const {
-  try {
-    H5::Exception::dontPrint();
-    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
-    if (!file.nameExists(full)) throw InputError("results file: no dataset " + full);
-    H5::DataSet data = file.openDataSet(full);
-    const H5::DataSpace space = data.getSpace();
-    std::vector<double> values(static_cast<std::size_t>(space.getSimpleExtentNpoints()));
-    if (!values.empty()) data.read(values.data(), H5::PredType::NATIVE_DOUBLE);
-    return values;
-  } catch (const H5::Exception& error) {
-    throw InputError("results file " + path_.string() + ": cannot read " + full + " (" +
-                     error.getDetailMsg() + ")");
-  }
-}
-
-bool ResultsFile::has(const std::string& full) const {
-  try {
-    H5::Exception::dontPrint();
-    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
-    return file.nameExists(full);
-  } catch (const H5::Exception&) {
-    return false;  // a missing intermediate group
-  }
-}
-
-std::vector<std::string> ResultsFile::step_array_names(int step) const {
-  return array_names(step_group(step));
-}
-
-std::vector<std::string> ResultsFile::array_names(const std::string& group) const {
-  std::vector<std::string> names;
-  try {
-    H5::Exception::dontPrint();
-    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
-    if (!file.nameExists(group)) throw InputError("results file: no group " + group);
-    collect_numeric_datasets(file.openGroup(group), "", names);
-  } catch (const H5::Exception& error) {
-    throw InputError("results file " + path_.string() + ": cannot list " + group + " (" +
-                     error.getDetailMsg() + ")");
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-int ResultsFile::format_version() const {
-  try {
-    H5::Exception::dontPrint();
-    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
-    const H5::Group root = file.openGroup("/");
-    return root.attrExists("format_version") ? read_int_attribute(root, "format_version") : 1;
-  } catch (const H5::Exception& error) {
-    throw InputError("results file " + path_.string() + ": unreadable HDF5 (" +
-                     error.getDetailMsg() + ")");
-  }
-}
-
-std::optional<std::string> ResultsFile::root_attribute(const std::string& name) const {
-  try {
-    H5::Exception::dontPrint();
-    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
-    const H5::Group root = file.openGroup("/");
-    if (!root.attrExists(name)) return std::nullopt;
-    const H5::Attribute attribute = root.openAttribute(name);
-    std::string value;
-    attribute.read(attribute.getStrType(), value);
-    return value;
-  } catch (const H5::Exception& error) {
-    throw InputError("results file " + path_.string() + ": cannot read attribute " + name + " (" +
-                     error.getDetailMsg() + ")");
-  }
-}
-
-std::optional<std::string> ResultsFile::read_text(const std::string& full) const {
-  try {
-    H5::Exception::dontPrint();
-    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
-    if (!file.nameExists(full)) return std::nullopt;
-    std::string text;
-    const H5::DataSet data = file.openDataSet(full);
-    data.read(text, data.getStrType());
-    return text;
-  } catch (const H5::Exception& error) {
-    throw InputError("results file " + path_.string() + ": cannot read " + full + " (" +
-                     error.getDetailMsg() + ")");
-  }
-}
-
-std::vector<BytesRecord> ResultsFile::read_bytes(const std::string& group) const {
-  std::vector<BytesRecord> records;
-  try {
-    H5::Exception::dontPrint();
-    H5::H5File file(path_.string(), H5F_ACC_RDONLY);
-    if (!file.nameExists(group)) return records;
-    const H5::Group g = file.openGroup(group);
-    for (hsize_t i = 0; i < g.getNumObjs(); ++i) {
-      const std::string name = g.getObjnameByIdx(i);
-      if (g.getObjTypeByIdx(i) != H5G_DATASET) continue;
-      const H5::DataSet data = g.openDataSet(name);
-      if (data.getTypeClass() != H5T_INTEGER) continue;
-      BytesRecord record;
-      record.name = name;
-      record.bytes.resize(static_cast<std::size_t>(data.getSpace().getSimpleExtentNpoints()));
-      if (!record.bytes.empty()) data.read(record.bytes.data(), H5::PredType::NATIVE_UINT8);
-      for (int a = 0; a < data.getNumAttrs(); ++a) {
-        const H5::Attribute attribute = data.openAttribute(static_cast<unsigned>(a));
-        if (attribute.getTypeClass() != H5T_STRING) continue;
-        std::string value;
-        attribute.read(attribute.getStrType(), value);
-        if (attribute.getName() == "description")
-          record.description = value;
-        else
-          record.attributes[attribute.getName()] = value;
-      }
-      records.push_back(std::move(record));
-    }
-  } catch (const H5::Exception& error) {
-    throw InputError("results file " + path_.string() + ": cannot read " + group + " (" +
-                     error.getDetailMsg() + ")");
-  }
-  return records;
 }
 
 }  // namespace wheelwear::pipeline

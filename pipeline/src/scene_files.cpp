@@ -1,8 +1,6 @@
 #include "scene_files.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
@@ -11,11 +9,7 @@ namespace wheelwear::pipeline {
 
 std::optional<std::string> read_scene_file_from_disk(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path)) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  if (!in) throw InputError(path.string() + ": cannot read the file");
-  return bytes.str();
+  return core::read_file_bytes(path);
 }
 
 namespace detail {

@@ -7,13 +7,13 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
-#include <map>
-#include <memory>
 #include <optional>
 
 #include "hook_run.hpp"
 #include "step_record.hpp"
+#include "stored_inputs.hpp"
 #include "vehicle_record.hpp"
+#include "wear_increment.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/output_lock.hpp"
@@ -114,48 +114,6 @@ std::vector<WornProfile> new_profiles(const Scene& scene) {
   return worn;
 }
 
-// The rate smoothed along the arc length by a Gaussian of standard deviation `length`: each
-// bin's wear is spread over its neighbours with weights that sum to one within the profile, so
-// the worn area is conserved exactly and no negative lobes appear (a smoothing spline's would
-// be clipped at zero and add area).
-wear::WearDistribution smoothed(const wear::WearDistribution& rate, double length) {
-  if (length <= 0.0) return rate;
-  const auto reach = static_cast<long>(std::ceil(4.0 * length / rate.ds));
-  std::vector<double> kernel(static_cast<std::size_t>(2 * reach + 1));
-  for (long k = -reach; k <= reach; ++k) {
-    const double u = static_cast<double>(k) * rate.ds / length;
-    kernel[static_cast<std::size_t>(k + reach)] = std::exp(-0.5 * u * u);
-  }
-  wear::WearDistribution out = rate;
-  std::fill(out.depth.begin(), out.depth.end(), 0.0);
-  const auto n = static_cast<long>(rate.depth.size());
-  for (long i = 0; i < n; ++i) {
-    const double d = rate.depth[static_cast<std::size_t>(i)];
-    if (d == 0.0) continue;
-    const long lo = std::max(0L, i - reach), hi = std::min(n - 1, i + reach);
-    double total = 0.0;
-    for (long j = lo; j <= hi; ++j) total += kernel[static_cast<std::size_t>(j - i + reach)];
-    for (long j = lo; j <= hi; ++j)
-      out.depth[static_cast<std::size_t>(j)] +=
-          d * kernel[static_cast<std::size_t>(j - i + reach)] / total;
-  }
-  return out;
-}
-
-// The step's depth as a function of the profile's lateral coordinate (what apply_wear takes):
-// bins where y does not increase (a vertical flange back) carry no wear and are left out.
-profiles::WearDepth depth_on_y(const profiles::Profile& profile, const wear::WearDistribution& rate,
-                               double distance) {
-  profiles::WearDepth depth;
-  for (std::size_t k = 0; k < rate.depth.size(); ++k) {
-    const double y = profile.position(rate.s(k)).x();
-    if (!depth.y.empty() && !(y > depth.y.back())) continue;
-    depth.y.push_back(y);
-    depth.depth.push_back(rate.depth[k] * distance);
-  }
-  return depth;
-}
-
 // EN 15313's parameters of a wheel profile; NaN for a profile worn past their reference points.
 profiles::WheelParameters measured_parameters(const profiles::Profile& wheel) {
   try {
@@ -179,7 +137,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
   for (const WornProfile& w : start.initial) originals.push_back(w.build());
   VehicleCarry carry = std::move(start.vehicle);
   detail::HookCarry hook = std::move(start.hook);
-  // The depth arrives smoothed (smoothed() above): the update adds no smoothing of its own.
+  // The depth arrives smoothed (detail::smoothed): the update adds no smoothing of its own.
   const profiles::WearUpdateOptions update{0.0};
   // The nominal diameter is the new wheel's: a worn profile keeps its nominal radius.
   const profiles::WheelLimits limits = scene.limits.resolve(2.0 * worn.front().info.nominal_radius);
@@ -220,7 +178,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     summary.geometry_solves += cw.geometry_solves;
 
     std::vector<wear::WearDistribution> smooth_rate;
-    for (const auto& r : cw.rate) smooth_rate.push_back(smoothed(r, scene.smoothing_length));
+    for (const auto& r : cw.rate)
+      smooth_rate.push_back(detail::smoothed(r, scene.smoothing_length));
     // Step control: the distance that keeps the deepest increment below max_depth_step.
     double peak = 0.0;
     for (const auto& r : smooth_rate)
@@ -295,7 +254,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
       g.arrays.push_back(
           vector(n + "/wear_rate/depth", rate.depth, "m/m",
                  "worn depth per metre running, weighted over the collective (unsmoothed)"));
-      increments.push_back(depth_on_y(wheels[p], smooth_rate[p], step_distance));
+      increments.push_back(detail::depth_on_y(wheels[p], smooth_rate[p], step_distance));
       g.arrays.push_back(vector(n + "/wear_step/y", increments.back().y, "m",
                                 "lateral positions of the step's wear depth (profile frame, + "
                                 "towards the field side)"));
@@ -368,45 +327,6 @@ std::string table_hash(const Scene& scene) {
   }
 }
 
-// The files the scene names, as the run read them, for /inputs.
-GroupRecord stored_inputs(const Scene& scene) {
-  GroupRecord group;
-  for (std::size_t i = 0; i < scene.inputs.size(); ++i) {
-    const SceneInput& in = scene.inputs[i];
-    group.bytes.push_back(
-        {(i < 10 ? "0" : "") + std::to_string(i),
-         in.content,
-         "a file the scene names, as the run read it (its bytes)",
-         {{"key", in.key}, {"path", in.path}, {"sha256", tangential::sha256_hex(in.content)}}});
-  }
-  return group;
-}
-
-// A reader of the scene's files from their copies in `file` (/inputs), after checking that no
-// file still on disk where the scene named it has changed since, unless `resume_stored`.
-SceneFileReader stored_reader(const ResultsFile& file, bool resume_stored) {
-  auto stored = std::make_shared<std::map<std::string, std::string>>();
-  std::string changed;
-  for (BytesRecord& in : file.read_bytes("/inputs")) {
-    const std::string& path = in.attributes["path"];
-    const std::optional<std::string> now = read_scene_file_from_disk(path);
-    if (now && tangential::sha256_hex(*now) != in.attributes["sha256"])
-      changed += "\n  " + path + " (" + in.attributes["key"] + ")";
-    (*stored)[path] = std::move(in.bytes);
-  }
-  if (!changed.empty() && !resume_stored)
-    throw InputError("results file " + file.path().string() +
-                     ": these files the scene names have changed since the run started:" + changed +
-                     "\nthe run goes on only with the inputs it started with: resume with "
-                     "--resume-stored to use the copies stored in the results file, or start a "
-                     "new run with -o");
-  return [stored](const fs::path& path) -> std::optional<std::string> {
-    const auto it = stored->find(path.string());
-    if (it == stored->end()) return std::nullopt;
-    return it->second;
-  };
-}
-
 }  // namespace
 
 fs::path hook_directory(const fs::path& output) {
@@ -435,7 +355,7 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
       output, scene_text, options.overwrite, detail::collective_record(scene),
       {{"creep_table_sha256", table_hash(scene)}},
       detail::run_info(scene_directory, builtin_scene, 0.0, 0, -1, options.program),
-      stored_inputs(scene));
+      detail::stored_inputs(scene));
   return loop(scene, evaluator, file, std::move(start), scene_directory, builtin_scene, options);
 }
 
@@ -481,7 +401,7 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   const bool builtin = file.read_array("/run_info/builtin_scene").at(0) != 0.0;
   const Scene scene = builtin ? default_scene()
                               : parse_scene(file.scene_text(), *directory,
-                                            stored_reader(file, options.resume_stored));
+                                            detail::stored_reader(file, options.resume_stored));
   if (scene.tangential == TangentialMethod::best &&
       file.root_attribute("creep_table_sha256") != tangential::creep_table_sha256()) {
     throw InputError("results file " + output.string() +

@@ -52,6 +52,17 @@ RunOptions stopping_after(int steps) {
   return options;
 }
 
+// The message of the InputError a resume of `file` throws; a test failure if it resumes.
+std::string resume_refusal(const fs::path& file, const RunOptions& options = {}) {
+  try {
+    resume_run(file, options);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "resume of " << file << " went ahead";
+  return {};
+}
+
 class StoredInputsTest : public WearRunTest {
  protected:
   void SetUp() override {
@@ -111,15 +122,10 @@ TEST_F(StoredInputsTest, AChangedFileIsRefusedByNameUnlessResumeStored) {
   // The loads x 1.2: what made a resumed run contradict its own stored collective.
   write("states.csv", kStatesHeavier);
   std::ofstream(dir_ / "wheel.csv", std::ios::app) << "\n";
-  try {
-    resume_run(killed, {});
-    FAIL() << "a run whose inputs changed was resumed";
-  } catch (const InputError& error) {
-    const std::string what = error.what();
-    EXPECT_NE(what.find((dir_ / "states.csv").string()), std::string::npos) << what;
-    EXPECT_NE(what.find((dir_ / "wheel.csv").string()), std::string::npos) << what;
-    EXPECT_NE(what.find("--resume-stored"), std::string::npos) << what;
-  }
+  const std::string what = resume_refusal(killed);
+  EXPECT_NE(what.find((dir_ / "states.csv").string()), std::string::npos) << what;
+  EXPECT_NE(what.find((dir_ / "wheel.csv").string()), std::string::npos) << what;
+  EXPECT_NE(what.find("--resume-stored"), std::string::npos) << what;
   EXPECT_EQ(ResultsFile::read(killed).completed_steps(), 2);  // the refusal wrote nothing
 
   // With --resume-stored it completes, equal to the run that never saw the change.
@@ -191,13 +197,8 @@ TEST_F(StoredInputsTest, AChangedWearTableIsRefusedByItsKey) {
   const fs::path killed = dir_ / "killed.h5";
   run_scene_file(killed, 2);
   std::ofstream(dir_ / "usfd.csv", std::ios::app) << "# edited\n";
-  try {
-    resume_run(killed, {});
-    FAIL() << "a run whose wear table changed was resumed";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("usfd.csv (wear.law_table)"), std::string::npos)
-        << error.what();
-  }
+  const std::string what = resume_refusal(killed);
+  EXPECT_NE(what.find("usfd.csv (wear.law_table)"), std::string::npos) << what;
 }
 
 // A complete run is not resumed, whatever changed since, and its file is left as it was.
@@ -207,13 +208,8 @@ TEST_F(StoredInputsTest, ACompleteRunIsLeftAsItIs) {
   write("states.csv", kStatesHeavier);
   const auto before = fs::last_write_time(out);
   const auto size = fs::file_size(out);
-  try {
-    resume_run(out, {});
-    FAIL() << "a complete run was resumed";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("the run is complete"), std::string::npos)
-        << error.what();
-  }
+  const std::string what = resume_refusal(out);
+  EXPECT_NE(what.find("the run is complete"), std::string::npos) << what;
   EXPECT_EQ(fs::last_write_time(out), before);
   EXPECT_EQ(fs::file_size(out), size);
 }
@@ -223,14 +219,9 @@ TEST_F(StoredInputsTest, AnotherProgramVersionIsRefused) {
   run_scene_file(killed, 2);
   RunOptions other;
   other.program = "wheelwear 0.0.0 (commit elsewhere)";
-  try {
-    resume_run(killed, other);
-    FAIL() << "another program resumed the run";
-  } catch (const InputError& error) {
-    const std::string what = error.what();
-    EXPECT_NE(what.find("written by " + RunOptions{}.program), std::string::npos) << what;
-    EXPECT_NE(what.find("commit elsewhere"), std::string::npos) << what;
-  }
+  const std::string what = resume_refusal(killed, other);
+  EXPECT_NE(what.find("written by " + RunOptions{}.program), std::string::npos) << what;
+  EXPECT_NE(what.find("commit elsewhere"), std::string::npos) << what;
 }
 
 TEST_F(StoredInputsTest, ResumeStoredGoesOnlyWithResume) {

@@ -10,6 +10,10 @@
 
 namespace wheelwear::core {
 
+/// The whole file's bytes. Throws InputError naming the file if it is missing, not a regular
+/// file or unreadable.
+std::string read_file_bytes(const std::filesystem::path& path);
+
 /// The whole file as text. Throws InputError naming the file if it is missing, unreadable, empty
 /// or binary (check_text).
 std::string read_text_file(const std::filesystem::path& path);
