@@ -34,7 +34,14 @@ void add_contact_options(CLI::App* cmd, ContactInputs& in) {
   cmd->add_option("--nu", in.nu, "Poisson's ratio [-]")->capture_default_str();
   cmd->add_option("--strip-width", in.strip_width, "lateral sampling of the gap [m]")
       ->capture_default_str();
-  cmd->add_option("--epsilon", in.epsilon, "Kik-Piotrowski virtual penetration factor")
+  cmd->add_option("--normal-method", in.normal_method,
+                  "normal problem: hertz-calibrated (Kik-Piotrowski's strips with each patch's\n"
+                  "virtual penetration from Hertz's ellipse for its curvature ratio) or\n"
+                  "kik-piotrowski (one factor, --epsilon, for every patch)")
+      ->check(CLI::IsMember(core::all_names(contactgeom::kNormalMethodNames)))
+      ->capture_default_str();
+  cmd->add_option("--epsilon", in.epsilon,
+                  "Kik-Piotrowski virtual penetration factor, with --normal-method kik-piotrowski")
       ->capture_default_str();
   cmd->add_option("--vx", in.creepages.vx, "longitudinal creepage at each patch's O [-]")
       ->capture_default_str();
@@ -102,6 +109,7 @@ SolvedContact solve_contact(const ContactInputs& in) {
   contactgeom::WheelRailOptions options;
   options.strip_width = in.strip_width;
   options.kp.epsilon = in.epsilon;
+  options.kp.penetration = *core::value_named(contactgeom::kNormalMethodNames, in.normal_method);
   out.contact = contactgeom::solve_wheel_rail(out.pair, in.pose, in.load, options);
   if (auto warning =
           core::plausibility_warning(core::kApproachLimit, "approach", out.contact.approach))

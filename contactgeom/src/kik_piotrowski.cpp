@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "blended_minimum.hpp"
+#include "hertz_penetration.hpp"
 #include "kik_piotrowski_eval.hpp"
 #include "strip_kernel.hpp"
 #include "wheelwear/core/input_error.hpp"
@@ -76,16 +77,96 @@ void for_each_run(const GapStrips& g, double delta, Visit&& visit) {
   }
 }
 
-// Integrals of one run at the virtual penetration level eps (delta - h_O) above h_O.
-RunIntegrals integrate_run(const GapStrips& g, const Run& run, double level) {
+// The virtual penetration of one run: the lateral level eps_s delta_k (strips whose gap
+// h - h_O lies below it touch) and the stretch eps_x / eps_s of the strips' squared length,
+// exactly 1 with a fixed eps (KpPenetration).
+struct Levels {
+  double lateral = 0.0;  // [m]
+  double stretch = 1.0;  // [-]
+  // x_l^2 of a strip whose gap lies `rise` above h_O [m^2]; <= 0 out of contact.
+  double xl2(double rise, double a) const { return stretch * (lateral - rise) / a; }
+  // How much x_l^2 a strip out of contact lacks [m^2]: > 0, also for a strip just at the level,
+  // so that measure_patch always knows where the edge lies (0 there means "not known").
+  double opening(double rise, double a) const {
+    return std::max(-xl2(rise, a), std::numeric_limits<double>::min());
+  }
+};
+
+// The rise of the gap above h_O at strip j of `run`, where strips beyond the run count as
+// lying at the rigid approach (their gap is at least that, or they have none): the same rise
+// whichever window of strips the run was cut from, and continuous as a strip joins the run.
+double rise_at(const GapStrips& g, const Run& run, double approach, std::ptrdiff_t j) {
+  const bool inside =
+      j >= static_cast<std::ptrdiff_t>(run.first) && j <= static_cast<std::ptrdiff_t>(run.last);
+  return inside ? g.h[static_cast<std::size_t>(j)] - run.h_O : approach;
+}
+
+// Integral over s of the positive part of g, linear from g0 to g1 over a length `step`.
+double positive_integral(double g0, double g1, double step) {
+  if (g0 >= 0.0 && g1 >= 0.0) return 0.5 * (g0 + g1) * step;
+  if (g0 <= 0.0 && g1 <= 0.0) return 0.0;
+  const double up = std::max(g0, g1);
+  return 0.5 * up * up / std::abs(g1 - g0) * step;
+}
+
+// Integral over s of the interpenetration g = level - (h - h_O) > 0 of the whole run (all its
+// pieces), the gap taken linear between the strip centres and O (where g = level, also when O
+// lies between two pieces) and out to one strip beyond the run at the rigid approach (rise_at):
+// positive for every level > 0, and continuous in the level and the gap however few strips the
+// run spans.
+double interpenetration_integral(const GapStrips& g, const Run& run, double approach,
+                                 double level) {
+  const auto first = static_cast<std::ptrdiff_t>(run.first) - 1;
+  const auto last = static_cast<std::ptrdiff_t>(run.last) + 1;
+  const auto s_of = [&](std::ptrdiff_t j) { return g.s_first + static_cast<double>(j) * g.ds; };
+  double area = 0.0;
+  double s0 = s_of(first), g0 = level - rise_at(g, run, approach, first);
+  bool passed_O = !(run.s_O > s0);
+  for (std::ptrdiff_t j = first + 1; j <= last; ++j) {
+    const double s1 = s_of(j);
+    if (!passed_O && run.s_O <= s1) {
+      area += positive_integral(g0, level, run.s_O - s0);
+      s0 = run.s_O;
+      g0 = level;
+      passed_O = true;
+    }
+    const double g1 = level - rise_at(g, run, approach, j);
+    area += positive_integral(g0, g1, s1 - s0);
+    s0 = s1;
+    g0 = g1;
+  }
+  return area;
+}
+
+// Secant lateral curvature of the run's interpenetration at `level` above h_O:
+// B = 16 L^3 / (9 (int g ds)^2), B itself for a parabola h - h_O = B (s - s_O)^2.
+double secant_curvature(const GapStrips& g, const Run& run, double approach, double level) {
+  const double area = interpenetration_integral(g, run, approach, level);
+  const double root = 4.0 * level * std::sqrt(level) / (3.0 * area);  // no under- or overflow
+  return area > 0.0 ? root * root : 0.0;
+}
+
+Levels levels_of(const GapStrips& g, const Run& run, double approach, const KpOptions& options) {
+  if (options.penetration == KpPenetration::fixed) return {options.epsilon * approach, 1.0};
+  // A fixed number of steps keeps the levels continuous in the gap and the approach.
+  constexpr int kSteps = 3;
+  double eps_s = 0.5;
+  for (int k = 0; k < kSteps; ++k) {
+    const double b = secant_curvature(g, run, approach, eps_s * approach);
+    eps_s = 1.0 - detail::hertz_penetration_x(b / run.a_O);
+  }
+  return {eps_s * approach, (1.0 - eps_s) / eps_s};
+}
+
+// Integrals of one run at the virtual penetration `levels`.
+RunIntegrals integrate_run(const GapStrips& g, const Run& run, const Levels& levels) {
   const double half = 0.5 * g.ds;
   RunIntegrals r;
   r.first_contact = run.last + 1;
   double sum_xl2 = 0.0;
   for (std::size_t j = run.first; j <= run.last; ++j) {
-    const double gj = level - (g.h[j] - run.h_O);
-    if (!(gj > 0.0)) continue;
-    const double xl2 = gj / g.ax[j];
+    const double xl2 = levels.xl2(g.h[j] - run.h_O, g.ax[j]);
+    if (!(xl2 > 0.0)) continue;
     const double xl = std::sqrt(xl2);
     sum_xl2 += xl2;
     r.max_xl = std::max(r.max_xl, xl);
@@ -105,23 +186,35 @@ double run_load(const RunIntegrals& r, double approach, double E_star) {
 }
 
 // Writes the patch of one run from its integrals.
-void write_patch(const GapStrips& g, const Run& run, double approach, double level,
+void write_patch(const GapStrips& g, const Run& run, double approach, const Levels& levels,
                  const RunIntegrals& r, double load, KpPatch& patch) {
   // p(x, s) = p_O sqrt(x_l^2 - x^2)/x_l(s_O) with p_O = N x_l(s_O)/I2, so the pressure at the
   // centre of strip j is N x_l,j / I2.
   const double p_per_xl = load / r.i2;
   patch.strips.clear();
   for (std::size_t j = r.first_contact; j <= r.last_contact; ++j) {
-    const double gj = level - (g.h[j] - run.h_O);
-    const double xl = gj > 0.0 ? std::sqrt(gj / g.ax[j]) : 0.0;
-    patch.strips.push_back({g.s(j), xl, p_per_xl * xl, gj > 0.0 ? 0.0 : -gj / g.ax[j]});
+    const double xl2 = levels.xl2(g.h[j] - run.h_O, g.ax[j]);
+    const double xl = xl2 > 0.0 ? std::sqrt(xl2) : 0.0;
+    const double opening = xl2 > 0.0 ? 0.0 : levels.opening(g.h[j] - run.h_O, g.ax[j]);
+    patch.strips.push_back({g.s(j), xl, p_per_xl * xl, opening});
   }
+  // The strips beyond either end, out of contact: how much x_lead^2 they lack (beyond the run
+  // at the rigid approach, rise_at; the end strip's A where there is no strip).
+  const auto opening_at = [&](std::ptrdiff_t j, std::size_t nearest) {
+    const bool exists = j >= 0 && j < static_cast<std::ptrdiff_t>(g.size());
+    const double a = exists ? g.ax[static_cast<std::size_t>(j)] : g.ax[nearest];
+    return levels.opening(rise_at(g, run, approach, j), a);
+  };
+  patch.opening_before =
+      opening_at(static_cast<std::ptrdiff_t>(r.first_contact) - 1, r.first_contact);
+  patch.opening_after = opening_at(static_cast<std::ptrdiff_t>(r.last_contact) + 1, r.last_contact);
   patch.ds = g.ds;
   patch.s_O = run.s_O;
   patch.h_O = run.h_O;
   patch.approach = approach;
-  patch.virtual_penetration = level;
-  patch.x_lead_O = std::sqrt(level / run.a_O);
+  patch.virtual_penetration = levels.lateral;
+  patch.stretch = levels.stretch;
+  patch.x_lead_O = std::sqrt(levels.stretch * levels.lateral / run.a_O);
   patch.normal_force = load;
   patch.p_O = p_per_xl * patch.x_lead_O;
   // O usually lies between strip centres, and the pressure peaks there.
@@ -132,7 +225,7 @@ void write_patch(const GapStrips& g, const Run& run, double approach, double lev
 
 namespace detail {
 
-double total_load(const GapStrips& g, double delta, double eps, double E_star,
+double total_load(const GapStrips& g, double delta, const KpOptions& options, double E_star,
                   EvaluationCache& cache) {
   double load = 0.0;
   cache.delta = delta;
@@ -140,7 +233,9 @@ double total_load(const GapStrips& g, double delta, double eps, double E_star,
   cache.complete = true;
   for_each_run(g, delta, [&](const Run& run) {
     const double approach = delta - run.h_O;
-    const RunIntegrals r = approach > 0.0 ? integrate_run(g, run, eps * approach) : RunIntegrals{};
+    const RunIntegrals r = approach > 0.0
+                               ? integrate_run(g, run, levels_of(g, run, approach, options))
+                               : RunIntegrals{};
     if (cache.count < cache.runs.size()) {
       cache.runs[cache.count++] = r;
     } else {
@@ -151,7 +246,7 @@ double total_load(const GapStrips& g, double delta, double eps, double E_star,
   return load;
 }
 
-void fill_result(const GapStrips& g, double delta, double eps, double E_star,
+void fill_result(const GapStrips& g, double delta, const KpOptions& options, double E_star,
                  const EvaluationCache& cache, KpResult& result) {
   const bool cached = cache.complete && cache.delta == delta;
   std::size_t used = 0;
@@ -161,18 +256,18 @@ void fill_result(const GapStrips& g, double delta, double eps, double E_star,
   result.approach = delta;
   for_each_run(g, delta, [&](const Run& run) {
     const double approach = delta - run.h_O;
-    const double level = eps * approach;
+    const Levels levels = approach > 0.0 ? levels_of(g, run, approach, options) : Levels{};
     RunIntegrals r;
     if (cached && k < cache.count) {
       r = cache.runs[k];
     } else if (approach > 0.0) {
-      r = integrate_run(g, run, level);
+      r = integrate_run(g, run, levels);
     }
     ++k;
     const double load = run_load(r, approach, E_star);
     if (!(load > 0.0)) return;
     if (used == result.patches.size()) result.patches.emplace_back();
-    write_patch(g, run, approach, level, r, load, result.patches[used]);
+    write_patch(g, run, approach, levels, r, load, result.patches[used]);
     result.pmax = std::max(result.pmax, result.patches[used].pmax);
     result.normal_force += load;
     ++used;
@@ -264,7 +359,7 @@ void solve_kp_approach(const GapStrips& gap, double E_star, double delta, const 
     detail::set_no_contact(result, delta, "the approach does not reach the gap minimum");
     return;
   }
-  detail::fill_result(gap, delta, options.epsilon, E_star, detail::EvaluationCache{}, result);
+  detail::fill_result(gap, delta, options, E_star, detail::EvaluationCache{}, result);
   result.evaluations = 1;
   if (result.patches.empty()) {
     detail::set_no_contact(result, delta,

@@ -30,12 +30,12 @@ struct EvaluationCache {
 };
 
 // Total KP load [N] at the rigid approach delta; records the run integrals in `cache`.
-double total_load(const GapStrips& g, double delta, double eps, double E_star,
+double total_load(const GapStrips& g, double delta, const KpOptions& options, double E_star,
                   EvaluationCache& cache);
 
 // Writes every patch with load at delta into `result`, reusing its storage, and the run
 // integrals from `cache` when it holds this delta. Sets approach, normal_force, pmax, patches.
-void fill_result(const GapStrips& g, double delta, double eps, double E_star,
+void fill_result(const GapStrips& g, double delta, const KpOptions& options, double E_star,
                  const EvaluationCache& cache, KpResult& result);
 
 // Smallest finite gap and its strip; index = size() when no gap is finite.

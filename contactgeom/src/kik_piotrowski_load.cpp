@@ -60,7 +60,8 @@ void solve_kp_load(const GapStrips& gap, double E_star, double N, const KpOption
     detail::set_no_contact(result, m.h, "zero normal force");
     return;
   }
-  const double eps = options.epsilon;
+  // The first guess needs a factor; the circle's 1/2 where the patch chooses its own.
+  const double eps = options.penetration == KpPenetration::fixed ? options.epsilon : 0.5;
   const detail::LoadTolerance met{options.load_tolerance};
   int evaluations = 0;
   // f(d) = (N(h_min + d)/N)^(2/3) - 1 is close to linear in the approach d (N ~ d^(3/2)) and
@@ -68,7 +69,7 @@ void solve_kp_load(const GapStrips& gap, double E_star, double N, const KpOption
   detail::EvaluationCache cache;
   auto f = [&](double d) {
     ++evaluations;
-    return detail::load_residual(detail::total_load(gap, m.h + d, eps, E_star, cache), N);
+    return detail::load_residual(detail::total_load(gap, m.h + d, options, E_star, cache), N);
   };
 
   // Phase 1: secant steps from the closed-form guess until the root is met or bracketed. A
@@ -125,7 +126,7 @@ void solve_kp_load(const GapStrips& gap, double E_star, double N, const KpOption
             .x;
   }
 
-  detail::fill_result(gap, m.h + d, eps, E_star, cache, result);
+  detail::fill_result(gap, m.h + d, options, E_star, cache, result);
   result.evaluations = evaluations;
   if (met.met(result.normal_force, N)) {
     result.status = KpStatus::converged;

@@ -75,15 +75,20 @@ PatchMeasures measure_polygons(const std::vector<PatchRing>& rings, double y_O) 
 namespace {
 
 // How far the patch reaches beyond the centre of its outermost strip in contact `edge`, towards
-// the next one [m]: where x_lead^2 (the strip's penetration over its curvature), extrapolated
-// linearly from `inner` (the strip next to it inside), falls to zero, between 0 and one strip
-// width. The patch's edges then move continuously as a strip comes into contact instead of
-// jumping by half a strip, so the patch's width and its SDEC are continuous in the wheelset's
-// position (a quasi-static solver converges on them). Half a strip, as a staircase outline
-// gives, when there is no inner strip in contact or x_lead^2 does not fall towards the edge.
-double edge_reach(const KpStrip& edge, const KpStrip* inner, double ds) {
-  if (inner == nullptr || !(inner->x_lead > 0.0)) return 0.5 * ds;
+// the next one [m], between 0 and one strip width: where x_lead^2 (the strip's penetration over
+// its curvature), taken linear from `edge` to the strip beyond it, which lacks `outside` of it
+// (KpStrip::opening), falls to zero. The patch's edges then move continuously as a strip comes
+// into contact or leaves it (the reach falls to 0 as the strip leaves, and the next strip's
+// reaches a whole strip as the one beyond it is just out), so the patch's width and its SDEC are
+// continuous in the wheelset's position (a quasi-static solver converges on them). Where the
+// strip beyond is not known (NaN: the gap ends; 0: strips built without their openings, or a
+// strip just touching), x_lead^2 extrapolated linearly from `inner`
+// (the strip next to it inside); half a strip, as a staircase outline gives, when there is no
+// inner strip in contact or x_lead^2 does not fall towards the edge.
+double edge_reach(const KpStrip& edge, const KpStrip* inner, double outside, double ds) {
   const double outer2 = edge.x_lead * edge.x_lead;
+  if (outside > 0.0) return ds * outer2 / (outer2 + outside);
+  if (inner == nullptr || !(inner->x_lead > 0.0)) return 0.5 * ds;
   const double fall = inner->x_lead * inner->x_lead - outer2;
   if (!(fall > 0.0)) return 0.5 * ds;
   return std::min(ds, ds * outer2 / fall);
@@ -121,11 +126,15 @@ double lateral_edge(const KpPatch& patch, std::size_t first, std::size_t last, i
   const std::vector<KpStrip>& strips = patch.strips;
   const auto [lo, hi] = piece_at_O(patch, first, last);
   const auto step = [dir](std::size_t k) { return dir > 0 ? k + 1 : k - 1; };
+  const std::size_t end = dir > 0 ? last : first;
   const auto outer_edge = [&](std::size_t from, std::size_t to) {  // `to`: the outermost strip
     const KpStrip* inner = from != to ? &strips[dir > 0 ? to - 1 : to + 1] : nullptr;
-    return strips[to].s + dir * edge_reach(strips[to], inner, patch.ds);
+    // Beyond `to`: a strip of the list out of contact, or the one beyond the list's end.
+    const bool listed = dir > 0 ? to + 1 < strips.size() : to > 0;
+    const double outside =
+        listed ? strips[step(to)].opening : (dir > 0 ? patch.opening_after : patch.opening_before);
+    return strips[to].s + dir * edge_reach(strips[to], inner, outside, patch.ds);
   };
-  const std::size_t end = dir > 0 ? last : first;
   double edge = dir > 0 ? outer_edge(lo, hi) : outer_edge(hi, lo);
   std::size_t k = dir > 0 ? hi : lo;
   double opening = 0.0;

@@ -80,7 +80,12 @@ std::vector<Cut> cuts_of(const GapSamples& g, std::size_t first, std::size_t las
     const double prominence = g.h[at[k]] - shallower;
     const double depth = approach - shallower;  // the shallower basin's local approach
     const double r = prominence / depth;
-    cuts.push_back({at[k], smoothstep((r - kMergedBelow) / (kSeparateAbove - kMergedBelow))});
+    // A rise is found once it reaches kBasinRipple, where a shallow basin's r may already lie
+    // above kMergedBelow: the cut fades in over the next ripple of rise, so that the contact does
+    // not jump as the rise is found (it did, by 15 % of a wheel's Fx, on a banded worn tread).
+    const double found = smoothstep(prominence / kBasinRipple - 1.0);
+    cuts.push_back(
+        {at[k], found * smoothstep((r - kMergedBelow) / (kSeparateAbove - kMergedBelow))});
   }
   return cuts;
 }

@@ -323,9 +323,9 @@ std::optional<WheelsetContact> WheelsetContactTable::contact(const WheelsetState
     double s = 0.0;
   };
   auto level = [&](double Fz) {
-    const auto above = std::upper_bound(loads_.begin(), loads_.end(), Fz);
+    const auto heavier = std::upper_bound(loads_.begin(), loads_.end(), Fz);
     Level l;
-    l.j = std::clamp<std::size_t>(static_cast<std::size_t>(above - loads_.begin()), 1,
+    l.j = std::clamp<std::size_t>(static_cast<std::size_t>(heavier - loads_.begin()), 1,
                                   loads_.size() - 1) -
           1;
     l.s =

@@ -224,6 +224,17 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
              [&](const auto& n, const auto& k) {
                s.strip_width = number(n, k, 1e-5, 2e-3, "the strip width in m");
              }},
+            {"normal_method",
+             [&](const auto& n, const auto& k) {
+               const std::string name = text(n, k);
+               const auto method = core::value_named(contactgeom::kNormalMethodNames, name);
+               if (!method) {
+                 throw InputError(where(n.source(), k) + " = \"" + name +
+                                  "\": unknown normal method; use " +
+                                  core::list_names(contactgeom::kNormalMethodNames));
+               }
+               s.normal_method = *method;
+             }},
             {"virtual_penetration",
              [&](const auto& n, const auto& k) {
                s.virtual_penetration = number(n, k, 0.05, 1.0, "Kik-Piotrowski's epsilon");

@@ -143,6 +143,37 @@ TEST(PatchMeasures, WidthIsContinuousAsStripsComeIntoContact) {
   EXPECT_EQ(compared, 301);
 }
 
+// The same parabolic gap with the openings the solver gives the strips out of contact (the
+// x_lead^2 they lack, inside the list and beyond its ends): the edge is where x_lead^2, linear
+// between the outer strip and the one beyond, falls to zero. As a strip leaves, its reach falls
+// to 0 and the next strip's reaches a whole strip, so the width is continuous at both ends of
+// every strip, and the chord of the parabola between two strips misses its root by at most
+// ds/4 · (ds / L) here (0.05 ds): bound 0.15 ds each side.
+TEST(PatchMeasures, WidthFollowsTheOpeningsBeyondTheEdges) {
+  const double ds = 1e-4;
+  double previous = 0.0;
+  int compared = 0;
+  for (int step = 0; step <= 300; ++step) {
+    const double L = 0.21e-3 + step * 1e-6;
+    const auto x2 = [L](double s) { return 9.0 * (L * L - s * s); };
+    KpPatch p;
+    p.ds = ds;
+    p.s_O = 0.0;
+    const int n = static_cast<int>(std::floor(L / ds * (1.0 - 1e-12)));
+    for (int k = -n; k <= n; ++k) p.strips.push_back({k * ds, std::sqrt(x2(k * ds)), 1e9});
+    p.opening_before = -x2(-(n + 1) * ds);
+    p.opening_after = -x2((n + 1) * ds);
+    const PatchMeasures m = measure_patch(p);
+    EXPECT_NEAR(m.width, 2.0 * L, 0.3 * ds) << "L " << L;
+    if (step > 0) {
+      EXPECT_LT(std::abs(m.width - previous), 5e-6) << "L " << L;
+      ++compared;
+    }
+    previous = m.width;
+  }
+  EXPECT_EQ(compared, 300);
+}
+
 // A worn tread's patch: a main piece around O and, four strips out of contact away, a band of
 // one strip that comes into contact and leaves it. Its reach enters the width with the share
 // d / (d + r), d its x_lead^2, r the largest opening of the strips between: nothing as it
@@ -167,16 +198,19 @@ TEST(PatchMeasures, AnOuterBandEntersTheWidthContinuously) {
   // Symmetric, its edges a third of a strip beyond the outer strips: (1/(4 - 1)) ds.
   const double main_width = measure_patch(main_only).width;
   EXPECT_NEAR(main_width, (6.0 + 2.0 / 3.0) * ds, 1e-15);
-  const double main_edge = 0.5 * main_width;
+  const double r = 4e-8;  // opening [m^2]: an x_lead 0.2 mm short of touching
+  // With the band, the strip beyond the main piece's gauge-side edge is known: x_lead^2 taken
+  // linear from the outer strip's (1e-3)^2 to its -r (the field side keeps its third).
+  const double field_edge = (3.0 + 1.0 / 3.0) * ds;
+  const double main_edge = (3.0 + 1e-6 / (1e-6 + r)) * ds;
   const double band_edge = 8.5 * ds;  // a lone strip reaches half a strip
-  const double r = 4e-8;              // opening [m^2]: an x_lead 0.2 mm short of touching
-  double previous = main_width;
+  double previous = field_edge + main_edge;
   int compared = 0;
   for (int step = 1; step <= 100; ++step) {
     const double x = 0.5e-3 * step / 100.0;  // the band's x_lead: 5 um ... 0.5 mm
     const double w = measure_patch(patch(x, r)).width;
     const double share = x * x / (x * x + r);
-    EXPECT_NEAR(w, main_edge + share * (band_edge - main_edge) + main_edge, 1e-15);
+    EXPECT_NEAR(w, main_edge + share * (band_edge - main_edge) + field_edge, 1e-15);
     // Continuous: d(share)/dx peaks at 3.25 per mm (x = sqrt(r/3)); times the band's reach of
     // 0.52 mm and a step of 5 um, 8.4 um, where the staircase jumps by the whole 0.52 mm.
     EXPECT_LT(std::abs(w - previous), 10e-6) << "x_lead " << x;
@@ -186,7 +220,7 @@ TEST(PatchMeasures, AnOuterBandEntersTheWidthContinuously) {
   EXPECT_EQ(compared, 100);
   // An unknown opening (0: strips built by hand, or a patch interpolated from a table) keeps the
   // whole staircase extent, as before.
-  EXPECT_NEAR(measure_patch(patch(1e-4, 0.0)).width, main_edge + band_edge, 1e-15);
+  EXPECT_NEAR(measure_patch(patch(1e-4, 0.0)).width, field_edge + band_edge, 1e-15);
 }
 
 // O blended between two bands (blended_minimum.hpp) can lie in the strips out of contact

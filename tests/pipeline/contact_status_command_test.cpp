@@ -57,6 +57,23 @@ TEST(ContactStatusCommand, FlankContactBeyondNadalsLimitIsFlagged) {
   EXPECT_NEAR(*json_number(r.out, "Y_over_Q"), 137.2 / 55.0, 0.05 * 137.2 / 55.0);
 }
 
+// --normal-method: on the flank (CONTACT's y_ws = -8 mm, area 53.6 mm^2, width 1.8 mm with
+// 0.2 mm elements) the Hertz-calibrated patch is within 10 % of CONTACT's area and width
+// (wheel_rail_test.cpp), Kik-Piotrowski's (the default) 28 % and 57 % too large; an unknown
+// method is refused naming the choices.
+TEST(ContactStatusCommand, NormalMethodChoosesThePatch) {
+  const auto kp = run_wheelwear(pair_args(0.008));
+  const auto calibrated = run_wheelwear(pair_args(0.008) + " --normal-method hertz-calibrated");
+  ASSERT_EQ(kp.exit_code, 0) << kp.err;
+  ASSERT_EQ(calibrated.exit_code, 0) << calibrated.err;
+  EXPECT_NEAR(*json_number(calibrated.out, "area"), 53.56e-6, 0.10 * 53.56e-6);
+  EXPECT_NEAR(*json_number(calibrated.out, "width"), 1.8e-3, 0.10 * 1.8e-3);
+  EXPECT_GT(*json_number(kp.out, "area"), 1.2 * 53.56e-6);
+  const auto bad = run_wheelwear(pair_args(0.008) + " --normal-method analyn");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.err.find("hertz-calibrated"), std::string::npos) << bad.err;
+}
+
 TEST(ContactStatusCommand, TreadAndRootContactAreNotFlagged) {
   int compared = 0;
   for (double dy : {-0.004, 0.0, 0.004, 0.006}) {

@@ -60,15 +60,15 @@ TEST(Inclination, OneInFortyIsTheSlopeOfOneFortieth) {
 }
 
 // Computed but no usable answer: a curve in which the worn wheel of tests/data/profiles finds
-// no balance (docs/vehicle.md: a banded tread whose lateral force falls as it shifts out) prints
-// its last iterate and exits with 3.
+// no balance (R 3000 m at 45 m/s: docs/vehicle.md, Newton on its banded tread) prints its last
+// iterate and exits with 3.
 TEST_F(OutputRule, CurvingWithoutABalanceExitsWithThree) {
   write("worn.toml", "[wheel]\nprofile = \"" +
                          testing::test_data("profiles/s1002_worn_33200km.csv") +
                          "\"\nradius_m = 0.46\n[rail]\nprofile = \"60E1\"\ninclination = "
                          "0.025\n[[load_collective.state]]\naxle_load_N = 1e5\nspeed_m_s = 30\n");
   const auto r = run_wheelwear("curving " + (dir_ / "worn.toml").string() +
-                               " --radius 1000 --cant 0.1 --speed 35 --json");
+                               " --radius 3000 --cant 0.05 --speed 45 --json");
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.out.find("\"converged\": false"), std::string::npos) << r.out.substr(0, 200);
   EXPECT_NE(r.err.find("wheelwear: failed: curving did not converge"), std::string::npos) << r.err;

@@ -51,6 +51,7 @@ TEST_F(SceneTest, ReadsEveryKeyInSiUnits) {
       "[material]\nyoungs_modulus_Pa = 210e9\npoisson = 0.3\n"
       "[contact]\nmodel = \"eqe-shifted\"\nfriction = 0.4\ngrid_nx = 12\ngrid_ny = 14\n"
       "scheme = \"second-order\"\nstrip_width_m = 1e-4\nvirtual_penetration = 0.5\n"
+      "normal_method = \"hertz-calibrated\"\n"
       "[wear]\nlaw = \"archard\"\n"
       "[run]\ndistance_m = 1000\nstep_distance_m = 100\nmax_depth_step_m = 1e-5\n"
       "smoothing_length_m = 1e-3\nwheels = \"separate\"\n"
@@ -80,6 +81,9 @@ TEST_F(SceneTest, ReadsEveryKeyInSiUnits) {
   EXPECT_EQ(s.grid_nx, 12);
   EXPECT_EQ(s.grid_ny, 14);
   EXPECT_EQ(s.scheme, tangential::FastsimScheme::second_order);
+  EXPECT_EQ(s.normal_method, contactgeom::KpPenetration::hertz_calibrated);
+  EXPECT_EQ(parse_scene(std::string(kState), dir_).normal_method,
+            contactgeom::KpPenetration::fixed);
   EXPECT_EQ(s.wear_law, "archard");
   EXPECT_DOUBLE_EQ(s.distance, 1000.0);
   EXPECT_DOUBLE_EQ(s.step_distance, 100.0);
@@ -291,6 +295,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"UnknownTangentialMethod",
                  "[contact]\ntangential_method = \"kalker\"\n" + std::string(kState),
                  "contact.tangential_method = \"kalker\": unknown tangential method"},
+        BadScene{"UnknownNormalMethod",
+                 "[contact]\nnormal_method = \"analyn\"\n" + std::string(kState),
+                 "contact.normal_method = \"analyn\": unknown normal method; use "
+                 "kik-piotrowski, hertz-calibrated"},
         BadScene{"MethodDisagreesWithModel",
                  "[contact]\nmodel = \"eqe\"\ntangential_method = \"fastsim-sdec\"\n" +
                      std::string(kState),

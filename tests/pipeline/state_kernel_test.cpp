@@ -78,6 +78,24 @@ TEST(StateKernel, WearsEveryPatchOfTwoPointContact) {
   EXPECT_NEAR(area, expected, 1e-12 * expected);
 }
 
+// [contact] normal_method reaches every contact the kernel solves: the flange-root patch of the
+// two-point state is narrower with the Hertz-calibrated penetration (its lateral factor there,
+// about 0.3, below Kik-Piotrowski's 0.55), while both carry the same wheel load.
+TEST(StateKernel, SolvesWithTheScenesNormalMethod) {
+  const KernelCase fixed(two_point_scene());
+  const KernelCase calibrated(two_point_scene("normal_method = \"hertz-calibrated\"\n"));
+  EXPECT_EQ(fixed.kernel.contact_options().kp.penetration, contactgeom::KpPenetration::fixed);
+  EXPECT_EQ(calibrated.kernel.contact_options().kp.penetration,
+            contactgeom::KpPenetration::hertz_calibrated);
+  const contactgeom::WheelsetContact a = fixed.kernel.contact(fixed.track, fixed.scene.states[0]);
+  const contactgeom::WheelsetContact b =
+      calibrated.kernel.contact(calibrated.track, calibrated.scene.states[0]);
+  ASSERT_EQ(a.left.patches.size(), 2u);
+  ASSERT_EQ(b.left.patches.size(), 2u);
+  EXPECT_LT(b.left.patches[1].measures.width, 0.9 * a.left.patches[1].measures.width);
+  EXPECT_NEAR(b.left.vertical_force, a.left.vertical_force, 1e-6 * a.left.vertical_force);
+}
+
 // A patch without a Hertz ellipse (none on new S1002/60E1: it is made so here) is not solved
 // under model hertz, counted in hertz_dropped, and adds no wear; the other patch still wears.
 TEST(StateKernel, CountsAPatchWithoutHertzEllipse) {

@@ -193,6 +193,47 @@ TEST(WheelRailExact, GapAgreesWithContactsOnTheTread) {
   EXPECT_EQ(tread_cases, 5);  // y_ws = 2, 4, ..., 10 mm
 }
 
+// From the flange root onto the flank (dy 6 to 8 mm in 0.05 mm steps; S1002 on UIC60 at
+// 55 kN, where CONTACT's y_ws = -8 case lies), the Hertz-calibrated patch against the exact
+// normal solve on the same undeformed distance: area within 10 %, pmax within 15 % (the bounds
+// the flange-contact work sets). Measured at most 4.6 % and 6.2 %; Kik-Piotrowski's eps = 0.55
+// gives +28 % and -26 % on the flank. From 6.6 to 6.95 mm the contact passes from root to
+// flank (at 6.6 mm the exact pressure already peaks where the flank begins): the exact
+// pressure spreads over both (a wider grid than the patch's), the strips' patch is the flank's
+// with the root's basin below its level, and they are not compared here (docs/normal-contact.md).
+TEST(WheelRailExact, HertzCalibratedPatchesFollowTheExactSolveOntoTheFlank) {
+  contactgeom::WheelRailOptions options;
+  options.kp.penetration = contactgeom::KpPenetration::hertz_calibrated;
+  WheelRailExactOptions grid;
+  grid.nx = 60;
+  grid.ny = 60;
+  grid.margin = 2.5;
+  double worst_area = 0.0, worst_pmax = 0.0;
+  int compared = 0;
+  for (int step = 0; step <= 40; ++step) {
+    if (step >= 12 && step <= 19) continue;  // 6.6 ... 6.95 mm: the transition
+    contactgeom::WheelsetPose pose;
+    pose.dy = 6e-3 + step * 0.05e-3;
+    const auto c = contactgeom::solve_wheel_rail(benchmark_pair(), pose, 55e3, options);
+    ASSERT_EQ(c.status, contactgeom::WheelRailStatus::ok) << c.message;
+    ASSERT_EQ(c.patches.size(), 1u) << "dy " << pose.dy;
+    const contactgeom::WheelRailPatch& p = c.patches[0];
+    const WheelRailExactSolution s = wheel_rail_exact(benchmark_pair(), pose, p, {}, 0.35, grid);
+    ASSERT_EQ(s.rolling.status, ExactStatus::converged) << s.rolling.message;
+    const double pmax = *std::max_element(s.rolling.pn.begin(), s.rolling.pn.end());
+    const double area = p.measures.area / s.contact_area - 1.0;
+    const double peak = p.pmax / pmax - 1.0;
+    worst_area = std::max(worst_area, std::abs(area));
+    worst_pmax = std::max(worst_pmax, std::abs(peak));
+    EXPECT_LT(std::abs(area), 0.10) << "dy " << pose.dy;
+    EXPECT_LT(std::abs(peak), 0.15) << "dy " << pose.dy;
+    compared += 2;
+  }
+  RecordProperty("worst_area", std::to_string(worst_area));
+  RecordProperty("worst_pmax", std::to_string(worst_pmax));
+  EXPECT_EQ(compared, 2 * 33);
+}
+
 // Bad input is refused with a message that names it.
 TEST(WheelRailExact, RefusesBadInput) {
   const contactgeom::WheelRailPatch p = only_patch(-4e-3);

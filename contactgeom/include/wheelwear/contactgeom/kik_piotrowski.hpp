@@ -16,6 +16,9 @@
 ///    delta_k = 1/(pi E*) int int p / r dA (Boussinesq), which gives
 ///    p_O = pi E* delta_k x_l(s_O) / I1 and N_k = pi E* delta_k I2 / I1 with
 ///    I1 = int int sqrt(x_l^2 - x^2) / sqrt(x^2 + (s - s_O)^2) dx ds, I2 = int pi/2 x_l^2 ds.
+/// With KpPenetration::hertz_calibrated step 1 takes two factors of the patch's own instead of
+/// eps: strips touch below eps_s delta_k, and x_l(s)^2 = eps_x (eps_s delta_k - (h(s) - h_O)) /
+/// (eps_s A(s)); steps 2 and 3 are unchanged.
 /// Cross-checks of these formulas: (a) for a quadratic gap and eps = 1/2 they reduce exactly to
 /// Hertz's circular contact (N = 4/3 E* a delta, p_O = 3N/(2 pi a^2)), derived in
 /// kik_piotrowski.cpp and tested; (b) they agree with the public Python implementation of the
@@ -38,9 +41,12 @@
 /// reaches. Everywhere else N(delta) is continuous and, in every case tested, rising.
 
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
+
+#include "wheelwear/core/enum_names.hpp"
 
 namespace wheelwear::contactgeom {
 
@@ -62,10 +68,35 @@ struct GapStrips {
   void validate() const;
 };
 
+/// How the virtual penetration is chosen.
+enum class KpPenetration {
+  /// One factor eps for both directions (Piotrowski & Kik 2008): KpOptions::epsilon.
+  fixed,
+  /// Per patch, the factors Hertz's ellipse has for the patch's own curvature ratio: laterally
+  /// eps_s delta_k decides which strips touch, along x eps_x delta_k sets the strips' length,
+  /// with eps_x + eps_s = 1 (hertz_penetration.hpp). The lateral curvature is the secant one of
+  /// the run's interpenetration (all its pieces), B = 16 L^3 / (9 (int g ds)^2) with
+  /// g = L - (h - h_O) > 0 at the lateral level L = eps_s delta_k (B itself for a parabola),
+  /// and eps_s follows from B/A(s_O) by three fixed-point steps from 1/2. For a quadratic gap
+  /// the patch and the pressure are Hertz's, to the strip model (7e-4 with 80 strips across); a
+  /// fixed eps is right only for one axis ratio (1/2 for a circle), and on slender flange
+  /// patches (B/A = 100, a/b = 18: eps_x 0.77, eps_s 0.23) 0.55 makes them 1.5 times too wide
+  /// and 15 % too short. docs/normal-contact.md compares both with CONTACT.
+  hertz_calibrated,
+};
+
+/// The names scenes and the command line give the two (the normal method).
+inline constexpr core::NameTable<KpPenetration, 2> kNormalMethodNames = {{
+    {KpPenetration::fixed, "kik-piotrowski"},
+    {KpPenetration::hertz_calibrated, "hertz-calibrated"},
+}};
+
 /// Options of the Kik-Piotrowski solver.
 struct KpOptions {
-  /// Virtual penetration factor eps [-] in (0, 1] (Piotrowski & Kik 2008 recommend 0.55).
+  /// Virtual penetration factor eps [-] in (0, 1] (Piotrowski & Kik 2008 recommend 0.55), used
+  /// with KpPenetration::fixed.
   double epsilon = 0.55;
+  KpPenetration penetration = KpPenetration::fixed;
   /// Prescribed load: the iteration stops when |N/N_target - 1| <= load_tolerance, in (0, 0.01],
   /// and the status is converged if and only if the result's N meets this. (The wheel/rail
   /// solves use WheelRailOptions::load_tolerance instead, the same test on Fz.)
@@ -82,8 +113,9 @@ struct KpStrip {
   double x_lead = 0.0;  ///< leading edge [m] >= 0; the trailing edge is -x_lead; 0: no contact
   double p_peak = 0.0;  ///< pressure at x = 0 [Pa]
   /// A strip out of contact between two pieces of a patch: how far its gap stays above the
-  /// virtual penetration level, over A(s): the x_lead^2 it lacks [m^2]. 0 in contact (or not
-  /// known), > 0 otherwise.
+  /// virtual penetration level, over A(s), times KpPatch::stretch: the x_lead^2 it lacks [m^2].
+  /// 0 in contact (or not known: strips built by hand); the solver gives every strip out of
+  /// contact a positive one, the smallest double where the gap is just at the level.
   double opening = 0.0;
   /// Pressure p(x) = p_peak sqrt(1 - x^2/x_lead^2) [Pa] at x [m]; 0 outside the strip's edges.
   double pressure(double x) const;
@@ -96,15 +128,26 @@ struct KpPatch {
   /// Strips from the first to the last one in contact, in increasing s; interior strips with
   /// x_lead = 0 are gaps between pieces of the patch.
   std::vector<KpStrip> strips;
-  double ds = 0.0;                   ///< strip width [m]
-  double s_O = 0.0;                  ///< initial contact point O: gap minimum (parabola fit) [m]
-  double h_O = 0.0;                  ///< gap at O [m], same datum as GapStrips::h
-  double approach = 0.0;             ///< local approach delta_k = delta - h_O [m]
-  double virtual_penetration = 0.0;  ///< eps delta_k [m]
-  double x_lead_O = 0.0;             ///< leading edge at O, sqrt(eps delta_k / A(s_O)) [m]
-  double normal_force = 0.0;         ///< N_k [N]
-  double p_O = 0.0;                  ///< pressure at O [Pa]
-  double pmax = 0.0;                 ///< largest pressure, max(p_O, strip centres) [Pa]
+  double ds = 0.0;        ///< strip width [m]
+  double s_O = 0.0;       ///< initial contact point O: gap minimum (parabola fit) [m]
+  double h_O = 0.0;       ///< gap at O [m], same datum as GapStrips::h
+  double approach = 0.0;  ///< local approach delta_k = delta - h_O [m]
+  /// Lateral virtual penetration eps_s delta_k [m] (eps_s = eps with a fixed factor): strips
+  /// with h - h_O below it touch.
+  double virtual_penetration = 0.0;
+  /// Ratio eps_x / eps_s of the longitudinal to the lateral factor (1 with a fixed factor): a
+  /// strip's x_lead^2 is this times (virtual_penetration - (h - h_O)) / A(s).
+  double stretch = 1.0;
+  double x_lead_O = 0.0;      ///< leading edge at O, sqrt(eps_x delta_k / A(s_O)) [m]
+  double normal_force = 0.0;  ///< N_k [N]
+  double p_O = 0.0;           ///< pressure at O [Pa]
+  double pmax = 0.0;          ///< largest pressure, max(p_O, strip centres) [Pa]
+  /// The KpStrip::opening of the strip just before the first and just after the last of
+  /// `strips` [m^2], > 0: where the patch's lateral edges lie between strips. A strip beyond
+  /// the patch's run of interpenetration counts as lying at the rigid approach. NaN: not known
+  /// (a patch built by hand).
+  double opening_before = std::numeric_limits<double>::quiet_NaN();
+  double opening_after = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Outcome of a Kik-Piotrowski solve.

@@ -39,11 +39,14 @@ PatchMeasures measure_polygons(const std::vector<PatchRing>& rings, double y_O);
 /// Measures of a Kik-Piotrowski patch computed directly from its strips (the fast path):
 /// area = sum 2 x_lead ds, length = 2 max x_lead, centroid_x = 0 (strips are symmetric in x),
 /// O = patch.s_O: equal to measure_polygons(patch_outline(patch), patch.s_O) to rounding
-/// (tested). The width ends where x_lead^2, extrapolated linearly from the two outermost strips
-/// in contact on each side, falls to zero (within one strip beyond the outer strip's centre;
-/// half a strip, as the staircase outline, for a one-strip side): it moves continuously as a
-/// strip comes into contact, so the SDEC and the creep forces are continuous in the wheelset's
-/// position, which Newton's method on a vehicle's balance needs. A piece of the patch beyond
+/// (tested). The width ends where x_lead^2, taken linear from the outermost strip in contact to
+/// the strip beyond it (its -KpStrip::opening, or KpPatch::opening_before/after beyond the list),
+/// falls to zero, within one strip beyond the outer strip's centre: it moves continuously as a
+/// strip comes into contact and as one leaves it, so the SDEC and the creep forces are
+/// continuous in the wheelset's position, which Newton's method on a vehicle's balance needs.
+/// Where the strip beyond is not known (no opening: strips built without them), x_lead^2 is
+/// extrapolated from the two outermost strips instead (half a strip, as the staircase outline,
+/// for a one-strip side), continuous only as strips come into contact. A piece of the patch beyond
 /// strips out of contact (a worn tread's separate band) moves the edge from the piece that
 /// holds O by the share d / (d + r) of its reach, d its deepest x_lead^2 and r the largest
 /// KpStrip::opening between them: nothing as it appears or vanishes, all of it as the two join.

@@ -67,7 +67,9 @@ struct WheelRailOptions {
   /// Patches with a contact angle above this are flange contact [rad] (solve_wheel_rail_lateral):
   /// S1002 on 60E1 touches its tread below 0.13 rad and its flange root above 0.28 rad.
   double flange_angle = 0.2;
-  KpOptions kp;  ///< Kik-Piotrowski options (virtual penetration 0.55)
+  /// Kik-Piotrowski options (virtual penetration 0.55; KpPenetration::hertz_calibrated for
+  /// each patch's own, accurate on slender flange patches).
+  KpOptions kp;
   void validate() const;
 };
 

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "wheelwear/contactgeom/kik_piotrowski.hpp"
 #include "wheelwear/pipeline/cosimulation_hook.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
@@ -200,8 +201,11 @@ struct Scene {
   int grid_ny = 30;
   tangential::FastsimScheme scheme = tangential::FastsimScheme::kalker;
   TangentialMethod tangential = TangentialMethod::fastsim;
-  double strip_width = 0.2e-3;        ///< [m]
-  double virtual_penetration = 0.55;  ///< Kik-Piotrowski epsilon [-]
+  double strip_width = 0.2e-3;  ///< [m]
+  /// How the normal problem chooses its virtual penetration: Kik-Piotrowski's fixed epsilon
+  /// (virtual_penetration), or Hertz-calibrated per patch.
+  contactgeom::KpPenetration normal_method = contactgeom::KpPenetration::fixed;
+  double virtual_penetration = 0.55;  ///< Kik-Piotrowski epsilon [-], with kik-piotrowski
   /// A contact steeper than this is flange climb, its state not worn [rad]
   /// (contactgeom::WheelRailOptions::max_contact_angle).
   double max_contact_angle = 1.35;
