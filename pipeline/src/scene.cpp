@@ -29,6 +29,7 @@ using detail::boolean;
 using detail::format;
 using detail::integer;
 using detail::KeyHandler;
+using detail::named;
 using detail::number;
 using detail::one_of;
 using detail::read_table;
@@ -197,14 +198,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
              }},
             {"scheme",
              [&](const auto& n, const auto& k) {
-               const std::string name = text(n, k);
-               const auto scheme = core::value_named(tangential::kSchemeNames, name);
-               if (!scheme) {
-                 throw InputError(where(n.source(), k) + " = \"" + name +
-                                  "\": unknown FASTSIM scheme; use " +
-                                  core::list_names(tangential::kSchemeNames));
-               }
-               s.scheme = *scheme;
+               s.scheme = named(n, k, tangential::kSchemeNames, "FASTSIM scheme");
              }},
             {"tangential_method",
              [&](const auto& n, const auto& k) {
@@ -226,14 +220,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
              }},
             {"normal_method",
              [&](const auto& n, const auto& k) {
-               const std::string name = text(n, k);
-               const auto method = core::value_named(contactgeom::kNormalMethodNames, name);
-               if (!method) {
-                 throw InputError(where(n.source(), k) + " = \"" + name +
-                                  "\": unknown normal method; use " +
-                                  core::list_names(contactgeom::kNormalMethodNames));
-               }
-               s.normal_method = *method;
+               s.normal_method = named(n, k, contactgeom::kNormalMethodNames, "normal method");
              }},
             {"virtual_penetration",
              [&](const auto& n, const auto& k) {

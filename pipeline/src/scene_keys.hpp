@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/toml_keys.hpp"
 
@@ -49,6 +50,16 @@ inline std::size_t one_of(const toml::node& node, const std::string& key,
     ++index;
   }
   throw InputError(where(node.source(), key) + " = \"" + name + "\": " + std::string(hint));
+}
+// The value `table` names by the text at `key`; any other text is refused naming the choices,
+// `what` saying what the key chooses ("FASTSIM scheme").
+template <class Enum, std::size_t N>
+Enum named(const toml::node& node, const std::string& key, const core::NameTable<Enum, N>& table,
+           std::string_view what) {
+  const std::string name = text(node, key);
+  if (const auto value = core::value_named(table, name)) return *value;
+  throw InputError(where(node.source(), key) + " = \"" + name + "\": unknown " + std::string(what) +
+                   "; use " + core::list_names(table));
 }
 inline void read_table(const toml::table& table, const std::string& section,
                        const std::map<std::string, KeyHandler>& handlers) {

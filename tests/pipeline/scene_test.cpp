@@ -295,6 +295,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"UnknownTangentialMethod",
                  "[contact]\ntangential_method = \"kalker\"\n" + std::string(kState),
                  "contact.tangential_method = \"kalker\": unknown tangential method"},
+        BadScene{"UnknownScheme", "[contact]\nscheme = \"rk4\"\n" + std::string(kState),
+                 "contact.scheme = \"rk4\": unknown FASTSIM scheme; use kalker, second-order"},
         BadScene{"UnknownNormalMethod",
                  "[contact]\nnormal_method = \"analyn\"\n" + std::string(kState),
                  "contact.normal_method = \"analyn\": unknown normal method; use "
