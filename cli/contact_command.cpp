@@ -93,6 +93,7 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
       .add("y_wheel", -p.y_wheel)
       .add("y_rail", -p.y_rail)
       .add("contact_angle", p.contact_angle)
+      .add("contact_angle_centre", p.contact_angle_centre)
       .add("N", p.normal_force)
       .add("pmax", p.pmax)
       .add("rolling_radius", p.rolling_radius)

@@ -163,6 +163,20 @@ PatchForces strip_forces(const WheelRailGap& geometry, const GapSamples& g,
   return f;
 }
 
+namespace {
+
+// The lateral centroid of the strips' line loads, s [m] (O where nothing is loaded).
+double load_centre(const KpPatch& patch) {
+  double load = 0.0, moment = 0.0;
+  for (const KpStrip& strip : patch.strips) {
+    load += strip.line_load();
+    moment += strip.line_load() * strip.s;
+  }
+  return load > 0.0 ? moment / load : patch.s_O;
+}
+
+}  // namespace
+
 WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch, double y_O_run,
                               double angle, PatchForces forces, double E_star, double share) {
   const double c = std::cos(angle);
@@ -170,6 +184,7 @@ WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch
   p.kp = patch;
   p.share = share;
   p.contact_angle = angle;
+  p.contact_angle_centre = geometry.contact_angle(y_O_run - load_centre(patch) * c);
   p.normal_force = patch.normal_force;
   p.vertical_force = forces.vertical;
   p.lateral_force = forces.lateral;

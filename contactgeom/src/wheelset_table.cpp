@@ -133,6 +133,7 @@ WheelRailContact scaled(const std::vector<TablePatch>& patches, WheelRailStatus 
     p.sdec = Sdec{t.a, t.b, t.psi};
     p.pmax = t.pmax;
     p.contact_angle = t.contact_angle;
+    p.contact_angle_centre = t.contact_angle;  // not tabulated: O's
     p.rolling_radius = t.rolling_radius;
     p.y_wheel = t.y_wheel;
     p.y_rail = t.y_rail;

@@ -69,6 +69,8 @@ TEST(ContactStatusCommand, NormalMethodChoosesThePatch) {
   EXPECT_NEAR(*json_number(calibrated.out, "area"), 53.56e-6, 0.10 * 53.56e-6);
   EXPECT_NEAR(*json_number(calibrated.out, "width"), 1.8e-3, 0.10 * 1.8e-3);
   EXPECT_GT(*json_number(kp.out, "area"), 1.2 * 53.56e-6);
+  // The angle at the centre of load, where CONTACT gives its 1.2053 rad (wheel_rail_test.cpp).
+  EXPECT_NEAR(*json_number(calibrated.out, "contact_angle_centre"), 1.2053, 0.01);
   const auto bad = run_wheelwear(pair_args(0.008) + " --normal-method analyn");
   EXPECT_NE(bad.exit_code, 0);
   EXPECT_NE(bad.err.find("hertz-calibrated"), std::string::npos) << bad.err;

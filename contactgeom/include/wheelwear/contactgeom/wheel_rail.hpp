@@ -86,6 +86,10 @@ struct WheelRailPatch {
   double y_rail = 0.0;   ///< O on the rail profile, from its origin, + towards the gauge side [m]
   double s_wheel = 0.0;  ///< arc length of O on the wheel profile [m]
   double contact_angle = 0.0;   ///< angle of the contact plane to the track plane [rad]
+  /// The rail's contact angle at the patch's centre of load (its strips' line loads' lateral
+  /// centroid) [rad], where CONTACT reports its angle (at the weighted centre of its
+  /// interpenetration); contact_angle is O's. The table's patches carry O's.
+  double contact_angle_centre = 0.0;
   double rolling_radius = 0.0;  ///< wheel radius at O: its material point's distance from the
                                 ///< axle [m], which a roll does not change
   double normal_force = 0.0;    ///< [N]
