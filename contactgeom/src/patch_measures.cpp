@@ -81,10 +81,10 @@ namespace {
 // into contact or leaves it (the reach falls to 0 as the strip leaves, and the next strip's
 // reaches a whole strip as the one beyond it is just out), so the patch's width and its SDEC are
 // continuous in the wheelset's position (a quasi-static solver converges on them). Where the
-// strip beyond is not known (NaN: the gap ends; 0: strips built without their openings, or a
-// strip just touching), x_lead^2 extrapolated linearly from `inner`
-// (the strip next to it inside); half a strip, as a staircase outline gives, when there is no
-// inner strip in contact or x_lead^2 does not fall towards the edge.
+// strip beyond is not known (NaN, or 0: strips built without their openings), x_lead^2 is
+// extrapolated linearly from `inner` (the strip next to it inside); half a strip, as a
+// staircase outline gives, when there is no inner strip in contact or x_lead^2 does not fall
+// towards the edge.
 double edge_reach(const KpStrip& edge, const KpStrip* inner, double outside, double ds) {
   const double outer2 = edge.x_lead * edge.x_lead;
   if (outside > 0.0) return ds * outer2 / (outer2 + outside);
