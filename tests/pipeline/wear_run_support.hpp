@@ -112,6 +112,20 @@ inline void expect_same_arrays(const ResultsFile& ref, const ResultsFile& res, i
   }
 }
 
+// Two runs' results are the same: as many steps, the same scene, and every array of every step
+// bit for bit (expect_same_arrays).
+inline void expect_identical_runs(const fs::path& a, const fs::path& b) {
+  const ResultsFile fa = ResultsFile::read(a), fb = ResultsFile::read(b);
+  ASSERT_EQ(fa.completed_steps(), fb.completed_steps());
+  EXPECT_EQ(fa.scene_text(), fb.scene_text());
+  int compared = 0;
+  for (int step = 0; step < fa.completed_steps(); ++step) {
+    expect_same_arrays(fa, fb, step, "", compared);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  EXPECT_GT(compared, 0);
+}
+
 inline profiles::PointList points(const std::vector<double>& y, const std::vector<double>& z) {
   profiles::PointList p;
   for (std::size_t i = 0; i < y.size(); ++i) p.emplace_back(y[i], z[i]);

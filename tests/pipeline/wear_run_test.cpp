@@ -1,25 +1,16 @@
-// The wear-evolution run end to end: determinism across threads, kill and resume, the worn
-// area against the accumulated wear, monotone growth, stability under large steps (golden
-// results and the default scene: wear_run_golden_test.cpp; the file's layout:
-// results_layout_test.cpp).
+// The wear-evolution run end to end: determinism across threads, the worn area against the
+// accumulated wear, monotone growth, the tangential methods, stability under large steps (kill
+// and resume: wear_run_resume_test.cpp; golden results and the default scene:
+// wear_run_golden_test.cpp; the file's layout: results_layout_test.cpp).
 
 #include "wheelwear/pipeline/wear_run.hpp"
 
-#include <H5Cpp.h>
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <thread>
 
 #include "support/csv_table.hpp"
 #include "support/run_command.hpp"
@@ -36,186 +27,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Every array of every step that a run records, for exact comparisons.
-std::vector<std::string> step_arrays(const ResultsFile& file) {
-  std::vector<std::string> names = {"distance",
-                                    "step_distance",
-                                    "equivalent_conicity",
-                                    "delta_r/value",
-                                    "wheel/y",
-                                    "wheel/z",
-                                    "wheel/Sh",
-                                    "wheel/Sd",
-                                    "wheel/qR",
-                                    "wheel/wear_rate/depth",
-                                    "wheel/wear_step/y",
-                                    "wheel/wear_step/depth"};
-  for (const char* s : {"status", "dy", "normal_force", "a", "b", "psi", "y_wheel", "vx", "vy",
-                        "phi", "Fx", "Fy", "frictional_work", "worn_area"})
-    names.push_back(std::string("states/") + s);
-  (void)file;
-  return names;
-}
-
-void expect_identical(const fs::path& a, const fs::path& b) {
-  const ResultsFile fa = ResultsFile::read(a), fb = ResultsFile::read(b);
-  ASSERT_EQ(fa.completed_steps(), fb.completed_steps());
-  EXPECT_EQ(fa.scene_text(), fb.scene_text());
-  for (int step = 0; step < fa.completed_steps(); ++step) {
-    for (const std::string& name : step_arrays(fa)) {
-      const auto va = fa.read_step_array(step, name), vb = fb.read_step_array(step, name);
-      ASSERT_EQ(va.size(), vb.size()) << name;
-      for (std::size_t i = 0; i < va.size(); ++i) {
-        // Bit-identical, NaN included (slots without a patch).
-        if (std::isnan(va[i]) && std::isnan(vb[i])) continue;
-        ASSERT_EQ(va[i], vb[i]) << "step " << step << ' ' << name << '[' << i << ']';
-      }
-    }
-  }
-}
-
 TEST_F(WearRunTest, OneAndTwoThreadsGiveIdenticalFiles) {
   const fs::path scene = write("s.toml", small_scene(20e3, 10e3, 1e-3));
   const std::string base = "run " + scene.string() + " -q -o ";
   ASSERT_EQ(testing::run_wheelwear(base + (dir_ / "t1.h5").string() + " --threads 1").exit_code, 0);
   ASSERT_EQ(testing::run_wheelwear(base + (dir_ / "t2.h5").string() + " --threads 2").exit_code, 0);
-  expect_identical(dir_ / "t1.h5", dir_ / "t2.h5");
+  expect_identical_runs(dir_ / "t1.h5", dir_ / "t2.h5");
   // HDF5's own comparison finds no difference outside /run_info (timings, host) either.
   const std::string h5diff = "h5diff --exclude-path /run_info " + (dir_ / "t1.h5").string() + " " +
                              (dir_ / "t2.h5").string() + " > /dev/null";
   EXPECT_EQ(std::system(h5diff.c_str()), 0);
-}
-
-// Killed at twenty moments spread over a run — starting, computing, writing a step's file,
-// linking it, consolidating — and resumed (or run anew where no file was published yet), the
-// run ends with the uninterrupted run's results, bit for bit, and as one file.
-TEST_F(WearRunTest, KilledAtAnyMomentResumesToIdenticalResults) {
-  // Thirteen steps, so that most kill moments fall after the file was created.
-  const fs::path scene = write("s.toml", small_scene(60e3, 5e3, 1e-3));
-  const fs::path reference = dir_ / "reference.h5", killed = dir_ / "killed.h5";
-  const auto t0 = std::chrono::steady_clock::now();
-  ASSERT_EQ(
-      testing::run_wheelwear("run " + scene.string() + " -q --threads 1 -o " + reference.string())
-          .exit_code,
-      0);
-  const double whole = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  int resumed = 0, completed = 0;
-  for (int i = 0; i < 20; ++i) {
-    const pid_t pid = ::fork();
-    ASSERT_GE(pid, 0);
-    if (pid == 0) {
-      ::execl(WHEELWEAR_EXE, WHEELWEAR_EXE, "run", scene.c_str(), "-q", "--threads", "1", "-o",
-              killed.c_str(), static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
-    ::usleep(static_cast<useconds_t>(1e6 * whole * (i + 0.5) / 20.0));
-    ::kill(pid, SIGKILL);
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    const bool finished = WIFEXITED(status) && WEXITSTATUS(status) == 0;
-    if (finished) {
-      ++completed;
-    } else if (fs::exists(killed)) {
-      // Exit 0, or 2 where the kill came after the last step (the run is complete).
-      const int code = testing::run_wheelwear("run --resume " + killed.string() + " -q").exit_code;
-      EXPECT_TRUE(code == 0 || code == 2) << "kill " << i << ": exit " << code;
-      ++resumed;
-    } else {
-      ASSERT_EQ(
-          testing::run_wheelwear("run " + scene.string() + " -q -o " + killed.string()).exit_code,
-          0);
-    }
-    expect_identical(reference, killed);
-    EXPECT_FALSE(fs::exists(ResultsFile::steps_directory(killed))) << "kill " << i;
-    for (const char* suffix : {"", ".partial", ".lock"}) fs::remove(killed.string() + suffix);
-    fs::remove_all(ResultsFile::steps_directory(killed));
-    if (HasFatalFailure()) return;
-  }
-  std::printf("run %.2f s; 20 kills: %d resumed, %d after the run had finished\n", whole, resumed,
-              completed);
-  EXPECT_GE(resumed, 5);  // most kills fall after the file exists (11 of 20 measured)
-}
-
-// SIGTERM (as a batch scheduler sends it) ends a run with a line saying where its results are
-// and how to continue, and with the signal's own exit status; the resumed run then ends as an
-// uninterrupted one.
-TEST_F(WearRunTest, ASignalEndsARunSayingHowToResume) {
-  const fs::path scene = write("s.toml", small_scene(60e3, 5e3, 1e-3));
-  const fs::path reference = dir_ / "reference.h5", stopped = dir_ / "stopped.h5";
-  const fs::path err = dir_ / "stderr.txt";
-  ASSERT_EQ(
-      testing::run_wheelwear("run " + scene.string() + " -q -o " + reference.string()).exit_code,
-      0);
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    const int fd = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(fd, STDERR_FILENO);
-    ::execl(WHEELWEAR_EXE, WHEELWEAR_EXE, "run", scene.c_str(), "--threads", "1", "-o",
-            stopped.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  // Once its second step is on disk.
-  const fs::path second = ResultsFile::steps_directory(stopped) / "000001.h5";
-  for (int i = 0; i < 2000 && !fs::exists(second); ++i) ::usleep(5000);
-  ::kill(pid, SIGTERM);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
-  std::ifstream in(err);
-  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  EXPECT_NE(text.find("wheelwear: stopped by SIGTERM; the steps finished so far are in " +
-                      stopped.string() + "; continue with: wheelwear run --resume " +
-                      stopped.string() + "\n"),
-            std::string::npos)
-      << text;
-  ASSERT_EQ(testing::run_wheelwear("run --resume " + stopped.string() + " -q").exit_code, 0);
-  expect_identical(reference, stopped);
-}
-
-// A results file of another layout version is not continued: its steps would not match the
-// ones this program appends.
-TEST_F(WearRunTest, ResumeRefusesAnotherLayoutVersion) {
-  const fs::path out = dir_ / "old.h5";
-  run(small_scene(30e3, 10e3, 1e-3), out);
-  {
-    H5::H5File file(out.string(), H5F_ACC_RDWR);
-    H5::Attribute version = file.openGroup("/").openAttribute("format_version");
-    const int one = 1;
-    version.write(H5::PredType::NATIVE_INT, &one);
-  }
-  try {
-    resume_run(out, {});
-    FAIL() << "a version-1 file was resumed";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("layout version 1"), std::string::npos)
-        << error.what();
-  }
-}
-
-TEST_F(WearRunTest, KilledRunResumesToIdenticalResults) {
-  // Enough steps that the run is still going when it is killed after its second step.
-  const fs::path scene = write("s.toml", small_scene(400e3, 10e3, 1e-3));
-  const fs::path reference = dir_ / "reference.h5", killed = dir_ / "killed.h5";
-  ASSERT_EQ(
-      testing::run_wheelwear("run " + scene.string() + " -q -o " + reference.string()).exit_code,
-      0);
-  const int total = ResultsFile::read(reference).completed_steps();
-  ASSERT_EQ(total, 41);
-
-  // Killed without warning once two steps are published.
-  const int status =
-      kill_run_after_steps({"run", scene.string(), "-q", "-o", killed.string()}, killed, 2);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
-  const int kept = ResultsFile::read(killed).completed_steps();
-  ASSERT_GE(kept, 2);
-  ASSERT_LT(kept, total);
-
-  const auto resumed = testing::run_wheelwear("run -q --resume " + killed.string());
-  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
-  expect_identical(reference, killed);
-  // A complete run is not resumed again.
-  EXPECT_EQ(testing::run_wheelwear("run -q --resume " + killed.string()).exit_code, 2);
 }
 
 TEST_F(WearRunTest, WornAreaEqualsAccumulatedWearAndGrowsMonotonically) {
@@ -282,7 +103,8 @@ TEST_F(WearRunTest, WornAreaEqualsAccumulatedWearAndGrowsMonotonically) {
       const double u = (y_O - ry[k]) / (ry[k + 1] - ry[k]);
       const double at_y = (1.0 - u) * dr[k] + u * dr[k + 1];
       const double cos_slope = std::abs(original.normal(s[i]).y());
-      EXPECT_NEAR(-at_y * cos_slope, normal[i], 0.01 * normal[i]) << "y " << y_O << " step " << next;
+      EXPECT_NEAR(-at_y * cos_slope, normal[i], 0.01 * normal[i])
+          << "y " << y_O << " step " << next;
       ++compared;
     }
     if (next == last) {
