@@ -7,11 +7,6 @@ class App;
 
 namespace wheelwear::cli {
 
-/// Elements per side of --exact-grid (creep, contact): below 8 a patch's edge is a quarter of
-/// its width; 400 x 400 takes tens of seconds.
-inline constexpr int kMinExactGrid = 8;
-inline constexpr int kMaxExactGrid = 400;
-
 /// `wheelwear creep`: creep forces of one SDEC patch with any tangential method.
 void add_creep_command(CLI::App& app);
 

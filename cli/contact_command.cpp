@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "contact_inputs.hpp"
+#include "creep_request.hpp"
 #include "json_writer.hpp"
 #include "wheelwear/contactgeom/nadal.hpp"
 #include "wheelwear/contactgeom/wheel_rail.hpp"

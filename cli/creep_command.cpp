@@ -3,18 +3,15 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <iostream>
-#include <map>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "commands.hpp"
+#include "creep_request.hpp"
 #include "json_writer.hpp"
 #include "wheelwear/core/input_error.hpp"
-#include "wheelwear/core/plausibility.hpp"
-#include "wheelwear/tangential/creep_table.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
 #include "wheelwear/tangential/grid_choice.hpp"
@@ -46,86 +43,24 @@ struct CreepArgs {
   const CLI::Option* exact_grid_option = nullptr;
 };
 
-// Refuses the options that do not apply to the method (they would be silently ignored) and
-// the grid limits of --method exact.
-void check_options(const CreepArgs& args, tangential::Method method) {
-  const bool exact = method == tangential::Method::exact;
-  auto refuse = [](const CLI::Option* option, const char* why) {
-    if (option && option->count() > 0)
-      throw InputError(option->get_name() + " does not apply to --method exact: " + why);
-  };
-  if (!exact && args.exact_grid_option && args.exact_grid_option->count() > 0)
-    throw InputError("--exact-grid applies to --method exact only; FASTSIM's grid is --nx --ny");
-  if (!args.target_error) {
-  } else if (exact) {
-    std::ostringstream message;
-    message << "--target-error " << *args.target_error
-            << ": --method exact has no fitted error model; choose its grid with --exact-grid N "
-               "(40: within 0.53 % of muN of CONTACT's 80 x 80 answer on its pure-spin "
-               "cases; 80, CONTACT's own grid: within 2e-7)";
-    throw InputError(message.str());
-  } else if (!tangential::fastsim_variant(method)) {
-    std::ostringstream message;
-    message << "--target-error " << *args.target_error << ": " << args.method
-            << " has no grid; use --target-error with a FASTSIM method";
-    throw InputError(message.str());
-  }
-  if (!exact) return;
-  refuse(args.nx, "its grid is --exact-grid");
-  refuse(args.ny, "its grid is --exact-grid");
-  refuse(args.bound_option, "the exact theory bounds the traction by mu p_n");
-  refuse(args.scheme_option, "it is a FASTSIM marching scheme");
-  if (args.exact_grid < kMinExactGrid || args.exact_grid > kMaxExactGrid) {
-    std::ostringstream message;
-    message << "--exact-grid " << args.exact_grid << ": needs " << kMinExactGrid << " ... "
-            << kMaxExactGrid << " elements per side (40: about 16 ms, 80: about 0.13 s)";
-    throw InputError(message.str());
-  }
+// The options as given on the command line (a default is "not given": an option that does not
+// apply to the method is refused only when the user typed it).
+CreepOptions creep_options(const CreepArgs& args) {
+  const auto given = [](const CLI::Option* option) { return option && option->count() > 0; };
+  CreepOptions o;
+  o.method = args.method;
+  if (given(args.nx)) o.nx = args.options.nx;
+  if (given(args.ny)) o.ny = args.options.ny;
+  if (given(args.bound_option)) o.bound = args.bound;
+  if (given(args.scheme_option)) o.scheme = args.scheme;
+  o.target_error = args.target_error;
+  if (given(args.exact_grid_option)) o.exact_grid = args.exact_grid;
+  return o;
 }
 
-// Refuses the impossible patch, load, friction and creepages (unit mistakes, mostly) and returns
-// the warnings for the implausible ones (core/plausibility.hpp).
-std::vector<std::string> check_plausibility(const CreepArgs& args) {
-  std::vector<std::string> warnings;
-  core::check_plausible(core::kSemiAxisLimit, "--a", args.sdec.a, warnings);
-  core::check_plausible(core::kSemiAxisLimit, "--b", args.sdec.b, warnings);
-  core::check_plausible(core::kWheelLoadLimit, "--N", args.load.N, warnings);
-  core::check_plausible(core::kFrictionLimit, "--mu", args.load.mu, warnings);
-  core::check_plausible(core::kCreepageLimit, "--vx", args.creepages.vx, warnings);
-  core::check_plausible(core::kCreepageLimit, "--vy", args.creepages.vy, warnings);
-  return warnings;
-}
-
-// The options of solve_patch from the command line; chooses the FASTSIM grid for
-// --target-error.
-tangential::SolveOptions solve_options(const CreepArgs& args, tangential::Method method,
-                                       std::optional<tangential::GridChoice>& chosen) {
-  tangential::SolveOptions options;
-  options.fastsim = args.options;
-  // The option's check admits only the tables' names.
-  options.fastsim.bound = *core::value_named(tangential::kBoundNames, args.bound);
-  options.fastsim.scheme = *core::value_named(tangential::kSchemeNames, args.scheme);
-  // The exact theory on 1.02 times the patch (CONTACT's SDEC option).
-  options.exact_grid.nx = options.exact_grid.ny = args.exact_grid;
-  // best answers from the table where it covers the patch: no FASTSIM grid to choose then.
-  const bool table_answers =
-      method == tangential::Method::best &&
-      tangential::creep_table_covers(args.sdec, args.creepages, args.load, args.material);
-  if (args.target_error && !table_answers) {
-    try {
-      chosen = tangential::choose_grid(*tangential::fastsim_variant(method), options.fastsim.scheme,
-                                       options.fastsim.bound, *args.target_error);
-    } catch (const InputError& e) {
-      throw InputError(std::string("--target-error: ") + e.what());
-    }
-    options.fastsim.nx = chosen->nx;
-    options.fastsim.ny = chosen->ny;
-  }
-  return options;
-}
-
-void add_exact_json(JsonObject& out, const tangential::ExactSolution& s, const CreepArgs& args) {
-  out.add("exact_grid", args.exact_grid)
+void add_exact_json(JsonObject& out, const tangential::ExactSolution& s, int exact_grid,
+                    const tangential::Creepages& creepages) {
+  out.add("exact_grid", exact_grid)
       .add("status", tangential::status_name(s.status))
       .add("iterations", s.iterations)
       .add("adhesion_elements", s.adhesion_elements)
@@ -136,13 +71,12 @@ void add_exact_json(JsonObject& out, const tangential::ExactSolution& s, const C
       .add("frictional_work", s.frictional_work)
       // The work of the rigid slip: what sum |p| |s| dA tends to as the grid is refined (the
       // sum converges to first order only; wear runs use this one).
-      .add("rigid_slip_work", tangential::rigid_slip_work(s.forces, args.creepages));
+      .add("rigid_slip_work", tangential::rigid_slip_work(s.forces, creepages));
   if (!s.message.empty()) out.add("message", s.message);
 }
 
-void print_exact(const tangential::ExactSolution& s, const CreepArgs& args) {
-  std::printf("grid     %d x %d elements over 1.02 times the patch\n", args.exact_grid,
-              args.exact_grid);
+void print_exact(const tangential::ExactSolution& s, int exact_grid) {
+  std::printf("grid     %d x %d elements over 1.02 times the patch\n", exact_grid, exact_grid);
   std::printf("status   %s after %d iterations%s%s\n", tangential::status_name(s.status),
               s.iterations, s.message.empty() ? "" : ": ", s.message.c_str());
   std::printf("contact  %d elements: %d adhere (%.1f %%), %d slip\n", s.contact_elements,
@@ -153,21 +87,19 @@ void print_exact(const tangential::ExactSolution& s, const CreepArgs& args) {
 }
 
 void run_creep(const CreepArgs& args) {
-  const auto method = tangential::parse_method(args.method);
-  if (!method) throw InputError("--method " + args.method + ": unknown method");
-  check_options(args, *method);
-  const std::vector<std::string> implausible = check_plausibility(args);
-  for (const std::string& w : implausible) std::cerr << "wheelwear: warning: " << w << '\n';
+  const CreepSolver solver(creep_options(args));
+  const tangential::Method method = solver.method();
+  std::vector<std::string> implausible;
   std::optional<tangential::GridChoice> chosen;
-  const tangential::SolveOptions options = solve_options(args, *method, chosen);
-  const tangential::TangentialSolution s = tangential::solve_patch(
-      *method, args.sdec, args.creepages, args.load, args.material, options);
+  const tangential::TangentialSolution s =
+      solver.solve(args.sdec, args.creepages, args.load, args.material, implausible, &chosen);
+  for (const std::string& w : implausible) std::cerr << "wheelwear: warning: " << w << '\n';
   const tangential::CreepForces& forces = s.forces;
-  const bool tabled = *method == tangential::Method::table || *method == tangential::Method::best;
+  const bool tabled = method == tangential::Method::table || method == tangential::Method::best;
   // For table and best: which method gave the forces.
   const std::string source = s.from_table ? "table" : "fastsim-sdec";
   const std::string table_outside = s.table_outside.value_or("");
-  const bool has_cells = s.cells > 0 || (tangential::has_cell_fields(*method) && !s.from_table);
+  const bool has_cells = s.cells > 0 || (tangential::has_cell_fields(method) && !s.from_table);
   const double mu_n = args.load.mu * args.load.N;
   const std::string flags = forces.flags.describe();
   if (args.json) {
@@ -189,7 +121,8 @@ void run_creep(const CreepArgs& args) {
           .add("ny", chosen->ny)
           .add("predicted_error", chosen->predicted_error);
     }
-    if (s.exact) add_exact_json(out, *s.exact, args);
+    if (s.exact)
+      add_exact_json(out, *s.exact, solver.options().exact_grid_or_default(), args.creepages);
     out.add("extrapolated", forces.flags.any()).add_raw("warnings", json_strings(warnings));
     std::cout << out.str() << '\n';
     return;
@@ -199,7 +132,7 @@ void run_creep(const CreepArgs& args) {
   std::printf("Fy       %14.6g N   (Fy/muN = %+.6f)\n", forces.Fy, forces.Fy / mu_n);
   if (forces.Mz) std::printf("Mz       %14.6g N m (about O)\n", *forces.Mz);
   if (s.exact) {
-    print_exact(*s.exact, args);
+    print_exact(*s.exact, solver.options().exact_grid_or_default());
   } else if (has_cells) {
     std::printf("slip     %d of %d cells\n", s.slip_cells, s.cells);
   }

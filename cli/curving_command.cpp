@@ -1,7 +1,6 @@
 // `wheelwear curving`: the quasi-static curving of the scene's vehicle in a constant curve.
 
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -10,14 +9,12 @@
 #include <stdexcept>
 
 #include "commands.hpp"
+#include "curving_request.hpp"
 #include "json_writer.hpp"
 #include "output_path.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/scene.hpp"
-#include "wheelwear/pipeline/state_kernel.hpp"
-#include "wheelwear/pipeline/vehicle_run.hpp"
-#include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/vehicle/quasi_static_curving.hpp"
 #include "wheelwear/vehicle/vehicle_file.hpp"
 
@@ -59,13 +56,6 @@ const char* wheelset_status(const vehicle::WheelsetForces& f) {
     if (w.status != contactgeom::WheelRailStatus::ok) return contactgeom::status_name(w.status);
   return "ok";
 }
-
-// What the contact table cost, when one was built.
-struct TableReport {
-  std::size_t shifts = 0, load_levels = 0;
-  int contact_solves = 0;
-  double seconds = 0.0;
-};
 
 void print_json(const vehicle::VehicleCurving& c, const std::optional<TableReport>& table) {
   std::vector<std::string> wheelsets;
@@ -146,36 +136,19 @@ void curving(const CurvingArgs& args) {
     export_vehicle(args);
     return;
   }
-  const pipeline::Scene scene =
-      args.scene.empty() ? pipeline::default_scene() : pipeline::load_scene(args.scene);
-  const vehicle::Vehicle v =
-      args.vehicle.empty() ? vehicle::default_vehicle() : vehicle::read_vehicle(args.vehicle);
-  vehicle::SteadyCurve curve;
-  curve.running = {args.speed, args.radius, args.friction.value_or(scene.friction)};
-  if (!args.friction) curve.running.friction_flange = scene.friction_flange;
-  curve.cant = args.cant;
-  curve.traction = args.traction;
-  require(std::isfinite(args.speed) && args.speed > 0.0, "--speed", args.speed,
-          "the speed must be positive (m/s)");
-  require(std::isfinite(args.radius) && (args.radius == 0.0 || std::abs(args.radius) >= 50.0),
-          "--radius", args.radius, "give 0 for tangent track or |R| >= 50 m (+ right-hand)");
-  require(args.radius != 0.0 || args.cant == 0.0, "--cant", args.cant,
-          "tangent track (--radius 0) has no cant");
-  curve.validate();
-  const pipeline::StateKernel kernel(scene);
-  const profiles::Profile wheel =
-      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
-  vehicle::WheelsetModel model = pipeline::wheelset_model(kernel, wheel, wheel);
-  std::optional<TableReport> table;
-  if (args.contact_table) {
-    const auto start = std::chrono::steady_clock::now();
-    model.table = pipeline::contact_table(model, v);
-    table = TableReport{
-        model.table->shifts().size(), model.table->loads().size(), model.table->contact_solves(),
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
-  }
-  const vehicle::VehicleCurving c =
-      vehicle::solve_vehicle_curving(v, {model, model, model, model}, curve);
+  CurvingRequest request;
+  request.scene = args.scene;
+  request.vehicle = args.vehicle;
+  request.radius = args.radius;
+  request.cant = args.cant;
+  request.speed = args.speed;
+  request.friction = args.friction;
+  request.traction = args.traction;
+  request.contact_table = args.contact_table;
+  const CurvingAnswer answer = solve_curving(request);
+  const vehicle::VehicleCurving& c = answer.curving;
+  const vehicle::SteadyCurve& curve = answer.curve;
+  const std::optional<TableReport>& table = answer.table;
   if (args.json) {
     print_json(c, table);
   } else {

@@ -13,6 +13,7 @@
 
 #include "commands.hpp"
 #include "contact_inputs.hpp"
+#include "contact_wear.hpp"
 #include "json_writer.hpp"
 #include "output_path.hpp"
 #include "wheelwear/core/input_error.hpp"
@@ -35,14 +36,6 @@ struct WearArgs {
   bool overwrite = false;
 };
 
-// One model's wear of one patch.
-struct ModelWear {
-  tangential::ContactModel model;
-  tangential::TangentialSolution solution;
-  wear::WearDistribution distribution;
-  wear::WearSummary summary;
-};
-
 // Lateral position on the wheel in its profile frame (+ towards the field side, 0 at the taping
 // line), as every output gives it.
 double wheel_y(const profiles::Profile& wheel, double s) {
@@ -52,29 +45,7 @@ double wheel_y(const profiles::Profile& wheel, double s) {
 ModelWear wear_of(const WearArgs& args, const contactgeom::WheelRailPair& pair,
                   const contactgeom::WheelRailPatch& p, tangential::ContactModel model,
                   const wear::WearLaw& law) {
-  std::optional<contactgeom::Sdec> hertz;
-  if (p.hertz) hertz = contactgeom::Sdec{p.hertz->a, p.hertz->b, 0.0};
-  const tangential::ModelPatch mp = tangential::model_patch(model, p.sdec, hertz);
-  tangential::SolveOptions options;
-  options.fastsim.nx = options.fastsim.ny = args.cells;
-  options.fastsim.cell_fields = true;
-  // The Tgamma map needs the cells' positions; the wear alone needs work, slip and pressure.
-  options.fastsim.field_set =
-      args.map.empty() ? tangential::CellFieldSet::wear : tangential::CellFieldSet::all;
-  ModelWear out{model,
-                tangential::solve_patch(mp.method, mp.region, args.in.creepages_at(pair, p),
-                                        {p.normal_force, args.in.mu}, args.in.material(), options),
-                {},
-                {}};
-  // A grid on the wheel wide enough for every model's region around O, 0.1 mm bins.
-  const double reach = 2.0 * std::max(p.sdec.b, hertz ? hertz->b : 0.0) + 2e-3;
-  const double ds = 0.1e-3;
-  const auto bins = static_cast<std::size_t>(2.0 * reach / ds) + 1;
-  out.distribution = wear::WearDistribution::zeros(p.s_wheel - reach, ds, bins);
-  wear::accumulate_wear(*out.solution.fields, args.in.motion.speed, law,
-                        {p.s_wheel, p.rolling_radius}, 1.0, out.distribution);
-  out.summary = wear::summarise(out.distribution);
-  return out;
+  return model_wear(args.in, pair, p, model, law, args.cells, !args.map.empty());
 }
 
 std::string model_json(const ModelWear& w, const profiles::Profile& wheel) {

@@ -337,7 +337,21 @@ def vehicle_time_domain_study():
 
 # ---------------------------------------------------------------------------------------------
 
+# ---------------------------------------------------------------------------------------------
+# bench/results/python_overhead.csv (bench/python_overhead.py)
+
+
+def python_overhead():
+    rows = [[r["call"], duration(r["median_seconds"]), sig(r["ratio_to_cpp_loop"], 3)]
+            for r in read_csv("python_overhead.csv")]
+    # The scalar call's ratio is against one solve of the loop, not the whole loop.
+    rows[-1][2] += " × one solve"
+    return table(["call (FASTSIM-SDEC 50 × 50, one thread)", "median of 20",
+                  "against the C++ loop"], rows)
+
+
 GENERATORS = {
+    "python-overhead": ("docs/python.md", python_overhead),
     "vehicle-time-domain-study": ("docs/vehicle.md", vehicle_time_domain_study),
     "readme-accuracy": ("README.md", readme_accuracy),
     "validation-pure-spin": ("docs/validation.md", validation_pure_spin),

@@ -7,7 +7,8 @@ packages=(
   cmake g++ make pkg-config clang libclang-rt-14-dev
   libeigen3-dev libcgal-dev libboost-dev libhdf5-dev hdf5-tools libssl-dev libtbb-dev
   libcli11-dev libtomlplusplus-dev libgtest-dev libgmock-dev libbenchmark-dev
-  python3 python3-numpy python3-h5py python3-matplotlib
+  python3 python3-dev python3-numpy python3-h5py python3-matplotlib
+  pybind11-dev python3-pytest python3-mypy
 )
 
 missing=()

@@ -1,0 +1,36 @@
+#include "contact_wear.hpp"
+
+#include <algorithm>
+#include <optional>
+
+namespace wheelwear::cli {
+
+ModelWear model_wear(const ContactInputs& in, const contactgeom::WheelRailPair& pair,
+                     const contactgeom::WheelRailPatch& p, tangential::ContactModel model,
+                     const wear::WearLaw& law, int cells, bool positions) {
+  std::optional<contactgeom::Sdec> hertz;
+  if (p.hertz) hertz = contactgeom::Sdec{p.hertz->a, p.hertz->b, 0.0};
+  const tangential::ModelPatch mp = tangential::model_patch(model, p.sdec, hertz);
+  tangential::SolveOptions options;
+  options.fastsim.nx = options.fastsim.ny = cells;
+  options.fastsim.cell_fields = true;
+  // The T gamma map needs the cells' positions; the wear alone needs work, slip and pressure.
+  options.fastsim.field_set =
+      positions ? tangential::CellFieldSet::all : tangential::CellFieldSet::wear;
+  ModelWear out{model,
+                tangential::solve_patch(mp.method, mp.region, in.creepages_at(pair, p),
+                                        {p.normal_force, in.mu}, in.material(), options),
+                {},
+                {}};
+  // A grid on the wheel wide enough for every model's region around O, 0.1 mm bins.
+  const double reach = 2.0 * std::max(p.sdec.b, hertz ? hertz->b : 0.0) + 2e-3;
+  const double ds = 0.1e-3;
+  const auto bins = static_cast<std::size_t>(2.0 * reach / ds) + 1;
+  out.distribution = wear::WearDistribution::zeros(p.s_wheel - reach, ds, bins);
+  wear::accumulate_wear(*out.solution.fields, in.motion.speed, law, {p.s_wheel, p.rolling_radius},
+                        1.0, out.distribution);
+  out.summary = wear::summarise(out.distribution);
+  return out;
+}
+
+}  // namespace wheelwear::cli
