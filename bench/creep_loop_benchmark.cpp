@@ -43,8 +43,11 @@ void BM_CreepCurveFrontEnd(benchmark::State& state) {
   std::vector<std::string> warnings;
   for (auto _ : state) {
     double sum = 0.0;
-    for (int i = 0; i < kPoints; ++i)
-      sum += solver.solve(kPatch, {0.0, 0.0, spin(i)}, kLoad, kSteel, warnings).forces.Fy;
+    for (int i = 0; i < kPoints; ++i) {
+      const tangential::Creepages c{0.0, 0.0, spin(i)};
+      cli::check_creep_inputs(kPatch, c, kLoad, warnings);
+      sum += solver.solve(kPatch, c, kLoad, kSteel).forces.Fy;
+    }
     benchmark::DoNotOptimize(sum);
   }
   state.SetItemsProcessed(state.iterations() * kPoints);

@@ -90,10 +90,11 @@ void run_creep(const CreepArgs& args) {
   const CreepSolver solver(creep_options(args));
   const tangential::Method method = solver.method();
   std::vector<std::string> implausible;
+  check_creep_inputs(args.sdec, args.creepages, args.load, implausible);
+  for (const std::string& w : implausible) std::cerr << "wheelwear: warning: " << w << '\n';
   std::optional<tangential::GridChoice> chosen;
   const tangential::TangentialSolution s =
-      solver.solve(args.sdec, args.creepages, args.load, args.material, implausible, &chosen);
-  for (const std::string& w : implausible) std::cerr << "wheelwear: warning: " << w << '\n';
+      solver.solve(args.sdec, args.creepages, args.load, args.material, &chosen);
   const tangential::CreepForces& forces = s.forces;
   const bool tabled = method == tangential::Method::table || method == tangential::Method::best;
   // For table and best: which method gave the forces.

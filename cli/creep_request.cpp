@@ -3,6 +3,7 @@
 #include <sstream>
 #include <utility>
 
+#include "choices.hpp"
 #include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/plausibility.hpp"
@@ -23,7 +24,7 @@ void check_options(const CreepOptions& o, tangential::Method method) {
   if (!exact && o.exact_grid)
     throw InputError("--exact-grid applies to --method exact only; FASTSIM's grid is --nx --ny");
   if (o.target_error && (o.nx || o.ny))
-    throw InputError("--target-error chooses the grid: give it or --nx/--ny, not both");
+    throw InputError(std::string(o.nx ? "--nx" : "--ny") + " excludes --target-error");
   if (!o.target_error) {
   } else if (exact) {
     std::ostringstream message;
@@ -56,20 +57,15 @@ template <typename Enum, std::size_t N>
 Enum named(const core::NameTable<Enum, N>& table, const std::optional<std::string>& given,
            Enum fallback, const char* option) {
   if (!given) return fallback;
-  if (const auto value = core::value_named(table, *given)) return *value;
-  throw InputError(std::string(option) + " " + *given + ": unknown; use " +
-                   core::list_names(table));
+  require_choice(option, *given, core::all_names(table));
+  return *core::value_named(table, *given);
 }
 
 }  // namespace
 
 CreepSolver::CreepSolver(CreepOptions options) : options_(std::move(options)) {
-  const auto method = tangential::parse_method(options_.method);
-  if (!method) {
-    throw InputError("--method " + options_.method + ": unknown method; use " +
-                     core::list_names(tangential::kMethodNames));
-  }
-  method_ = *method;
+  require_choice("--method", options_.method, core::all_names(tangential::kMethodNames));
+  method_ = *tangential::parse_method(options_.method);
   check_options(options_, method_);
   tangential::FastsimOptions& fastsim = base_.fastsim;
   if (options_.nx) fastsim.nx = *options_.nx;
@@ -80,16 +76,20 @@ CreepSolver::CreepSolver(CreepOptions options) : options_(std::move(options)) {
   base_.exact_grid.nx = base_.exact_grid.ny = options_.exact_grid_or_default();
 }
 
-tangential::TangentialSolution CreepSolver::solve(
-    const contactgeom::Sdec& sdec, const tangential::Creepages& creepages,
-    const tangential::ContactLoad& load, const tangential::Material& material,
-    std::vector<std::string>& warnings, std::optional<tangential::GridChoice>* chosen) const {
+void check_creep_inputs(const contactgeom::Sdec& sdec, const tangential::Creepages& creepages,
+                        const tangential::ContactLoad& load, std::vector<std::string>& warnings) {
   core::check_plausible(core::kSemiAxisLimit, "--a", sdec.a, warnings);
   core::check_plausible(core::kSemiAxisLimit, "--b", sdec.b, warnings);
   core::check_plausible(core::kWheelLoadLimit, "--N", load.N, warnings);
   core::check_plausible(core::kFrictionLimit, "--mu", load.mu, warnings);
   core::check_plausible(core::kCreepageLimit, "--vx", creepages.vx, warnings);
   core::check_plausible(core::kCreepageLimit, "--vy", creepages.vy, warnings);
+}
+
+tangential::TangentialSolution CreepSolver::solve(
+    const contactgeom::Sdec& sdec, const tangential::Creepages& creepages,
+    const tangential::ContactLoad& load, const tangential::Material& material,
+    std::optional<tangential::GridChoice>* chosen) const {
   tangential::SolveOptions options = base_;
   // best answers from the table where it covers the patch: no FASTSIM grid to choose then.
   if (options_.target_error && !(method_ == tangential::Method::best &&

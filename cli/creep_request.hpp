@@ -33,6 +33,11 @@ struct CreepOptions {
   int exact_grid_or_default() const { return exact_grid.value_or(40); }
 };
 
+/// Throws InputError for an impossible patch, load or creepage (core/plausibility.hpp) and
+/// appends the warnings for implausible ones to `warnings`.
+void check_creep_inputs(const contactgeom::Sdec& sdec, const tangential::Creepages& creepages,
+                        const tangential::ContactLoad& load, std::vector<std::string>& warnings);
+
 /// The options checked once for many patches: the method, and the solve options for a patch.
 class CreepSolver {
  public:
@@ -42,13 +47,12 @@ class CreepSolver {
   tangential::Method method() const { return method_; }
   const CreepOptions& options() const { return options_; }
 
-  /// One patch: throws InputError for an impossible patch, load or creepage (core/
-  /// plausibility.hpp) and appends the warnings for implausible ones to `warnings`; `chosen` is
-  /// set where --target-error chose the grid.
+  /// One patch, its inputs checked by check_creep_inputs() first; `chosen` is set where
+  /// --target-error chose the grid. Throws InputError where the method cannot take the patch
+  /// (the table outside its range, say).
   tangential::TangentialSolution solve(
       const contactgeom::Sdec& sdec, const tangential::Creepages& creepages,
       const tangential::ContactLoad& load, const tangential::Material& material,
-      std::vector<std::string>& warnings,
       std::optional<tangential::GridChoice>* chosen = nullptr) const;
 
  private:

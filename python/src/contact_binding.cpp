@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "choices.hpp"
 #include "contact_inputs.hpp"
 #include "contact_wear.hpp"
 #include "wheelwear/core/enum_names.hpp"
@@ -53,9 +54,8 @@ cli::ContactInputs contact_inputs(const py::dict& kw) {
   get("phi", in.creepages.phi);
   get("mu", in.mu);
   get("V", in.motion.speed);
-  if (!core::value_named(contactgeom::kNormalMethodNames, in.normal_method))
-    throw InputError("--normal-method " + in.normal_method + ": unknown; use " +
-                     core::list_names(contactgeom::kNormalMethodNames));
+  cli::require_choice("--normal-method", in.normal_method,
+                      core::all_names(contactgeom::kNormalMethodNames));
   return in;
 }
 
@@ -176,17 +176,17 @@ void bind_contact(py::module_& m) {
         {
           py::gil_scoped_release release;
           solved = cli::solve_contact(in);
-          if (!contactgeom::carries_load(solved->contact.status))
-            throw std::runtime_error(std::string("contact ") +
-                                     contactgeom::status_name(solved->contact.status) + ": " +
-                                     solved->contact.message);
-          for (const auto& p : solved->contact.patches)
-            wear.push_back(cli::model_wear(in, solved->pair, p, *model, *law, cells, true));
+          // A contact that carries no load has no wear: its status says why (the command line
+          // fails with it).
+          if (contactgeom::carries_load(solved->contact.status))
+            for (const auto& p : solved->contact.patches)
+              wear.push_back(cli::model_wear(in, solved->pair, p, *model, *law, cells, true));
         }
         py::dict out = contact_dict(*solved);
         py::list patches = out["patches"];
-        for (std::size_t k = 0; k < wear.size(); ++k)
-          patches[k]["wear"] = wear_dict(wear[k], solved->pair.wheel);
+        for (std::size_t k = 0; k < patches.size(); ++k)
+          patches[k]["wear"] = k < wear.size() ? py::object(wear_dict(wear[k], solved->pair.wheel))
+                                               : py::object(py::none());
         return out;
       },
       py::arg("inputs"), py::arg("law"), py::arg("model"), py::arg("cells"));

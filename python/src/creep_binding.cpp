@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <set>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "bindings.hpp"
 #include "creep_request.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/tangential/table_correction.hpp"
 
 namespace wheelwear::python {
 
@@ -42,7 +44,9 @@ py::dict creep_arrays(const cli::CreepOptions& options, const std::vector<Array>
   const auto n = static_cast<std::size_t>(in.size);
   std::vector<double> Fx(n), Fy(n), Mz(n), work(n);
   std::vector<int> cells(n), slip(n);
-  std::vector<bool> from_table(n), extrapolated(n);
+  // Bytes, not std::vector<bool>: the threads write neighbouring elements.
+  std::vector<std::uint8_t> from_table(n), extrapolated(n);
+  std::vector<std::string> status(n);
   std::vector<std::vector<std::string>> warnings(n);
   run_on_threads(threads, [&] {
     const py::ssize_t chunk = chunk_of(solver.method());
@@ -55,11 +59,17 @@ py::dict creep_arrays(const cli::CreepOptions& options, const std::vector<Array>
         const tangential::ContactLoad load{in.at(6, i), in.at(9, i)};
         const tangential::Material material{in.at(7, i), in.at(8, i)};
         const auto k = static_cast<std::size_t>(i);
-        const tangential::TangentialSolution s = solver.solve(sdec, c, load, material, warnings[k]);
+        cli::check_creep_inputs(sdec, c, load, warnings[k]);
+        const tangential::TangentialSolution s = solver.solve(sdec, c, load, material);
         Fx[k] = s.forces.Fx;
         Fy[k] = s.forces.Fy;
         Mz[k] = s.forces.Mz.value_or(std::nan(""));
-        work[k] = s.frictional_work;
+        // The rigid slip's work, which every method with a spin moment defines (the exact
+        // theory's cells sum to it as the grid is refined; table_correction.hpp).
+        work[k] = s.forces.Mz ? tangential::rigid_slip_work(s.forces, c) : std::nan("");
+        // The exact theory's own status, as the command line's JSON gives it ("converged").
+        status[k] = std::string(s.exact ? tangential::status_name(s.exact->status)
+                                        : tangential::status_name(s.status));
         cells[k] = s.cells;
         slip[k] = s.slip_cells;
         from_table[k] = s.from_table;
@@ -77,7 +87,8 @@ py::dict creep_arrays(const cli::CreepOptions& options, const std::vector<Array>
   out["Fx"] = py::array_t<double>(in.size, Fx.data());
   out["Fy"] = py::array_t<double>(in.size, Fy.data());
   out["Mz"] = py::array_t<double>(in.size, Mz.data());
-  out["frictional_work"] = py::array_t<double>(in.size, work.data());
+  out["rigid_slip_work"] = py::array_t<double>(in.size, work.data());
+  out["status"] = status;
   out["cells"] = py::array_t<int>(in.size, cells.data());
   out["slip_cells"] = py::array_t<int>(in.size, slip.data());
   py::array_t<bool> table(in.size), flags(in.size);

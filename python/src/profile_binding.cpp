@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "choices.hpp"
 #include "profile_file_options.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
@@ -111,6 +112,8 @@ void bind_profiles(py::module_& m) {
         refuse_for_standard(standard, "--taping-line-distance", taping_line_distance.has_value(),
                             "wheel");
         refuse_for_standard(standard, "--max-drop", max_drop.has_value(), "profile");
+        if (origin)
+          cli::require_choice("--origin", *origin, {"auto", "taping-line", "internal-face"});
         cli::ProfileFileArgs files;
         files.origin = origin.value_or("auto");
         files.taping_line_distance = taping_line_distance;
@@ -128,6 +131,7 @@ void bind_profiles(py::module_& m) {
         const bool standard = spec == "60E1" || spec == "UIC60";
         refuse_for_standard(standard, "--gauge-side", gauge_side.has_value(), "rail");
         refuse_for_standard(standard, "--max-drop", max_drop.has_value(), "profile");
+        if (gauge_side) cli::require_choice("--gauge-side", *gauge_side, {"auto", "left", "right"});
         cli::ProfileFileArgs files;
         files.gauge_side = gauge_side.value_or("auto");
         if (max_drop) files.max_drop = *max_drop;

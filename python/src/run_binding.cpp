@@ -56,7 +56,9 @@ void bind_run(py::module_& m) {
         };
         options.warning = [](const std::string& text) {
           py::gil_scoped_acquire acquire;
-          PyErr_WarnEx(PyExc_RuntimeWarning, text.c_str(), 1);
+          // A warnings filter may turn it into an exception: raise that.
+          if (PyErr_WarnEx(PyExc_RuntimeWarning, text.c_str(), 1) < 0)
+            throw py::error_already_set();
         };
         if (resume) {
           if (scene || output)

@@ -24,9 +24,9 @@ def cli():
         done = subprocess.run([program, *map(str, args)], capture_output=True, text=True)
         assert done.returncode != 0
         prefix = "wheelwear: error: "
-        line = done.stderr.strip().splitlines()[-1]
-        assert line.startswith(prefix), line
-        return line[len(prefix):]
+        lines = [l for l in done.stderr.splitlines() if l.startswith(prefix)]
+        assert len(lines) == 1, done.stderr
+        return lines[0][len(prefix):]
 
     run.error = error
     return run

@@ -66,9 +66,23 @@ def test_contact_equals_the_command_line(cli, dy, method):
     assert compared >= 13
 
 
-def test_a_contact_status_is_an_attribute_not_an_exception():
+def test_a_contact_status_is_an_attribute_not_an_exception(cli):
     got = wheelwear.contact(dy=0.012, load=55000.0)
     assert got.status != "ok" and got.message
+    # The command line prints this contact's wear and exits with status 3; the module gives the
+    # same wear and the status beside it.
+    worn = wheelwear.wear(dy=0.012, load=55000.0)
+    expected = cli("wear", "--dy", 0.012, "--load", 55000)
+    assert worn.status == got.status == expected["status"]
+    assert [p.wear.worn_volume_per_metre for p in worn.patches] == [
+        p["worn_volume_per_metre"] for p in expected["patches"]]
+
+
+def test_an_unknown_normal_method_is_refused_as_the_command_line_does(cli):
+    with pytest.raises(ValueError) as error:
+        wheelwear.contact(dy=0.0, load=55000.0, normal_method="hertz")
+    assert str(error.value) == cli.error("contact", "--dy", "0", "--load", "55000",
+                                         "--normal-method", "hertz")
 
 
 def test_wear_equals_the_command_line_and_its_depth_is_its_volume(cli):

@@ -37,8 +37,18 @@ def test_exact_equals_the_command_line(cli):
     expected = cli(*cli_args("exact", **kw), "--exact-grid", "16")
     got = wheelwear.creep("exact", exact_grid=16, **kw)
     assert (got.Fx, got.Fy, got.Mz) == (expected["Fx"], expected["Fy"], expected["Mz"])
-    # The method's frictional work is the rigid slip's (solution.hpp), the JSON's rigid_slip_work.
-    assert got.frictional_work == expected["rigid_slip_work"]
+    assert got.rigid_slip_work == expected["rigid_slip_work"]
+    assert got.status == expected["status"] == "converged"
+
+
+def test_rigid_slip_work_is_minus_the_power_of_the_creep_forces():
+    # -(Fx vx + Fy vy + Mz phi) by definition, for every method with a spin moment.
+    vx, vy, phi = 1e-3, -4e-4, 0.6
+    for method in ("fastsim-sdec", "table", "fastsim-eqe"):
+        r = wheelwear.creep(method, a=5e-3, b=4e-3, vx=vx, vy=vy, phi=phi, N=4e4)
+        assert r.rigid_slip_work == pytest.approx(-(r.Fx * vx + r.Fy * vy + r.Mz * phi),
+                                                  rel=1e-12)
+        assert r.rigid_slip_work > 0  # friction dissipates
 
 
 def test_an_array_gives_the_broadcast_shape_and_each_element_its_scalar_answer():
@@ -101,9 +111,21 @@ def test_input_errors_raise_value_error_with_the_command_lines_message(cli, flag
     assert str(error.value) == expected
 
 
-def test_an_unknown_method_is_a_value_error_naming_the_choices():
-    with pytest.raises(ValueError, match="--method fastsim-x: unknown method; use fastsim-sdec"):
-        wheelwear.creep("fastsim-x", a=4e-3, b=4e-3, N=1e4)
+@pytest.mark.parametrize(
+    "flags, kwargs",
+    [
+        (["--method", "fastsim-x"], dict(method="fastsim-x")),
+        (["--bound", "flat"], dict(bound="flat")),
+        (["--scheme", "third-order"], dict(scheme="third-order")),
+        (["--nx", "10", "--target-error", "0.01"], dict(nx=10, target_error=0.01)),
+    ],
+)
+def test_names_outside_the_choices_are_refused_as_the_command_lines_parser_does(cli, flags,
+                                                                                 kwargs):
+    expected = cli.error("creep", *flags, "--a", "4e-3", "--b", "4e-3", "--N", "1e4")
+    with pytest.raises(ValueError) as error:
+        wheelwear.creep(**{"a": 4e-3, "b": 4e-3, "N": 1e4, **kwargs})
+    assert str(error.value) == expected
 
 
 def test_implausible_inputs_warn_once():

@@ -39,7 +39,7 @@ from .results import Results, Step, read_results  # noqa: E402
 
 __version__: str = _wheelwear.__version__
 
-ArrayLike = Union[float, _np.ndarray, List[float]]
+ArrayLike = Union[float, "_np.typing.NDArray[_np.float64]", List[float]]
 PathLike = Union[str, "_os.PathLike[str]"]
 
 #: The tangential methods of creep(), as the command line names them.
@@ -84,8 +84,11 @@ class CreepResult:
     Attributes:
         Fx, Fy: longitudinal and lateral creep force on the wheel [N] (they oppose the creepages).
         Mz: spin moment about O [N m]; NaN where the method does not define it (linear-sdec).
-        frictional_work: frictional work per rolled distance [N] (J/m); 0 for methods without
-            cells (linear-sdec, she-sdec, table).
+        rigid_slip_work: the frictional work per rolled distance of the rigid slip,
+            -(Fx vx + Fy vy + Mz phi) [J/m]; NaN without Mz. The exact theory's cells sum to it
+            as its grid is refined (the command line's rigid_slip_work).
+        status: "ok"; for the exact theory its iteration's status as the command line gives
+            it ("converged", or why not).
         cells, slip_cells: cells of the method's grid (FASTSIM) or contact elements (exact), and
             of them those that slip.
         from_table: method best: True where the book of tables answered, False where
@@ -97,7 +100,8 @@ class CreepResult:
     Fx: Any
     Fy: Any
     Mz: Any
-    frictional_work: Any
+    rigid_slip_work: Any
+    status: Any
     cells: Any
     slip_cells: Any
     from_table: Any
@@ -105,8 +109,8 @@ class CreepResult:
     warnings: List[str]
 
     def __init__(self, fields: Dict[str, Any], shape: tuple, mu_N: Any) -> None:
-        for key in ("Fx", "Fy", "Mz", "frictional_work", "cells", "slip_cells", "from_table",
-                    "extrapolated"):
+        for key in ("Fx", "Fy", "Mz", "rigid_slip_work", "cells", "slip_cells", "from_table",
+                    "extrapolated", "status"):
             value = _np.asarray(fields[key]).reshape(shape)
             setattr(self, key, value.item() if shape == () else value)
         self.warnings = list(fields["warnings"])
@@ -200,7 +204,7 @@ Profile = _wheelwear.Profile
 
 
 def wheel_profile(
-    spec: str = "S1002",
+    spec: PathLike = "S1002",
     *,
     radius: Optional[float] = None,
     origin: Optional[str] = None,
@@ -224,7 +228,7 @@ def wheel_profile(
 
 
 def rail_profile(
-    spec: str = "60E1",
+    spec: PathLike = "60E1",
     *,
     inclination: Optional[Union[str, float]] = None,
     gauge_side: Optional[str] = None,
@@ -259,8 +263,8 @@ def _contact_inputs(**kw: Any) -> Dict[str, Any]:
 
 
 def contact(
-    wheel: str = "S1002",
-    rail: str = "60E1",
+    wheel: PathLike = "S1002",
+    rail: PathLike = "60E1",
     *,
     dy: float,
     load: float,
@@ -298,8 +302,8 @@ def contact(
 
 
 def wear(
-    wheel: str = "S1002",
-    rail: str = "60E1",
+    wheel: PathLike = "S1002",
+    rail: PathLike = "60E1",
     *,
     dy: float,
     load: float,
@@ -329,7 +333,9 @@ def wear(
     and friction ``mu``, the wear ``law`` (usfd: T gamma; archard: the KTH map) at speed ``V``
     [m/s].
 
-    Each patch of the result has ``wear`` with ``Fx``, ``Fy`` [N], ``frictional_work`` [J/m],
+    A contact that carries no load (a flange climb, say) has no wear: its ``status`` and
+    ``message`` say why and each patch's ``wear`` is None. Otherwise each patch has ``wear``
+    with ``Fx``, ``Fy`` [N], ``frictional_work`` [J/m] (the FASTSIM cells' sum),
     ``worn_volume_per_metre`` [m^3/m], ``peak_depth_per_metre`` [m/m], ``peak_y_wheel`` [m],
     ``tgamma`` (arrays ``x``, ``y`` [m] of the cells in the patch frame and ``work``, the
     frictional work density per metre rolled [J/m^2/m]) and ``depth`` (arrays ``s_wheel``,
@@ -344,14 +350,14 @@ def wear(
 
 
 def curving(
-    scene: Optional[str] = None,
+    scene: Optional[PathLike] = None,
     *,
     radius: float,
     cant: float = 0.0,
     speed: float,
     friction: Optional[float] = None,
     traction: float = 0.0,
-    vehicle: Optional[str] = None,
+    vehicle: Optional[PathLike] = None,
     contact_table: bool = False,
     threads: Optional[int] = None,
 ) -> Any:
@@ -365,6 +371,8 @@ def curving(
     ``cant_deficiency`` [m], and ``wheelsets`` in order of travel: ``dy`` [m],
     ``angle_of_attack`` [rad], ``Fx_axle`` [N], ``axle_torque`` [N m], ``status`` and
     ``wheels`` (left, right: ``Q``, ``Y``, ``Fx``, ``Fy``, ``N`` [N], ``contact_angle`` [rad]).
+    It takes a second or less (more with ``contact_table``, which builds the table first) and
+    is not interrupted by Ctrl-C.
     """
     result = _wheelwear.curving(
         "" if scene is None else _os.fspath(scene),
@@ -375,10 +383,10 @@ def curving(
 
 
 def run(
-    scene: Optional[str] = None,
-    output: Optional[str] = None,
+    scene: Optional[PathLike] = None,
+    output: Optional[PathLike] = None,
     *,
-    resume: Optional[str] = None,
+    resume: Optional[PathLike] = None,
     overwrite: bool = False,
     allow_hook: bool = False,
     resume_stored: bool = False,
@@ -389,7 +397,9 @@ def run(
     the built-in one. ``resume=FILE`` continues a run that stopped (give neither scene nor
     output then). ``progress(step, distance, total_distance, elapsed)`` is called after every
     step (m, s). Ctrl-C stops the run after the step in progress with KeyboardInterrupt; the
-    file keeps every finished step and ``run(resume=FILE)`` continues it.
+    file keeps every finished step and ``run(resume=FILE)`` continues it. One run's steps come
+    from one program: a run the module started is resumed by the module (the command line
+    refuses it, naming the program that wrote it), and the other way round.
 
     Returns the summary (``steps``, ``distance`` [m], ``worn_area`` [m^2], ``elapsed`` [s],
     ``evaluations``, ...); read the file with :func:`read_results`.
@@ -405,7 +415,7 @@ def run(
     except KeyboardInterrupt:
         raise KeyboardInterrupt(
             f"run stopped; {target} keeps every finished step: continue it with "
-            f"wheelwear.run(resume={str(target)!r}) or `wheelwear run --resume {target}`"
+            f"wheelwear.run(resume={str(target)!r})"
         ) from None
     return _records(summary)
 

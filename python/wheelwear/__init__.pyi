@@ -10,6 +10,23 @@ from .results import Results as Results
 from .results import Step as Step
 from .results import read_results as read_results
 
+__all__ = [
+    "CREEP_METHODS",
+    "CreepResult",
+    "Profile",
+    "Record",
+    "Results",
+    "Step",
+    "contact",
+    "creep",
+    "curving",
+    "rail_profile",
+    "read_results",
+    "run",
+    "wear",
+    "wheel_profile",
+]
+
 __version__: str
 
 ArrayLike = Union[float, npt.NDArray[np.float64], List[float]]
@@ -27,7 +44,8 @@ class CreepResult:
     Fx: Any  # float, or an array of the broadcast shape [N]
     Fy: Any  # [N]
     Mz: Any  # [N m], NaN where the method has none
-    frictional_work: Any  # [J/m]
+    rigid_slip_work: Any  # [J/m], NaN without Mz
+    status: Any
     cells: Any
     slip_cells: Any
     from_table: Any

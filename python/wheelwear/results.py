@@ -15,6 +15,8 @@ class Step:
     """One wear step of a run: the profile it reached and what the run recorded for it.
 
     Lengths in m, forces in N; ``group`` is the step's HDF5 group name (``/steps/NNNNNN``).
+    With separate wheels the profile is the first one the file holds (the left wheel, or
+    wheelset 1's left wheel); ``Results.array("wheel_right/Sd")`` and the like read the others.
     """
 
     index: int
@@ -77,6 +79,15 @@ class Results:
             return [np.asarray(f[s.group][name][()]) for s in self.steps]
 
 
+def _first_wheel(step: Any) -> str:
+    """The group of the step's first wheel profile: the shared one, else the left wheel's,
+    else (a vehicle run's separate wheels) wheelset 1's left wheel (docs/results.md)."""
+    for name in ("wheel", "wheel_left", "wheelsets/1/wheel_left"):
+        if name in step:
+            return name
+    raise ValueError(f"{step.name}: no wheel profile (wheel, wheel_left or wheelsets/1/wheel_left)")
+
+
 def read_results(path: str | os.PathLike[str]) -> Results:
     """Read a results file written by ``wheelwear run`` or :func:`wheelwear.run`.
 
@@ -95,8 +106,7 @@ def read_results(path: str | os.PathLike[str]) -> Results:
         steps = []
         for name in sorted(f["steps"].keys()):
             g = f["steps"][name]
-            # One shared profile, or each wheel's own (the first wheelset's left wheel here).
-            w = g["wheel"] if "wheel" in g else g["wheelsets"]["0"]["wheel_left"]
+            w = g[_first_wheel(g)]
             steps.append(
                 Step(
                     index=int(name),
