@@ -28,4 +28,7 @@ void add_route_command(CLI::App& app);
 /// `wheelwear run`: the wear-evolution run of a scene, written to an HDF5 results file.
 void add_run_command(CLI::App& app);
 
+/// `wheelwear sweep`: the runs of a base scene with some keys varied, and their summary.
+void add_sweep_command(CLI::App& app);
+
 }  // namespace wheelwear::cli

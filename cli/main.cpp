@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   wheelwear::cli::add_wear_command(app);
   wheelwear::cli::add_profile_command(app);
   wheelwear::cli::add_run_command(app);
+  wheelwear::cli::add_sweep_command(app);
   wheelwear::cli::add_curving_command(app);
   wheelwear::cli::add_route_command(app);
   // CLI11 answers `wheelwear nosuch --help` with the main help and success; a misspelt

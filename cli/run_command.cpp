@@ -22,6 +22,7 @@
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
+#include "wheelwear/pipeline/run_headline.hpp"
 #include "wheelwear/pipeline/wear_run.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
 
@@ -99,97 +100,30 @@ void show_progress(const pipeline::RunProgress& p) {
   std::fflush(stderr);
 }
 
-// The run's dropped states over all its steps, by the names of DroppedStates::named(): counts
-// summed, weights as the share of the run's distance (each step's share times the distance of
-// the step it drove).
-std::map<std::string, double> run_dropped(const pipeline::ResultsFile& file, int last) {
-  std::vector<double> step_distance;
-  double distance = 0.0;
-  for (int step = 0; step <= last; ++step) {
-    step_distance.push_back(file.read_step_array(step, "step_distance").at(0));
-    distance += step_distance.back();
-  }
-  std::map<std::string, double> totals;
-  for (const auto& [name, unused] : pipeline::DroppedStates{}.named()) {
-    const bool weight = name.find("_weight") != std::string::npos;
-    double& total = totals[name];
-    for (int step = 0; step <= last; ++step) {
-      const double value = file.read_step_array(step, name).at(0);
-      const auto k = static_cast<std::size_t>(step);
-      total += weight && distance > 0.0 ? value * step_distance[k] / distance : value;
-    }
-  }
-  return totals;
-}
-
-// The first step at which a wheel profile reached an in-service limit, and what it reached
-// ("wheel Sd 21.980 mm <= 22.000 mm"); step -1 when none did (or the file predates limits).
-struct LimitReached {
-  int step = -1;
-  std::string what;
-};
-
-LimitReached first_limit(const pipeline::ResultsFile& file, int last) {
-  LimitReached first;
-  std::vector<std::string> wheels;
-  for (auto layout : {pipeline::ProfileLayout::shared, pipeline::ProfileLayout::left_right,
-                      pipeline::ProfileLayout::per_wheelset})
-    for (const std::string& name : pipeline::profile_names(layout)) wheels.push_back(name);
-  auto recorded = [&](int step, const std::string& wheel) {
-    return file.has(pipeline::ResultsFile::step_group(step) + "/" + wheel + "/limits_reached");
-  };
-  // The run counts the limits each profile reached per step; the phrases are rebuilt from the
-  // recorded parameters and limits at the first step that has any.
-  for (int step = 0; step <= last && first.step < 0; ++step)
-    for (const std::string& wheel : wheels)
-      if (recorded(step, wheel) && file.read_step_array(step, wheel + "/limits_reached").at(0) > 0)
-        first.step = step;
-  if (first.step < 0) return first;
-  auto at = [&](const std::string& name) { return file.read_step_array(first.step, name).at(0); };
-  const profiles::WheelLimits bounds{at("limits/Sd_min"), at("limits/Sh_max"), at("limits/qR_min")};
-  for (const std::string& wheel : wheels) {
-    if (!recorded(first.step, wheel)) continue;
-    profiles::WheelParameters p;
-    p.Sd = at(wheel + "/Sd");
-    p.Sh = at(wheel + "/Sh");
-    p.qR = at(wheel + "/qR");
-    for (const std::string& phrase : profiles::limits_reached(p, bounds))
-      first.what += (first.what.empty() ? "" : ", ") + wheel + " " + phrase;
-  }
-  return first;
-}
-
 void report(const RunArgs& args, const std::string& output, const pipeline::RunSummary& s) {
   const pipeline::ResultsFile file = pipeline::ResultsFile::read(output);
-  const int last = file.completed_steps() - 1;
-  // The first profile of the run's layout: the shared one, the left, or wheelset 1's left.
-  std::string wheel = "wheel";
-  for (const char* name : {"wheel", "wheel_left", "wheelsets/1/wheel_left"}) {
-    if (!file.has(pipeline::ResultsFile::step_group(last) + "/" + name)) continue;
-    wheel = name;
-    break;
-  }
+  const pipeline::RunHeadline h = pipeline::read_headline(file);
+  const int last = h.steps;
+  const std::string& wheel = h.wheel;
   auto at = [&](int step, const std::string& name) {
     return file.read_step_array(step, name).at(0);
   };
   const double rate = s.elapsed > 0.0 ? static_cast<double>(s.evaluations) / s.elapsed : 0.0;
-  const std::map<std::string, double> dropped = run_dropped(file, last);
-  const LimitReached limit = first_limit(file, last);
-  const bool stopped = file.has(pipeline::ResultsFile::step_group(last) + "/limits/stopped") &&
-                       at(last, "limits/stopped") > 0.0;
+  const std::map<std::string, double>& dropped = h.dropped;
+  const bool stopped = h.stopped_at_limit;
   if (args.json) {
     JsonObject o;
     o.add("output", output)
         .add("steps", last)
-        .add("distance", at(last, "distance"))
-        .add("Sh_start", at(0, wheel + "/Sh"))
-        .add("Sh_end", at(last, wheel + "/Sh"))
-        .add("Sd_start", at(0, wheel + "/Sd"))
-        .add("Sd_end", at(last, wheel + "/Sd"))
-        .add("qR_start", at(0, wheel + "/qR"))
-        .add("qR_end", at(last, wheel + "/qR"))
-        .add("conicity_start", at(0, "equivalent_conicity"))
-        .add("conicity_end", at(last, "equivalent_conicity"))
+        .add("distance", h.distance)
+        .add("Sh_start", h.Sh_start)
+        .add("Sh_end", h.Sh_end)
+        .add("Sd_start", h.Sd_start)
+        .add("Sd_end", h.Sd_end)
+        .add("qR_start", h.qR_start)
+        .add("qR_end", h.qR_end)
+        .add("conicity_start", h.conicity_start)
+        .add("conicity_end", h.conicity_end)
         .add("worn_area", s.worn_area)
         .add("elapsed", s.elapsed)
         .add("evaluations", static_cast<double>(s.evaluations))
@@ -197,8 +131,8 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
         .add("geometry_solves", static_cast<double>(s.geometry_solves))
         .add("patches", static_cast<double>(s.patches))
         .add("table_patches", static_cast<double>(s.table_patches))
-        .add("limit_reached", limit.what)
-        .add("limit_step", limit.step)
+        .add("limit_reached", h.limit_reached)
+        .add("limit_step", h.limit_step)
         .add("stopped_at_limit", stopped);
     for (const auto& [name, unused] : pipeline::DroppedStates{}.named())
       o.add(name, dropped.at(name));
@@ -233,9 +167,9 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
     std::printf("  %zu of %zu patches with totals from the book of tables (best)\n",
                 s.table_patches, s.patches);
   }
-  if (limit.step >= 0) {
-    std::printf("  in-service limit (EN 15313) reached at step %d, %.1f km: %s%s\n", limit.step,
-                at(limit.step, "distance") / 1e3, limit.what.c_str(),
+  if (h.limit_step >= 0) {
+    std::printf("  in-service limit (EN 15313) reached at step %d, %.1f km: %s%s\n", h.limit_step,
+                at(h.limit_step, "distance") / 1e3, h.limit_reached.c_str(),
                 stopped ? "; the run stopped there ([limits] stop)" : "");
   }
   std::printf("plots: scripts/plot_run.py %s\n", output.c_str());

@@ -47,13 +47,17 @@ extern "C" void stop_on_signal(int signal) {
 
 }  // namespace
 
-StopMessage::StopMessage(const std::string& output) {
-  const std::string text = "; the steps finished so far are in " + output +
-                           "; continue with: wheelwear run --resume " + output + "\n";
+StopMessage::StopMessage(const std::string& output)
+    : StopMessage(Texts{"; the steps finished so far are in " + output +
+                            "; continue with: wheelwear run --resume " + output + "\n",
+                        " before the first step was written to " + output +
+                            "; run it again (with --overwrite if the file exists)\n"}) {}
+
+StopMessage::StopMessage(const Texts& texts) {
+  const std::string& text = texts.written;
   g_stop_length = std::min(text.size(), sizeof g_stop_message);
   std::memcpy(g_stop_message, text.data(), g_stop_length);
-  const std::string early = " before the first step was written to " + output +
-                            "; run it again (with --overwrite if the file exists)\n";
+  const std::string& early = texts.early;
   g_stop_early_length = std::min(early.size(), sizeof g_stop_early);
   std::memcpy(g_stop_early, early.data(), g_stop_early_length);
   g_stop_written = 0;

@@ -15,6 +15,11 @@ class StopMessage {
  public:
   /// Before steps_written() the message says that no step was written yet.
   explicit StopMessage(const std::string& output);
+  /// What follows "wheelwear: stopped by SIG...": once steps are written, and before.
+  struct Texts {
+    std::string written, early;
+  };
+  explicit StopMessage(const Texts& texts);
   /// From now on the output holds finished steps (call it once a step is written, or at once
   /// when resuming); async-signal-safe.
   static void steps_written();

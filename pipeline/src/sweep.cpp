@@ -1,0 +1,289 @@
+#include "wheelwear/pipeline/sweep.hpp"
+
+#include <tbb/parallel_for.h>
+#include <toml++/toml.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <sstream>
+#include <utility>
+
+#include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
+#include "wheelwear/pipeline/results_file.hpp"
+#include "wheelwear/pipeline/scene.hpp"
+
+namespace wheelwear::pipeline {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string where(const toml::node& node, std::string_view key) {
+  return "sweep line " + std::to_string(node.source().begin.line) + ": " + std::string(key);
+}
+
+// A scalar value as the sweep file writes it ("0.3", "1e3", "\"S1002\""): its own source text,
+// so that the summary shows the values as the user typed them.
+std::string source_of(const toml::node& value, const std::string& key,
+                      const std::vector<std::string>& lines) {
+  if (!(value.is_number() || value.is_string() || value.is_boolean()))
+    throw InputError(where(value, key) +
+                     ": each value to vary must be a number, a string or a boolean");
+  const toml::source_region& r = value.source();
+  if (r.begin.line == r.end.line && r.begin.line >= 1 && r.begin.line <= lines.size() &&
+      r.end.column > r.begin.column) {
+    const std::string& line = lines[r.begin.line - 1];
+    const std::size_t from = r.begin.column - 1, length = r.end.column - r.begin.column;
+    if (from + length <= line.size()) return line.substr(from, length);
+  }
+  std::ostringstream out;
+  value.visit([&out](const auto& v) { out << toml::toml_formatter{v}; });
+  return out.str();
+}
+
+// The runs of `values` (one list per key): every combination (grid, the last key varying
+// fastest) or the i-th value of every list (zip).
+std::vector<std::vector<std::string>> combine(const std::vector<std::vector<std::string>>& values,
+                                              bool grid) {
+  std::vector<std::vector<std::string>> runs;
+  if (!grid) {
+    for (std::size_t i = 0; i < values.front().size(); ++i) {
+      std::vector<std::string> run;
+      for (const auto& list : values) run.push_back(list[i]);
+      runs.push_back(std::move(run));
+    }
+    return runs;
+  }
+  runs.emplace_back();
+  for (const auto& list : values) {
+    std::vector<std::vector<std::string>> next;
+    for (const auto& run : runs)
+      for (const std::string& value : list) {
+        next.push_back(run);
+        next.back().push_back(value);
+      }
+    runs = std::move(next);
+  }
+  return runs;
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.9g", value);
+  return buffer;
+}
+
+// A change over the run's distance, per 10^5 km.
+double per_1e5_km(double change, double distance) {
+  return distance > 0.0 ? change * 1e8 / distance : std::nan("");
+}
+
+std::string summary_csv(const Sweep& sweep, const std::vector<SweepRow>& rows) {
+  std::ostringstream out;
+  const std::vector<std::string> columns = sweep_summary_columns(sweep);
+  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << csv_field(columns[c]);
+  out << '\n';
+  for (const SweepRow& row : rows) {
+    std::vector<std::string> cells{std::to_string(row.index + 1),
+                                   sweep_run_file(sweep, row.index).filename().string()};
+    for (const std::string& value : sweep.runs[row.index]) cells.push_back(value);
+    cells.push_back(row.status);
+    if (row.has_headline) {
+      const RunHeadline& h = row.headline;
+      for (double v : {double(h.steps), h.distance, h.Sd_start, h.Sd_end, h.Sh_start, h.Sh_end,
+                       h.qR_start, h.qR_end, h.conicity_start, h.conicity_end,
+                       per_1e5_km(h.Sd_end - h.Sd_start, h.distance),
+                       per_1e5_km(h.Sh_end - h.Sh_start, h.distance),
+                       per_1e5_km(h.qR_end - h.qR_start, h.distance), h.worn_area,
+                       per_1e5_km(h.worn_area, h.distance), h.dropped.at("dropped_patches_weight")})
+        cells.push_back(number(v));
+      cells.push_back(h.limit_reached);
+    } else {
+      cells.resize(columns.size() - 1);
+    }
+    cells.push_back(number(row.seconds));
+    for (std::size_t c = 0; c < cells.size(); ++c) out << (c ? "," : "") << csv_field(cells[c]);
+    out << '\n';
+  }
+  return out.str();
+}
+
+}  // namespace
+
+Sweep read_sweep(const fs::path& file) {
+  const std::string text = core::read_text_file(file);
+  toml::table root;
+  try {
+    root = toml::parse(text, std::string_view("sweep"));
+  } catch (const toml::parse_error& error) {
+    throw InputError(file.string() + ": sweep line " + std::to_string(error.source().begin.line) +
+                     ": " + std::string(error.description()));
+  }
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+  }
+  Sweep s;
+  s.file = fs::absolute(file);
+  const fs::path folder = s.file.parent_path();
+  bool grid = true;
+  const toml::table* vary = nullptr;
+  for (const auto& [k, node] : root) {
+    const std::string key(k.str());
+    if (key == "scene" && node.is_string()) {
+      s.base_scene = folder / *node.value<std::string>();
+    } else if (key == "output_dir" && node.is_string()) {
+      s.output_dir = folder / *node.value<std::string>();
+    } else if (key == "combine" && node.is_string()) {
+      const std::string how = *node.value<std::string>();
+      if (how != "grid" && how != "zip")
+        throw InputError(file.string() + ": " + where(node, key) + " = \"" + how +
+                         "\": use \"grid\" (every combination) or \"zip\" (the i-th values "
+                         "together)");
+      grid = how == "grid";
+    } else if (key == "vary" && node.is_table()) {
+      vary = node.as_table();
+    } else {
+      throw InputError(file.string() + ": " + where(node, key) +
+                       ": unknown key or wrong type; a sweep has scene = \"FILE\", output_dir = "
+                       "\"FOLDER\", combine = \"grid\" | \"zip\" and a [vary] table");
+    }
+  }
+  if (s.base_scene.empty())
+    throw InputError(file.string() + ": no scene = \"FILE\": name the base scene to vary");
+  if (s.output_dir.empty()) s.output_dir = folder / (s.file.stem().string() + "_runs");
+  if (!vary || vary->empty())
+    throw InputError(file.string() +
+                     ": no [vary] table: give the scene keys to vary, e.g. \"contact.friction\" = "
+                     "[0.25, 0.3]");
+  std::vector<std::vector<std::string>> values;
+  for (const auto& [k, node] : *vary) {
+    const std::string key(k.str());
+    const toml::array* list = node.as_array();
+    if (!list || list->empty())
+      throw InputError(file.string() + ": " + where(node, key) +
+                       ": give a non-empty list of values, e.g. [0.25, 0.3]");
+    s.keys.push_back(key);
+    values.emplace_back();
+    for (const toml::node& value : *list) values.back().push_back(source_of(value, key, lines));
+    if (!grid && values.back().size() != values.front().size())
+      throw InputError(file.string() + ": " + where(node, key) +
+                       ": combine = \"zip\" takes lists "
+                       "of one length; this has " +
+                       std::to_string(values.back().size()) + ", the first " +
+                       std::to_string(values.front().size()));
+  }
+  s.runs = combine(values, grid);
+  return s;
+}
+
+std::string sweep_scene_text(const Sweep& sweep, std::string_view base_text, std::size_t index) {
+  toml::table root = toml::parse(base_text, std::string_view("scene"));
+  for (std::size_t k = 0; k < sweep.keys.size(); ++k) {
+    const std::string& key = sweep.keys[k];
+    toml::table* table = &root;
+    std::size_t from = 0;
+    for (std::size_t dot; (dot = key.find('.', from)) != std::string::npos; from = dot + 1) {
+      const std::string part = key.substr(from, dot - from);
+      toml::node* child = table->get(part);
+      if (!child) child = &table->insert_or_assign(part, toml::table{}).first->second;
+      if (!child->is_table())
+        throw InputError("sweep key " + key + ": " + part +
+                         " is not a table of the scene; vary keys of its tables");
+      table = child->as_table();
+    }
+    const toml::table value = toml::parse("v = " + sweep.runs[index][k]);
+    table->insert_or_assign(key.substr(from), *value.get("v"));
+  }
+  std::ostringstream out;
+  out << toml::toml_formatter{root} << '\n';
+  return out.str();
+}
+
+fs::path sweep_run_file(const Sweep& sweep, std::size_t index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "run_%04zu.h5", index + 1);
+  return sweep.output_dir / name;
+}
+
+std::vector<std::string> sweep_summary_columns(const Sweep& sweep) {
+  std::vector<std::string> c{"run", "file"};
+  for (const std::string& key : sweep.keys) c.push_back(key);
+  for (const char* name :
+       {"status", "steps", "distance_m", "Sd_start_m", "Sd_end_m", "Sh_start_m", "Sh_end_m",
+        "qR_start_m", "qR_end_m", "conicity_start", "conicity_end", "Sd_change_per_1e5km_m",
+        "Sh_change_per_1e5km_m", "qR_change_per_1e5km_m", "worn_area_m2", "worn_area_per_1e5km_m2",
+        "not_worn_share", "limit_reached", "seconds"})
+    c.emplace_back(name);
+  return c;
+}
+
+std::vector<SweepRow> run_sweep(const Sweep& sweep, const SweepOptions& options) {
+  const std::string base_text = core::read_text_file(sweep.base_scene);
+  const fs::path base_folder = fs::absolute(sweep.base_scene).parent_path();
+  // Every run's scene is checked before the first run starts.
+  std::vector<std::string> texts;
+  for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
+    texts.push_back(sweep_scene_text(sweep, base_text, i));
+    try {
+      (void)parse_scene(texts.back(), base_folder);
+    } catch (const InputError& e) {
+      std::string values;
+      for (std::size_t k = 0; k < sweep.keys.size(); ++k)
+        values += (k ? ", " : "") + sweep.keys[k] + " = " + sweep.runs[i][k];
+      throw InputError(sweep.file.string() + ": run " + std::to_string(i + 1) + " (" + values +
+                       "): " + e.what());
+    }
+  }
+  fs::create_directories(sweep.output_dir);
+  std::vector<SweepRow> rows(sweep.runs.size());
+  std::mutex report;
+  std::size_t done = 0;
+  tbb::parallel_for(std::size_t{0}, sweep.runs.size(), std::size_t{1}, [&](std::size_t i) {
+    SweepRow& row = rows[i];
+    row.index = i;
+    const fs::path file = sweep_run_file(sweep, i);
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      if (fs::exists(file) && read_headline(ResultsFile::read(file)).complete) {
+        row.status = "skipped";
+      } else if (fs::exists(file)) {
+        resume_run(file, options.run);
+        row.status = "done";
+      } else {
+        run_scene(parse_scene(texts[i], base_folder), texts[i], base_folder, false, file,
+                  options.run);
+        row.status = "done";
+      }
+    } catch (const std::exception& e) {
+      row.status = std::string("failed: ") + e.what();
+    }
+    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    try {
+      if (fs::exists(file)) {
+        row.headline = read_headline(ResultsFile::read(file));
+        row.has_headline = true;
+      }
+    } catch (const std::exception&) {
+      row.has_headline = false;  // its status says why
+    }
+    const std::lock_guard lock(report);
+    ++done;
+    if (options.finished) options.finished(row, done, rows.size());
+  });
+  core::write_file_atomically(sweep.output_dir / "summary.csv", summary_csv(sweep, rows));
+  return rows;
+}
+
+}  // namespace wheelwear::pipeline
