@@ -1,8 +1,11 @@
 #include "wheelwear/pipeline/sweep.hpp"
 
+#include <H5public.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -33,8 +36,12 @@ std::string source_of(const toml::node& value, const std::string& key,
     throw InputError(where(value, key) +
                      ": each value to vary must be a number, a string or a boolean");
   const toml::source_region& r = value.source();
+  // toml++ counts columns in characters: only a line of ASCII maps them to bytes.
+  const auto ascii = [](const std::string& line) {
+    return std::all_of(line.begin(), line.end(), [](char c) { return (c & 0x80) == 0; });
+  };
   if (r.begin.line == r.end.line && r.begin.line >= 1 && r.begin.line <= lines.size() &&
-      r.end.column > r.begin.column) {
+      r.end.column > r.begin.column && ascii(lines[r.begin.line - 1])) {
     const std::string& line = lines[r.begin.line - 1];
     const std::size_t from = r.begin.column - 1, length = r.end.column - r.begin.column;
     if (from + length <= line.size()) return line.substr(from, length);
@@ -167,9 +174,17 @@ Sweep read_sweep(const fs::path& file) {
     throw InputError(file.string() +
                      ": no [vary] table: give the scene keys to vary, e.g. \"contact.friction\" = "
                      "[0.25, 0.3]");
+  // In the order the file lists them (a toml++ table iterates its keys sorted): the runs, their
+  // numbers and the summary's columns follow the file.
+  std::vector<std::pair<std::string, const toml::node*>> entries;
+  for (const auto& [k, node] : *vary) entries.emplace_back(std::string(k.str()), &node);
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+    const toml::source_position &pa = a.second->source().begin, &pb = b.second->source().begin;
+    return pa.line != pb.line ? pa.line < pb.line : pa.column < pb.column;
+  });
   std::vector<std::vector<std::string>> values;
-  for (const auto& [k, node] : *vary) {
-    const std::string key(k.str());
+  for (const auto& [key, entry] : entries) {
+    const toml::node& node = *entry;
     const toml::array* list = node.as_array();
     if (!list || list->empty())
       throw InputError(file.string() + ": " + where(node, key) +
@@ -189,7 +204,14 @@ Sweep read_sweep(const fs::path& file) {
 }
 
 std::string sweep_scene_text(const Sweep& sweep, std::string_view base_text, std::size_t index) {
-  toml::table root = toml::parse(base_text, std::string_view("scene"));
+  toml::table root;
+  try {
+    root = toml::parse(base_text, std::string_view("scene"));
+  } catch (const toml::parse_error& error) {
+    throw InputError(sweep.base_scene.string() + ": scene line " +
+                     std::to_string(error.source().begin.line) + ": " +
+                     std::string(error.description()));
+  }
   for (std::size_t k = 0; k < sweep.keys.size(); ++k) {
     const std::string& key = sweep.keys[k];
     toml::table* table = &root;
@@ -203,7 +225,13 @@ std::string sweep_scene_text(const Sweep& sweep, std::string_view base_text, std
                          " is not a table of the scene; vary keys of its tables");
       table = child->as_table();
     }
-    const toml::table value = toml::parse("v = " + sweep.runs[index][k]);
+    toml::table value;
+    try {
+      value = toml::parse("v = " + sweep.runs[index][k]);
+    } catch (const toml::parse_error& error) {
+      throw InputError("sweep key " + key + " = " + sweep.runs[index][k] + ": " +
+                       std::string(error.description()));
+    }
     table->insert_or_assign(key.substr(from), *value.get("v"));
   }
   std::ostringstream out;
@@ -229,9 +257,50 @@ std::vector<std::string> sweep_summary_columns(const Sweep& sweep) {
   return c;
 }
 
+namespace {
+
+// Runs or resumes run `i` into `file`, or leaves a complete one; the row's status says which.
+void run_one(const Sweep& sweep, std::size_t i, const std::string& text,
+             const fs::path& base_folder, const RunOptions& options, SweepRow& row) {
+  const fs::path file = sweep_run_file(sweep, i);
+  if (!fs::exists(file)) {
+    run_scene(parse_scene(text, base_folder), text, base_folder, false, file, options);
+    row.status = "done";
+    return;
+  }
+  const ResultsFile existing = ResultsFile::read(file);
+  if (existing.scene_text() != text)
+    throw InputError(file.string() +
+                     " holds a run of another scene (the sweep's values changed "
+                     "since it was written): move it away, or give the sweep another output_dir");
+  // No step yet (stopped while it started), some steps, or stopped while it ended (its last
+  // step named, not yet consolidated): resume_run takes each on; a complete file stays as it is.
+  if (existing.completed_steps() > 0 && existing.has("/final") &&
+      read_headline(existing).complete) {
+    row.status = "skipped";
+    return;
+  }
+  try {
+    resume_run(file, options);
+  } catch (const InputError&) {
+    // Finished while it ended: resume_run completes the file and then says it is complete.
+    if (!ResultsFile::read(file).has("/final")) throw;
+  }
+  row.status = "done";
+}
+
+bool hdf5_is_threadsafe() {
+  hbool_t safe = 0;
+  return H5is_library_threadsafe(&safe) >= 0 && safe;
+}
+
+}  // namespace
+
 std::vector<SweepRow> run_sweep(const Sweep& sweep, const SweepOptions& options) {
   const std::string base_text = core::read_text_file(sweep.base_scene);
   const fs::path base_folder = fs::absolute(sweep.base_scene).parent_path();
+  // The base scene on its own first, so that its own mistakes point at its own lines.
+  (void)parse_scene(base_text, base_folder);
   // Every run's scene is checked before the first run starts.
   std::vector<std::string> texts;
   for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
@@ -250,27 +319,21 @@ std::vector<SweepRow> run_sweep(const Sweep& sweep, const SweepOptions& options)
   std::vector<SweepRow> rows(sweep.runs.size());
   std::mutex report;
   std::size_t done = 0;
-  tbb::parallel_for(std::size_t{0}, sweep.runs.size(), std::size_t{1}, [&](std::size_t i) {
+  const auto one = [&](std::size_t i) {
     SweepRow& row = rows[i];
     row.index = i;
-    const fs::path file = sweep_run_file(sweep, i);
     const auto start = std::chrono::steady_clock::now();
     try {
-      if (fs::exists(file) && read_headline(ResultsFile::read(file)).complete) {
-        row.status = "skipped";
-      } else if (fs::exists(file)) {
-        resume_run(file, options.run);
-        row.status = "done";
-      } else {
-        run_scene(parse_scene(texts[i], base_folder), texts[i], base_folder, false, file,
-                  options.run);
-        row.status = "done";
-      }
+      // Isolated: a thread waiting inside this run takes no other run's work meanwhile (which
+      // would hold this one up and count in its time).
+      tbb::this_task_arena::isolate(
+          [&] { run_one(sweep, i, texts[i], base_folder, options.run, row); });
     } catch (const std::exception& e) {
       row.status = std::string("failed: ") + e.what();
     }
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     try {
+      const fs::path file = sweep_run_file(sweep, i);
       if (fs::exists(file)) {
         row.headline = read_headline(ResultsFile::read(file));
         row.has_headline = true;
@@ -281,7 +344,14 @@ std::vector<SweepRow> run_sweep(const Sweep& sweep, const SweepOptions& options)
     const std::lock_guard lock(report);
     ++done;
     if (options.finished) options.finished(row, done, rows.size());
-  });
+  };
+  // Runs write their own files at once only where the HDF5 library is built thread-safe
+  // (Debian's is); otherwise one after the other, each still parallel inside.
+  if (hdf5_is_threadsafe()) {
+    tbb::parallel_for(std::size_t{0}, sweep.runs.size(), std::size_t{1}, one);
+  } else {
+    for (std::size_t i = 0; i < sweep.runs.size(); ++i) one(i);
+  }
   core::write_file_atomically(sweep.output_dir / "summary.csv", summary_csv(sweep, rows));
   return rows;
 }

@@ -30,9 +30,11 @@ import numpy as _np
 
 # An installed package finds its data (the book of creep tables) at <prefix>/share/wheelwear:
 # it lives in <prefix>/lib/python3/dist-packages/wheelwear.
-_installed_data = _Path(__file__).resolve().parents[4] / "share" / "wheelwear"
-if "WHEELWEAR_DATA_DIR" not in _os.environ and (_installed_data / "creep_table.h5").is_file():
-    _os.environ["WHEELWEAR_DATA_DIR"] = str(_installed_data)
+_parents = _Path(__file__).resolve().parents
+if len(_parents) > 4 and "WHEELWEAR_DATA_DIR" not in _os.environ:
+    _installed_data = _parents[4] / "share" / "wheelwear"
+    if (_installed_data / "creep_table.h5").is_file():
+        _os.environ["WHEELWEAR_DATA_DIR"] = str(_installed_data)
 
 from . import _wheelwear  # noqa: E402
 from .results import Results, Step, read_results  # noqa: E402

@@ -77,6 +77,18 @@ TEST_F(SweepTest, ZipTakesTheIthValuesTogetherAndWantsListsOfOneLength) {
   }
 }
 
+TEST_F(SweepTest, KeysVaryInTheOrderTheFileListsThem) {
+  // toml++ iterates a table's keys sorted; the sweep follows the file.
+  const Sweep s =
+      read_sweep(sweep_file("\"wear.law\" = [\"usfd\", \"archard\"]\n\"contact.friction\" = "
+                            "[0.25, 0.35, 0.45]\n"));
+  EXPECT_EQ(s.keys, (std::vector<std::string>{"wear.law", "contact.friction"}));
+  ASSERT_EQ(s.runs.size(), 6u);
+  EXPECT_EQ(s.runs[1], (std::vector<std::string>{"\"usfd\"", "0.35"}));
+  EXPECT_EQ(s.runs[3], (std::vector<std::string>{"\"archard\"", "0.25"}));
+  EXPECT_EQ(sweep_summary_columns(s)[2], "wear.law");
+}
+
 TEST_F(SweepTest, BadSweepsAreRefusedNamingTheKey) {
   const auto message = [&](const std::string& text) {
     try {
@@ -159,12 +171,12 @@ TEST_F(SweepTest, ARepeatedSweepSkipsCompleteRunsAndRunsTheMissingOne) {
   EXPECT_DOUBLE_EQ(again[1].headline.Sd_end, first[1].headline.Sd_end);
 }
 
-// The command: a run that fails while it runs (its results file cannot be written: a folder is
-// in its place) is recorded, the other completes, and the command exits with status 3.
+// The command: a run that fails (a folder stands where its results file would be) is recorded,
+// the other completes, and the command exits with status 3.
 TEST_F(SweepTest, TheCommandRecordsAFailedRunFinishesTheOthersAndExitsWithThree) {
   const fs::path file = sweep_file("\"contact.friction\" = [0.25, 0.4]\n");
   const Sweep s = read_sweep(file);
-  fs::create_directories(sweep_run_file(s, 1));  // run 2's results file cannot be written
+  fs::create_directories(sweep_run_file(s, 1));  // run 2's results file is a folder
   const auto r = testing::run_wheelwear("sweep " + file.string() + " --json --threads 2");
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.out.find("\"runs_failed\": 1"), std::string::npos) << r.out;
@@ -174,6 +186,39 @@ TEST_F(SweepTest, TheCommandRecordsAFailedRunFinishesTheOthersAndExitsWithThree)
   EXPECT_EQ(table[1][3], "done");
   EXPECT_EQ(table[2][3].rfind("failed: ", 0), 0u) << table[2][3];
   EXPECT_TRUE(ResultsFile::read(sweep_run_file(s, 0)).has("/final"));
+}
+
+// A sweep killed while its first run had written one step: started again, it resumes that run
+// to the file the run writes alone, and runs the other.
+TEST_F(SweepTest, AKilledSweepResumesItsPartialRun) {
+  const fs::path file = sweep_file("\"contact.friction\" = [0.25, 0.4]\n");
+  // Twenty steps, so that the kill lands while the first run is under way.
+  write("base.toml", small_scene(400e3, 20e3, 1e-3));
+  const Sweep s = read_sweep(file);
+  const int status = kill_run_after_steps({"sweep", file.string(), "--threads", "1", "-q"},
+                                          sweep_run_file(s, 0), 1);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  ASSERT_LT(ResultsFile::read(sweep_run_file(s, 0)).completed_steps(), 21);
+  // Resumed by the program that started it (a run's steps come from one program).
+  const auto again = testing::run_wheelwear("sweep " + file.string() + " --threads 1");
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.err.find("run 1 (contact.friction = 0.25): done"), std::string::npos)
+      << again.err;
+  const fs::path alone = dir_ / "alone.h5";
+  run(sweep_scene_text(s, core::read_text_file(s.base_scene), 0), alone);
+  expect_identical_runs(alone, sweep_run_file(s, 0));
+}
+
+// A file left by a sweep whose values have changed since is not taken for this run.
+TEST_F(SweepTest, AFileOfAnotherSceneFailsItsRunNamingTheFix) {
+  run_sweep(read_sweep(sweep_file("\"contact.friction\" = [0.25]\n")), {});
+  const Sweep changed = read_sweep(sweep_file("\"contact.friction\" = [0.3]\n"));
+  const std::vector<SweepRow> rows = run_sweep(changed, {});
+  EXPECT_NE(rows[0].status.find("holds a run of another scene (the sweep's values changed since "
+                                "it was written): move it away, or give the sweep another "
+                                "output_dir"),
+            std::string::npos)
+      << rows[0].status;
 }
 
 }  // namespace

@@ -55,15 +55,20 @@ struct SweepRow {
 };
 
 struct SweepOptions {
-  RunOptions run;  ///< for every run (progress is per step of each run)
+  /// For every run. Its callbacks are called from several runs at once (runs go in parallel)
+  /// and RunProgress does not say which run: they must be thread-safe.
+  RunOptions run;
   /// After each run, from the thread that ran it, serialised: the row and how many are done.
   std::function<void(const SweepRow&, std::size_t done, std::size_t total)> finished;
 };
 
 /// Runs every run of `sweep` not completed yet — a run whose file is complete is skipped, one
-/// whose file is partial is resumed — spread over the worker threads, each run itself parallel;
-/// a failing run is recorded and the others go on. Writes output_dir/summary.csv (atomically)
-/// and returns its rows in run order.
+/// whose file is partial (no step yet, some steps, or stopped while it ended) is resumed, a file
+/// that holds another scene fails its run — spread over the worker threads (one after the other
+/// where the HDF5 library is not thread-safe), each run itself parallel; a failing run is
+/// recorded and the others go on. Writes output_dir/summary.csv (atomically) and returns its
+/// rows in run order. Throws InputError before any run starts when the base scene or a run's
+/// scene is refused.
 std::vector<SweepRow> run_sweep(const Sweep& sweep, const SweepOptions& options);
 
 /// The summary's columns, with units in their names (docs/sweeps.md).
