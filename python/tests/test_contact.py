@@ -128,3 +128,25 @@ def test_curving_refuses_a_negative_speed(cli):
     with pytest.raises(ValueError) as error:
         wheelwear.curving(radius=500.0, speed=-1.0)
     assert str(error.value) == cli.error("curving", "--radius", "500", "--speed", "-1")
+
+
+@pytest.mark.parametrize("name", ["s1002_flange_back.whl", "s1002_worn_33200km.csv"])
+def test_a_measured_wheel_reads_as_the_command_line_reads_it(cli, source_dir, name):
+    # The same reader, cleaning and fit: the curve's extent and EN 15313's Sh, Sd, qR equal the
+    # command line's `profile --info --json` for the same file.
+    path = os.path.join(source_dir, "tests", "data", "profiles", name)
+    expected = cli("profile", "--wheel", path, "--info")
+    p = wheelwear.wheel_profile(path)
+    assert p.body == "wheel" and p.name == name
+    assert p.length == expected["length"]
+    assert p.y_range == (expected["y_min"], expected["y_max"])
+    par = p.parameters()
+    assert (par["Sh"], par["Sd"], par["qR"]) == (expected["Sh"], expected["Sd"], expected["qR"])
+
+
+def test_a_measured_rail_reads_as_the_command_line_reads_it(cli, source_dir):
+    path = os.path.join(source_dir, "tests", "data", "profiles", "rail_base.ban")
+    expected = cli("profile", "--rail", path, "--info")
+    p = wheelwear.rail_profile(path)
+    assert p.body == "rail"
+    assert (p.length, p.y_range) == (expected["length"], (expected["y_min"], expected["y_max"]))
