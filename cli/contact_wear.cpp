@@ -1,9 +1,41 @@
 #include "contact_wear.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
+#include "wheelwear/core/enum_names.hpp"
+#include "wheelwear/core/input_error.hpp"
+
 namespace wheelwear::cli {
+
+wear::WearLaw wear_law_named(const std::string& law, const std::string& table) {
+  std::optional<wear::WearLaw> out;
+  if (!table.empty()) {
+    // A user's own table of the law's kind: T gamma regimes, or an Archard wear map.
+    if (law == "usfd") out = wear::TgammaLaw::load_csv(table);
+    if (law == "archard") out = wear::ArchardLaw::load_csv(table);
+  } else {
+    out = wear::default_wear_law(law);
+  }
+  if (!out) throw InputError("--law " + law + ": unknown wear law; use usfd or archard");
+  return *out;
+}
+
+tangential::ContactModel contact_model_named(const std::string& model) {
+  const auto chosen = tangential::parse_contact_model(model);
+  if (!chosen)
+    throw InputError("--model " + model + ": unknown contact model; use " +
+                     core::list_names(tangential::kContactModelNames));
+  return *chosen;
+}
+
+void check_wear_grid(double speed, int cells) {
+  require(speed > 0.0 && std::isfinite(speed), "--V", speed,
+          "the rolling speed must be positive (m/s)");
+  require(cells >= 2 && cells <= 1000, "--cells", cells,
+          "FASTSIM cells per direction must lie in 2 ... 1000");
+}
 
 ModelWear model_wear(const ContactInputs& in, const contactgeom::WheelRailPair& pair,
                      const contactgeom::WheelRailPatch& p, tangential::ContactModel model,

@@ -221,17 +221,7 @@ void run(const RunArgs& args) {
   }
   if (args.output.empty()) throw InputError("-o: give the results file to write, e.g. -o run.h5");
   const StopMessage stop_message(args.output);
-  pipeline::RunSummary summary;
-  if (args.scene.empty()) {
-    summary = pipeline::run_scene(pipeline::default_scene(), pipeline::default_scene_text(), {},
-                                  true, args.output, options);
-  } else {
-    const std::filesystem::path path(args.scene);
-    const pipeline::Scene scene = pipeline::load_scene(path);
-    const std::string text = core::read_text_file(path);
-    summary = pipeline::run_scene(scene, text, std::filesystem::absolute(path).parent_path(), false,
-                                  args.output, options);
-  }
+  const pipeline::RunSummary summary = pipeline::run_scene_file(args.scene, args.output, options);
   report(args, args.output, summary);
 }
 

@@ -113,24 +113,9 @@ void require_ok(const contactgeom::WheelRailContact& contact) {
 
 void run_wear(const WearArgs& args) {
   refuse_existing(args.map, "--map", args.overwrite);
-  require(args.in.motion.speed > 0.0 && std::isfinite(args.in.motion.speed), "--V",
-          args.in.motion.speed, "the rolling speed must be positive (m/s)");
-  require(args.cells >= 2 && args.cells <= 1000, "--cells", args.cells,
-          "FASTSIM cells per direction must lie in 2 ... 1000");
-  std::optional<wear::WearLaw> law;
-  if (!args.law_table.empty()) {
-    // A user's own table of the law's kind: T gamma regimes, or an Archard wear map.
-    if (args.law == "usfd") law = wear::TgammaLaw::load_csv(args.law_table);
-    if (args.law == "archard") law = wear::ArchardLaw::load_csv(args.law_table);
-  } else {
-    law = wear::default_wear_law(args.law);
-  }
-  if (!law) throw InputError("--law " + args.law + ": unknown wear law; use usfd or archard");
-  const auto chosen = tangential::parse_contact_model(args.model);
-  if (!chosen) {
-    throw InputError("--model " + args.model + ": unknown contact model; use " +
-                     core::list_names(tangential::kContactModelNames));
-  }
+  check_wear_grid(args.in.motion.speed, args.cells);
+  const wear::WearLaw law = wear_law_named(args.law, args.law_table);
+  const tangential::ContactModel chosen = contact_model_named(args.model);
   const SolvedContact solved = solve_contact(args.in);
   const auto& contact = solved.contact;
   std::vector<std::string> warnings = solved.warnings;
@@ -151,10 +136,10 @@ void run_wear(const WearArgs& args) {
     if (args.compare) {
       for (tangential::ContactModel m : tangential::kContactModels) {
         if (m == tangential::ContactModel::hertz && !p.hertz) continue;
-        models.push_back(wear_of(args, solved.pair, p, m, *law));
+        models.push_back(wear_of(args, solved.pair, p, m, law));
       }
     } else {
-      models.push_back(wear_of(args, solved.pair, p, *chosen, *law));
+      models.push_back(wear_of(args, solved.pair, p, chosen, law));
     }
     per_patch.push_back(std::move(models));
   }

@@ -260,11 +260,11 @@ std::vector<std::string> sweep_summary_columns(const Sweep& sweep) {
 namespace {
 
 // Runs or resumes run `i` into `file`, or leaves a complete one; the row's status says which.
-void run_one(const Sweep& sweep, std::size_t i, const std::string& text,
+void run_one(const Sweep& sweep, std::size_t i, const Scene& scene, const std::string& text,
              const fs::path& base_folder, const RunOptions& options, SweepRow& row) {
   const fs::path file = sweep_run_file(sweep, i);
   if (!fs::exists(file)) {
-    run_scene(parse_scene(text, base_folder), text, base_folder, false, file, options);
+    run_scene(scene, text, base_folder, false, file, options);
     row.status = "done";
     return;
   }
@@ -275,10 +275,13 @@ void run_one(const Sweep& sweep, std::size_t i, const std::string& text,
                      "since it was written): move it away, or give the sweep another output_dir");
   // No step yet (stopped while it started), some steps, or stopped while it ended (its last
   // step named, not yet consolidated): resume_run takes each on; a complete file stays as it is.
-  if (existing.completed_steps() > 0 && existing.has("/final") &&
-      read_headline(existing).complete) {
-    row.status = "skipped";
-    return;
+  if (existing.completed_steps() > 0 && existing.has("/final")) {
+    row.headline = read_headline(existing);
+    row.has_headline = row.headline.complete;
+    if (row.headline.complete) {
+      row.status = "skipped";
+      return;
+    }
   }
   try {
     resume_run(file, options);
@@ -301,12 +304,13 @@ std::vector<SweepRow> run_sweep(const Sweep& sweep, const SweepOptions& options)
   const fs::path base_folder = fs::absolute(sweep.base_scene).parent_path();
   // The base scene on its own first, so that its own mistakes point at its own lines.
   (void)parse_scene(base_text, base_folder);
-  // Every run's scene is checked before the first run starts.
+  // Every run's scene is checked before the first run starts, and kept for its run.
   std::vector<std::string> texts;
+  std::vector<Scene> scenes;
   for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
     texts.push_back(sweep_scene_text(sweep, base_text, i));
     try {
-      (void)parse_scene(texts.back(), base_folder);
+      scenes.push_back(parse_scene(texts.back(), base_folder));
     } catch (const InputError& e) {
       std::string values;
       for (std::size_t k = 0; k < sweep.keys.size(); ++k)
@@ -327,14 +331,14 @@ std::vector<SweepRow> run_sweep(const Sweep& sweep, const SweepOptions& options)
       // Isolated: a thread waiting inside this run takes no other run's work meanwhile (which
       // would hold this one up and count in its time).
       tbb::this_task_arena::isolate(
-          [&] { run_one(sweep, i, texts[i], base_folder, options.run, row); });
+          [&] { run_one(sweep, i, scenes[i], texts[i], base_folder, options.run, row); });
     } catch (const std::exception& e) {
       row.status = std::string("failed: ") + e.what();
     }
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     try {
       const fs::path file = sweep_run_file(sweep, i);
-      if (fs::exists(file)) {
+      if (!row.has_headline && fs::exists(file)) {  // a skipped run's was read to skip it
         row.headline = read_headline(ResultsFile::read(file));
         row.has_headline = true;
       }

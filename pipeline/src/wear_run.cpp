@@ -15,6 +15,7 @@
 #include "vehicle_record.hpp"
 #include "wear_increment.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/output_lock.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
@@ -357,6 +358,23 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
       detail::run_info(scene_directory, builtin_scene, 0.0, 0, -1, options.program),
       detail::stored_inputs(scene));
   return loop(scene, evaluator, file, std::move(start), scene_directory, builtin_scene, options);
+}
+
+RunSummary run_scene_file(const fs::path& scene, const fs::path& output,
+                          const RunOptions& options) {
+  if (scene.empty())
+    return run_scene(default_scene(), default_scene_text(), {}, true, output, options);
+  if (!fs::is_regular_file(scene)) throw InputError("scene " + scene.string() + ": no such file");
+  const std::string text = core::read_text_file(scene);
+  // Absolute: the files it names are recorded by the paths a resumed run looks them up by.
+  const fs::path folder = fs::absolute(scene).parent_path();
+  Scene parsed;
+  try {
+    parsed = parse_scene(text, folder);
+  } catch (const InputError& error) {
+    throw InputError(scene.string() + ": " + error.what());
+  }
+  return run_scene(parsed, text, folder, false, output, options);
 }
 
 RunSummary resume_run(const fs::path& output, const RunOptions& options) {

@@ -161,16 +161,9 @@ void bind_contact(py::module_& m) {
       [](const py::dict& kw, const std::string& law_name, const std::string& model_name,
          int cells) {
         const cli::ContactInputs in = contact_inputs(kw);
-        require(in.motion.speed > 0.0 && std::isfinite(in.motion.speed), "--V", in.motion.speed,
-                "the rolling speed must be positive (m/s)");
-        require(cells >= 2 && cells <= 1000, "--cells", cells,
-                "FASTSIM cells per direction must lie in 2 ... 1000");
-        const std::optional<wear::WearLaw> law = wear::default_wear_law(law_name);
-        if (!law) throw InputError("--law " + law_name + ": unknown wear law; use usfd or archard");
-        const auto model = tangential::parse_contact_model(model_name);
-        if (!model)
-          throw InputError("--model " + model_name + ": unknown contact model; use " +
-                           core::list_names(tangential::kContactModelNames));
+        cli::check_wear_grid(in.motion.speed, cells);
+        const wear::WearLaw law = cli::wear_law_named(law_name, "");
+        const tangential::ContactModel model = cli::contact_model_named(model_name);
         std::optional<cli::SolvedContact> solved;
         std::vector<cli::ModelWear> wear;
         {
@@ -180,7 +173,7 @@ void bind_contact(py::module_& m) {
           // fails with it).
           if (contactgeom::carries_load(solved->contact.status))
             for (const auto& p : solved->contact.patches)
-              wear.push_back(cli::model_wear(in, solved->pair, p, *model, *law, cells, true));
+              wear.push_back(cli::model_wear(in, solved->pair, p, model, law, cells, true));
         }
         py::dict out = contact_dict(*solved);
         py::list patches = out["patches"];

@@ -25,7 +25,7 @@ using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 // The per-patch inputs, as flat arrays of one length.
 struct Inputs {
-  std::vector<Array> arrays;  // a, b, psi, vx, vy, phi, N, G, nu, mu
+  const std::vector<Array>& arrays;  // a, b, psi, vx, vy, phi, N, G, nu, mu
   py::ssize_t size = 0;
   double at(std::size_t which, py::ssize_t i) const { return arrays[which].data()[i]; }
 };

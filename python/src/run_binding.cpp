@@ -10,9 +10,7 @@
 
 #include "bindings.hpp"
 #include "wheelwear/core/input_error.hpp"
-#include "wheelwear/core/text.hpp"
 #include "wheelwear/core/version.hpp"
-#include "wheelwear/pipeline/scene.hpp"
 #include "wheelwear/pipeline/wear_run.hpp"
 
 namespace wheelwear::python {
@@ -74,21 +72,8 @@ void bind_run(py::module_& m) {
               "resume_stored: it goes with resume = FILE (a new run reads its inputs)");
         if (!output) throw InputError("output: give the results file to write, e.g. \"run.h5\"");
         pipeline::RunSummary s;
-        if (!scene) {
-          const pipeline::Scene built_in = pipeline::default_scene();
-          run_on_threads(threads, [&] {
-            s = pipeline::run_scene(built_in, pipeline::default_scene_text(), {}, true, *output,
-                                    options);
-          });
-        } else {
-          const std::filesystem::path path(*scene);
-          const pipeline::Scene loaded = pipeline::load_scene(path);
-          const std::string text = core::read_text_file(path);
-          run_on_threads(threads, [&] {
-            s = pipeline::run_scene(loaded, text, std::filesystem::absolute(path).parent_path(),
-                                    false, *output, options);
-          });
-        }
+        run_on_threads(threads,
+                       [&] { s = pipeline::run_scene_file(scene.value_or(""), *output, options); });
         return summary_dict(s);
       },
       py::arg("scene"), py::arg("output"), py::arg("resume"), py::arg("overwrite"),

@@ -68,6 +68,11 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
                      const std::filesystem::path& scene_directory, bool builtin_scene,
                      const std::filesystem::path& output, const RunOptions& options);
 
+/// Runs the scene file `scene` (its text read once, recorded in the file; its relative file names
+/// from its folder), or the built-in scene where `scene` is empty, into `output`.
+RunSummary run_scene_file(const std::filesystem::path& scene, const std::filesystem::path& output,
+                          const RunOptions& options);
+
 /// Continues the run recorded in `output` from its last complete step; the result is identical
 /// to an uninterrupted run. The scene and every file it names come from the results file
 /// (/scene, /inputs), never from the disk: a file that still exists where the scene named it
