@@ -7,9 +7,25 @@
 
 #include "build_commit.hpp"
 #include "commands.hpp"
+#include "job.hpp"
 #include "wheelwear/core/input_error.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+// Says what stopped the command: process 0 (or a lone process) always; another process of an
+// MPI job only for a failure of its own share of the work (every process parses the same
+// command line, and one message is enough).
+void say(const char* what, const char* message) {
+  const wheelwear::cli::Job& job = wheelwear::cli::job();
+  if (job.leader()) {
+    std::cerr << "wheelwear: " << what << ": " << message << '\n';
+  } else if (job.working()) {
+    std::cerr << "wheelwear: " << what << " (process " << job.rank() << " of " << job.size()
+              << "): " << message << '\n';
+  }
+}
+
+int run_command_line(int argc, char** argv) {
   CLI::App app{
       "wheelwear: railway wheel profile wear prediction with non-elliptic (SDEC) contact.\n"
       "All inputs and outputs are SI (m, N, Pa, 1/m) unless a flag says otherwise.\n"
@@ -35,8 +51,9 @@ int main(int argc, char** argv) {
     const auto known =
         app.get_subcommands([&command](const CLI::App* sub) { return sub->get_name() == command; });
     if (known.empty()) {
-      std::cerr << "wheelwear: unknown command '" << command
-                << "'; run `wheelwear --help` for the list of commands\n";
+      if (wheelwear::cli::job().leader())
+        std::cerr << "wheelwear: unknown command '" << command
+                  << "'; run `wheelwear --help` for the list of commands\n";
       return 2;
     }
   }
@@ -44,19 +61,34 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     // --help and --version end the parse with success; every other parse error is bad usage.
-    if (error.get_exit_code() == 0) return app.exit(error);
-    std::cerr << "wheelwear: error: " << error.what()
-              << "\nRun with --help for more information.\n";
+    if (error.get_exit_code() == 0) return wheelwear::cli::job().leader() ? app.exit(error) : 0;
+    if (wheelwear::cli::job().leader())
+      std::cerr << "wheelwear: error: " << error.what()
+                << "\nRun with --help for more information.\n";
     return 2;
   } catch (const wheelwear::InputError& error) {
-    std::cerr << "wheelwear: error: " << error.what() << '\n';
+    say("error", error.what());
     return 2;
   } catch (const wheelwear::IoError& error) {
-    std::cerr << "wheelwear: error: " << error.what() << '\n';
+    say("error", error.what());
     return 4;
   } catch (const std::exception& error) {
-    std::cerr << "wheelwear: failed: " << error.what() << '\n';
+    say("failed", error.what());
     return 3;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  wheelwear::cli::Job& job = wheelwear::cli::job();
+  job.join(argc, argv);
+  // In an MPI job only `run` and `sweep` share their work; another command is process 0's.
+  const std::string command = argc > 1 ? argv[1] : "";
+  if (!job.leader() && command != "run" && command != "sweep") return job.end(0);
+  job.prepare(command);
+  int code = run_command_line(argc, argv);
+  if (job.owes_service()) code = job.serve();  // process 0's run, whatever this parse gave
+  return job.end(code);
 }

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -14,6 +15,7 @@
 
 #include "build_commit.hpp"
 #include "commands.hpp"
+#include "job.hpp"
 #include "json_writer.hpp"
 #include "output_path.hpp"
 #include "stop_message.hpp"
@@ -131,6 +133,10 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
         .add("geometry_solves", static_cast<double>(s.geometry_solves))
         .add("patches", static_cast<double>(s.patches))
         .add("table_patches", static_cast<double>(s.table_patches))
+        .add("processes", s.processes)
+        .add("gathered_bytes", static_cast<double>(s.gathered_bytes))
+        .add("waited_seconds", s.waited)
+        .add("writing_seconds", s.writing)
         .add("limit_reached", h.limit_reached)
         .add("limit_step", h.limit_step)
         .add("stopped_at_limit", stopped);
@@ -155,6 +161,14 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
               conicity_end - conicity_start);
   std::printf("  %zu state evaluations in %.1f s (%.0f states/s, %zu contact geometries)\n",
               s.evaluations, s.elapsed, rate, s.geometry_solves);
+  if (s.processes > 1)
+    std::printf(
+        "  spread over %d processes: %.1f MB of outcomes gathered by process 0 (%.0f bytes per "
+        "state); it waited %.1f s for the others, wrote for %.1f s\n",
+        s.processes, static_cast<double>(s.gathered_bytes) / 1e6,
+        static_cast<double>(s.gathered_bytes) /
+            static_cast<double>(std::max<std::size_t>(1, s.gathered_states)),
+        s.waited, s.writing);
   if (dropped.at("dropped_patches_weight") > 0.0) {
     std::printf(
         "  %.2f %% of the distance not worn (states dropped whole): %.0f failed, %.0f "
@@ -176,7 +190,9 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
 }
 
 void run(const RunArgs& args) {
+  Job& job = cli::job();
   if (!args.export_default.empty()) {
+    if (!job.leader()) return;
     const std::filesystem::path dir(args.export_default);
     make_output_folder(dir, "--export-default-scene");
     for (const auto& [name, text] :
@@ -193,7 +209,14 @@ void run(const RunArgs& args) {
     return;
   }
   const auto threads = thread_limit(args.threads);
+  // In an MPI job the other processes serve process 0's steps (with this --threads), and
+  // process 0 ends their service whatever happens next (Job::prepare, Job::end).
+  if (!job.leader()) {
+    job.serve();
+    return;
+  }
   pipeline::RunOptions options;
+  options.distributor = job.distributor();
   options.program = program_identity();
   options.overwrite = args.overwrite;
   options.allow_hook = args.allow_hook;
@@ -244,13 +267,22 @@ void add_run_command(CLI::App& app) {
       "Examples:\n"
       "  wheelwear run -o run.h5                            the built-in scene\n"
       "  wheelwear run data/scenes/vehicle_route.toml -o vehicle.h5 --threads 2\n"
-      "  wheelwear run --resume run.h5                      continue a killed run");
-  cmd->add_option("scene", args->scene, "scene file (TOML); the built-in default when omitted")
-      ->check(CLI::ExistingFile);
+      "  wheelwear run --resume run.h5                      continue a killed run\n"
+      "  mpirun -np 8 wheelwear run scene.toml -o run.h5   over 8 processes (a build with\n"
+      "                                                     WHEELWEAR_MPI; the same file,\n"
+      "                                                     docs/cluster.md)");
+  CLI::Option* scene =
+      cmd->add_option("scene", args->scene, "scene file (TOML); the built-in default when omitted");
   cmd->add_option("-o,--output", args->output, "results file to write (HDF5)");
-  cmd->add_option("--resume", args->resume,
-                  "continue the run recorded in this results file from its last step")
-      ->check(CLI::ExistingFile);
+  CLI::Option* resume =
+      cmd->add_option("--resume", args->resume,
+                      "continue the run recorded in this results file from its last step");
+  // The other processes of an MPI job read no file: process 0 sends them the scene, so they
+  // need not see its file system.
+  if (job().leader()) {
+    scene->check(CLI::ExistingFile);
+    resume->check(CLI::ExistingFile);
+  }
   cmd->add_flag("--resume-stored", args->resume_stored,
                 "with --resume: go on with the inputs stored in the results file although a file "
                 "the scene names has changed since the run started (refused without it)");

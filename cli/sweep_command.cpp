@@ -4,11 +4,13 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "build_commit.hpp"
 #include "commands.hpp"
+#include "job.hpp"
 #include "json_writer.hpp"
 #include "stop_message.hpp"
 #include "thread_limit.hpp"
@@ -35,20 +37,31 @@ std::string values_of(const pipeline::Sweep& sweep, std::size_t index) {
 void sweep(const SweepArgs& args) {
   const pipeline::Sweep sweep = pipeline::read_sweep(args.file);
   const auto threads = thread_limit(args.threads);
-  const StopMessage stop_message(
-      StopMessage::Texts{"; the finished runs are in " + sweep.output_dir.string() +
-                             "; continue with: wheelwear sweep " + args.file +
-                             " (complete runs are skipped, partial ones resumed)\n",
-                         "; continue with: wheelwear sweep " + args.file + "\n"});
+  const Job& job = cli::job();
+  // In an MPI job the other processes run their share quietly: process 0 speaks for the job.
+  const std::optional<StopMessage> stop_message =
+      job.leader()
+          ? std::optional<StopMessage>(
+                std::in_place,
+                StopMessage::Texts{"; the finished runs are in " + sweep.output_dir.string() +
+                                       "; continue with: wheelwear sweep " + args.file +
+                                       " (complete runs are skipped, partial ones resumed)\n",
+                                   "; continue with: wheelwear sweep " + args.file + "\n"})
+          : std::nullopt;
   StopMessage::steps_written();
   pipeline::SweepOptions options;
+  options.group = job.group();
   options.run.program = program_identity();
   options.run.warning = [](const std::string& text) {
     std::fprintf(stderr, "wheelwear: warning: %s\n", text.c_str());
   };
-  if (!args.quiet) {
-    std::fprintf(stderr, "sweep: %zu runs into %s\n", sweep.runs.size(),
-                 sweep.output_dir.string().c_str());
+  if (!args.quiet && job.leader()) {
+    std::fprintf(stderr, "sweep: %zu runs into %s%s\n", sweep.runs.size(),
+                 sweep.output_dir.string().c_str(),
+                 job.size() > 1 ? (", spread over " + std::to_string(job.size()) +
+                                   " processes (the others' runs reported when all are done)")
+                                      .c_str()
+                                : "");
     options.finished = [&sweep](const pipeline::SweepRow& row, std::size_t done,
                                 std::size_t total) {
       std::fprintf(stderr, "[%zu/%zu] run %zu (%s): %s in %.1f s\n", done, total, row.index + 1,
@@ -56,6 +69,7 @@ void sweep(const SweepArgs& args) {
     };
   }
   const std::vector<pipeline::SweepRow> rows = pipeline::run_sweep(sweep, options);
+  if (!job.leader()) return;
   std::size_t failed = 0;
   for (const pipeline::SweepRow& row : rows) failed += row.status.rfind("failed", 0) == 0;
   const std::string summary = (sweep.output_dir / "summary.csv").string();
@@ -97,9 +111,10 @@ void add_sweep_command(CLI::App& app) {
       "  [vary]\n"
       "  \"contact.friction\" = [0.25, 0.3, 0.4]\n"
       "  \"time_domain.seed\" = [1, 2, 3]\n"
-      "Runs go in parallel, each itself parallel. Run it again after a stop: complete runs are\n"
-      "skipped, partial ones resumed. A failing run is recorded; the others go on, and the\n"
-      "command then exits with status 3.");
+      "Runs go in parallel, each itself parallel; under mpirun (a build with WHEELWEAR_MPI,\n"
+      "docs/cluster.md) they are spread over the processes too. Run it again after a stop:\n"
+      "complete runs are skipped, partial ones resumed. A failing run is recorded; the others\n"
+      "go on, and the command then exits with status 3.");
   cmd->add_option("sweep", args->file, "sweep file (TOML)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--threads", args->threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 4096));

@@ -350,7 +350,43 @@ def python_overhead():
                   "against the C++ loop"], rows)
 
 
+# ---------------------------------------------------------------------------------------------
+# bench/results/mpi_scaling.csv (bench/mpi_scaling.sh)
+
+
+def cluster_scaling():
+    rows = read_csv("mpi_scaling.csv")
+    out = []
+    reference = {}
+    for r in rows:
+        key = (r["study"], r["scene"])
+        wall = float(r["wall_seconds"])
+        if r["study"] == "run":
+            if r["processes"] == "1" and r["threads_per_process"] == "1":
+                reference[key] = wall
+            shape = f"{r['processes']} × {r['threads_per_process']}"
+            gain = f"{sig(reference[key] / wall, 2)}×"
+            detail = (f"{sig(r['waited_seconds'], 2)} s waited, {sig(r['writing_seconds'], 2)} s "
+                      f"writing, {sig(r['gathered_mb_per_step'], 2)} MB per step gathered"
+                      if r["processes"] != "1" else
+                      f"{sig(r['writing_seconds'], 2)} s writing")
+            what = f"run: {r['scene']} ({r['steps']} steps, {r['states_per_step']} states each)"
+        else:
+            if r["processes"] == "1":
+                reference[key] = wall
+            shape = f"{r['processes']} × 1"
+            gain = f"{sig(reference[key] / wall, 2)} (efficiency)"
+            detail = f"{r['runs']} runs"
+            what = f"sweep: {r['scene']}, 2 runs per process"
+        if r["oversubscribed"] == "yes":
+            shape += " (oversubscribed)"
+        out.append([what, shape, duration(wall), gain, detail])
+    return table(["study", "processes × threads", "wall time", "against 1 × 1",
+                  "where the time goes (process 0)"], out)
+
+
 GENERATORS = {
+    "cluster-scaling": ("docs/cluster.md", cluster_scaling),
     "python-overhead": ("docs/python.md", python_overhead),
     "vehicle-time-domain-study": ("docs/vehicle.md", vehicle_time_domain_study),
     "readme-accuracy": ("README.md", readme_accuracy),

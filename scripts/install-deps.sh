@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages wheelwear needs, and only those that are missing: a no-op when
-# everything is present. Usage: scripts/install-deps.sh
+# everything is present. --mpi adds Open MPI, for a build with WHEELWEAR_MPI (the tests' build;
+# docs/cluster.md). Usage: scripts/install-deps.sh [--mpi]
 set -euo pipefail
 
 packages=(
@@ -10,6 +11,14 @@ packages=(
   python3 python3-dev python3-numpy python3-h5py python3-matplotlib
   pybind11-dev python3-pytest python3-mypy
 )
+case "${1:-}" in
+  --mpi) packages+=(libopenmpi-dev openmpi-bin) ;;
+  "") ;;
+  *)
+    echo "install-deps.sh: unknown option '$1'; usage: scripts/install-deps.sh [--mpi]" >&2
+    exit 2
+    ;;
+esac
 
 missing=()
 for package in "${packages[@]}"; do

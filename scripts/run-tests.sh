@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs every test: the optimised build, then a short
-# fuzzing run of the input readers under AddressSanitizer and UndefinedBehaviorSanitizer.
+# Installs what is missing, builds, and runs every test: the optimised build (with MPI, so that
+# runs spread over an MPI job are tested too: docs/cluster.md), then a short fuzzing run of the
+# input readers under AddressSanitizer and UndefinedBehaviorSanitizer.
 # With --sanitizers the whole suite is also built and run under both sanitizers (about 19 more
 # minutes on two cores, which would take CI past its budget; run it before a release and after
 # changes to memory handling). Each stage prints its elapsed time, and a summary of all of them
@@ -50,8 +51,8 @@ sanitizer_tests() {
     ctest --test-dir build-asan --output-on-failure -j "$jobs"
 }
 
-stage "install deps" scripts/install-deps.sh
-stage "release build" scripts/build.sh build
+stage "install deps" scripts/install-deps.sh --mpi
+stage "release build" scripts/build.sh build -DWHEELWEAR_MPI=ON
 stage "release tests" release_tests
 if $sanitizers; then
   # -O1 with line tables only: about 40 % less compile time than -O2 -g, and the reports still

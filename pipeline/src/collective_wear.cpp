@@ -248,10 +248,31 @@ CollectiveWear CollectiveEvaluator::evaluate(
   return evaluate(wheels, kernel_.scene().states);
 }
 
-CollectiveWear CollectiveEvaluator::evaluate(const std::vector<const profiles::Profile*>& wheels,
-                                             const std::vector<WheelsetStateSpec>& specs) const {
-  const Scene& scene = kernel_.scene();
-  const ProfileLayout layout = profile_layout(scene);
+namespace {
+
+// Which profile pair (track) each state runs on, numbered in the order of first use.
+struct TrackIndex {
+  std::vector<std::array<std::size_t, 2>> profiles;  // per track: left, right profile index
+  std::vector<std::size_t> track_of;                 // per state
+};
+
+TrackIndex index_tracks(const std::vector<WheelsetStateSpec>& specs, ProfileLayout layout) {
+  TrackIndex index;
+  std::map<std::array<std::size_t, 2>, std::size_t> number;
+  index.track_of.resize(specs.size());
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const std::array<std::size_t, 2> worn = worn_profiles(specs[i], layout);
+    const auto [it, inserted] = number.emplace(worn, index.profiles.size());
+    if (inserted) index.profiles.push_back(worn);
+    index.track_of[i] = it->second;
+  }
+  return index;
+}
+
+}  // namespace
+
+void CollectiveEvaluator::check_wheels(const std::vector<const profiles::Profile*>& wheels) const {
+  const ProfileLayout layout = profile_layout(kernel_.scene());
   require(wheels.size() == profile_count(layout), "worn wheel profiles",
           static_cast<double>(wheels.size()),
           layout == ProfileLayout::shared ? "shared wheels need one profile"
@@ -259,49 +280,84 @@ CollectiveWear CollectiveEvaluator::evaluate(const std::vector<const profiles::P
               ? "separate wheels need two profiles (left, right)"
               : "separate wheels of a vehicle need eight profiles "
                 "(left and right of each wheelset)");
+}
+
+std::vector<int> CollectiveEvaluator::owners(const std::vector<WheelsetStateSpec>& specs,
+                                             int ranks) const {
+  require(ranks >= 1, "processes", ranks, "at least one");
+  const TrackIndex tracks = index_tracks(specs, profile_layout(kernel_.scene()));
+  const GeometryIndex index = index_geometries(specs, tracks.track_of, reuse_geometry_);
+  std::vector<int> owner(specs.size());
+  for (std::size_t i = 0; i < specs.size(); ++i)
+    owner[i] = static_cast<int>(index.geometry_of[i] % static_cast<std::size_t>(ranks));
+  return owner;
+}
+
+StateOutcomes CollectiveEvaluator::outcomes(const std::vector<const profiles::Profile*>& wheels,
+                                            const std::vector<WheelsetStateSpec>& specs,
+                                            const std::vector<std::size_t>& which) const {
+  check_wheels(wheels);
+  const Scene& scene = kernel_.scene();
+  const TrackIndex track_index = index_tracks(specs, profile_layout(scene));
   std::vector<contactgeom::WheelRailPair> pairs;
   for (const profiles::Profile* wheel : wheels) pairs.push_back(kernel_.pair(*wheel));
-  // The wheelset each state runs on: the pair of profiles its left and right wheel wear.
-  std::vector<std::array<std::size_t, 2>> profile_of(specs.size());
-  std::map<std::array<std::size_t, 2>, std::size_t> track_index;
   std::vector<contactgeom::WheelsetOnTrack> tracks;
-  std::vector<std::size_t> track_of(specs.size());
-  for (std::size_t i = 0; i < specs.size(); ++i) {
-    profile_of[i] = worn_profiles(specs[i], layout);
-    const auto [it, inserted] = track_index.emplace(profile_of[i], tracks.size());
-    if (inserted) tracks.push_back({pairs[profile_of[i][0]], pairs[profile_of[i][1]]});
-    track_of[i] = it->second;
-  }
+  for (const std::array<std::size_t, 2>& worn : track_index.profiles)
+    tracks.push_back({pairs[worn[0]], pairs[worn[1]]});
+  const std::vector<std::size_t>& track_of = track_index.track_of;
 
+  // The distinct geometries of the states asked for, each solved once.
   const GeometryIndex index = index_geometries(specs, track_of, reuse_geometry_);
-  std::vector<contactgeom::WheelsetContact> contacts(index.first_state.size());
+  std::vector<std::size_t> needed;  // geometry numbers, in order of first use
+  std::map<std::size_t, std::size_t> slot_of;
+  for (std::size_t i : which)
+    if (slot_of.emplace(index.geometry_of[i], needed.size()).second)
+      needed.push_back(index.geometry_of[i]);
+  std::vector<contactgeom::WheelsetContact> contacts(needed.size());
   tbb::parallel_for(std::size_t{0}, contacts.size(), [&](std::size_t g) {
-    const std::size_t first = index.first_state[g];
+    const std::size_t first = index.first_state[needed[g]];
     contacts[g] = kernel_.contact(tracks[track_of[first]], specs[first]);
   });
 
-  const std::size_t n_states = specs.size();
-  std::vector<StateOutcome> states(n_states);
+  StateOutcomes out;
+  out.geometry_solves = contacts.size();
+  out.states.resize(which.size());
   // Wheel by wheel: a state's two wheels are independent work.
-  tbb::parallel_for(std::size_t{0}, 2 * n_states, [&](std::size_t k) {
-    const std::size_t i = k / 2;
+  tbb::parallel_for(std::size_t{0}, 2 * which.size(), [&](std::size_t k) {
+    const std::size_t i = which[k / 2];
     const int side = static_cast<int>(k % 2);
-    const contactgeom::WheelsetContact& both = contacts[index.geometry_of[i]];
+    const contactgeom::WheelsetContact& both = contacts[slot_of.at(index.geometry_of[i])];
     const contactgeom::WheelsetOnTrack& track = tracks[track_of[i]];
-    if (side == 0) states[i].roll = both.roll;  // one writer per state
-    states[i].wheels[static_cast<std::size_t>(side)] = kernel_.wheel(
+    StateOutcome& state = out.states[k / 2];
+    if (side == 0) state.roll = both.roll;  // one writer per state
+    state.wheels[static_cast<std::size_t>(side)] = kernel_.wheel(
         both, side, specs[i], side == 0 ? track.left.wheel : track.right.wheel, scene.tgamma_maps);
   });
+  return out;
+}
 
+CollectiveWear CollectiveEvaluator::reduce(const std::vector<const profiles::Profile*>& wheels,
+                                           const std::vector<WheelsetStateSpec>& specs,
+                                           StateOutcomes all) const {
+  const Scene& scene = kernel_.scene();
+  require(all.states.size() == specs.size(), "state outcomes",
+          static_cast<double>(all.states.size()), "one per state of the collective");
   CollectiveWear out;
-  out.geometry_solves = contacts.size();
+  out.geometry_solves = all.geometry_solves;
   for (const profiles::Profile* wheel : wheels) {
     const auto bins = static_cast<std::size_t>(std::ceil(wheel->length() / kWearBin)) + 1;
     out.rate.push_back(wear::WearDistribution::zeros(0.0, kWearBin, bins));
   }
-  reduce_states(scene, specs, states, out);
-  if (scene.state_summaries || scene.tgamma_maps) out.states = std::move(states);
+  reduce_states(scene, specs, all.states, out);
+  if (scene.state_summaries || scene.tgamma_maps) out.states = std::move(all.states);
   return out;
+}
+
+CollectiveWear CollectiveEvaluator::evaluate(const std::vector<const profiles::Profile*>& wheels,
+                                             const std::vector<WheelsetStateSpec>& specs) const {
+  std::vector<std::size_t> every(specs.size());
+  for (std::size_t i = 0; i < every.size(); ++i) every[i] = i;
+  return reduce(wheels, specs, outcomes(wheels, specs, every));
 }
 
 }  // namespace wheelwear::pipeline

@@ -11,7 +11,9 @@
 #include <csignal>
 #include <cstring>
 #include <optional>
+#include <string_view>
 #include <thread>
+#include <vector>
 
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
@@ -171,8 +173,18 @@ pid_t start_program(const std::vector<std::string>& arguments, const fs::path& w
   posix_spawnattr_init(&attributes);
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
   posix_spawnattr_setpgroup(&attributes, 0);
+  // Without the MPI launcher's variables: the program is not a process of this run's job (an MPI
+  // program, wheelwear among them, would take itself for one and wait for the others).
+  std::vector<char*> environment;
+  for (char** variable = environ; *variable; ++variable) {
+    const std::string_view name(*variable);
+    if (!name.starts_with("OMPI_") && !name.starts_with("PMIX_") && !name.starts_with("PMI_"))
+      environment.push_back(*variable);
+  }
+  environment.push_back(nullptr);
   pid_t pid = 0;
-  const int started = posix_spawnp(&pid, argv[0], &actions, &attributes, argv.data(), environ);
+  const int started =
+      posix_spawnp(&pid, argv[0], &actions, &attributes, argv.data(), environment.data());
   posix_spawnattr_destroy(&attributes);
   posix_spawn_file_actions_destroy(&actions);
   close(out);

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <mutex>
 #include <sstream>
 #include <utility>
@@ -292,6 +293,71 @@ void run_one(const Sweep& sweep, std::size_t i, const Scene& scene, const std::s
   row.status = "done";
 }
 
+// The headline of `row`'s results file where it has one and the row holds none yet (a skipped
+// run's was read to skip it); a file without one leaves the row without, its status says why.
+void read_row_headline(const Sweep& sweep, SweepRow& row) {
+  try {
+    const fs::path file = sweep_run_file(sweep, row.index);
+    if (!row.has_headline && fs::exists(file)) {
+      row.headline = read_headline(ResultsFile::read(file));
+      row.has_headline = true;
+    }
+  } catch (const std::exception&) {
+    row.has_headline = false;
+  }
+}
+
+// Whether every process of `group` has its runs' scenes: a process that refused one (`refused`)
+// stops them all. Process 0 keeps its own exception, or gets the first other process's reason
+// as an InputError naming it; the others are left with an exception of their own.
+void agree_to_start(ProcessGroup& group, std::exception_ptr& refused) {
+  std::string reason;
+  if (refused) {
+    try {
+      std::rethrow_exception(refused);
+    } catch (const std::exception& e) {
+      reason = e.what();
+    } catch (...) {
+      reason = "an unknown error";
+    }
+  }
+  std::string first;
+  const std::vector<std::string> reasons = group.gather(reason);
+  for (std::size_t r = 0; r < reasons.size() && first.empty(); ++r)
+    if (!reasons[r].empty())
+      first = r == 0 ? reasons[r] : "process " + std::to_string(r) + ": " + reasons[r];
+  group.broadcast(first);
+  if (!first.empty() && !refused) refused = std::make_exception_ptr(InputError(first));
+}
+
+// The rows of the runs of the other processes to process 0 (their status and time; their
+// headlines process 0 reads from their files). Returns whether this process is process 0.
+bool gather_rows(ProcessGroup& group, const std::vector<std::size_t>& mine,
+                 std::vector<SweepRow>& rows) {
+  std::ostringstream out;
+  for (std::size_t i : mine) {
+    const SweepRow& row = rows[i];
+    out << i << '\t' << std::hexfloat << row.seconds << '\t' << row.status.size() << '\t'
+        << row.status;
+  }
+  const std::vector<std::string> parts = group.gather(out.str());
+  if (group.rank() != 0) return false;
+  for (std::size_t r = 1; r < parts.size(); ++r) {
+    std::istringstream in(parts[r]);
+    std::size_t i = 0, length = 0;
+    std::string seconds;
+    while (in >> i && std::getline(in.ignore(1), seconds, '\t') && in >> length) {
+      in.ignore(1);
+      SweepRow& row = rows.at(i);
+      row.index = i;
+      row.seconds = std::strtod(seconds.c_str(), nullptr);
+      row.status.resize(length);
+      in.read(row.status.data(), static_cast<std::streamsize>(length));
+    }
+  }
+  return true;
+}
+
 bool hdf5_is_threadsafe() {
   hbool_t safe = 0;
   return H5is_library_threadsafe(&safe) >= 0 && safe;
@@ -300,26 +366,36 @@ bool hdf5_is_threadsafe() {
 }  // namespace
 
 std::vector<SweepRow> run_sweep(const Sweep& sweep, const SweepOptions& options) {
-  const std::string base_text = core::read_text_file(sweep.base_scene);
-  const fs::path base_folder = fs::absolute(sweep.base_scene).parent_path();
-  // The base scene on its own first, so that its own mistakes point at its own lines.
-  (void)parse_scene(base_text, base_folder);
   // Every run's scene is checked before the first run starts, and kept for its run.
   std::vector<std::string> texts;
   std::vector<Scene> scenes;
-  for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
-    texts.push_back(sweep_scene_text(sweep, base_text, i));
-    try {
-      scenes.push_back(parse_scene(texts.back(), base_folder));
-    } catch (const InputError& e) {
-      std::string values;
-      for (std::size_t k = 0; k < sweep.keys.size(); ++k)
-        values += (k ? ", " : "") + sweep.keys[k] + " = " + sweep.runs[i][k];
-      throw InputError(sweep.file.string() + ": run " + std::to_string(i + 1) + " (" + values +
-                       "): " + e.what());
+  fs::path base_folder;
+  std::exception_ptr refused;
+  try {
+    const std::string base_text = core::read_text_file(sweep.base_scene);
+    base_folder = fs::absolute(sweep.base_scene).parent_path();
+    // The base scene on its own first, so that its own mistakes point at its own lines.
+    (void)parse_scene(base_text, base_folder);
+    for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
+      texts.push_back(sweep_scene_text(sweep, base_text, i));
+      try {
+        scenes.push_back(parse_scene(texts.back(), base_folder));
+      } catch (const InputError& e) {
+        std::string values;
+        for (std::size_t k = 0; k < sweep.keys.size(); ++k)
+          values += (k ? ", " : "") + sweep.keys[k] + " = " + sweep.runs[i][k];
+        throw InputError(sweep.file.string() + ": run " + std::to_string(i + 1) + " (" + values +
+                         "): " + e.what());
+      }
     }
+    fs::create_directories(sweep.output_dir);
+  } catch (...) {
+    refused = std::current_exception();
   }
-  fs::create_directories(sweep.output_dir);
+  // Over several processes all go on, or all stop: one refusing alone would leave the others
+  // waiting for it at the end.
+  if (options.group && options.group->size() > 1) agree_to_start(*options.group, refused);
+  if (refused) std::rethrow_exception(refused);
   std::vector<SweepRow> rows(sweep.runs.size());
   std::mutex report;
   std::size_t done = 0;
@@ -336,26 +412,34 @@ std::vector<SweepRow> run_sweep(const Sweep& sweep, const SweepOptions& options)
       row.status = std::string("failed: ") + e.what();
     }
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    try {
-      const fs::path file = sweep_run_file(sweep, i);
-      if (!row.has_headline && fs::exists(file)) {  // a skipped run's was read to skip it
-        row.headline = read_headline(ResultsFile::read(file));
-        row.has_headline = true;
-      }
-    } catch (const std::exception&) {
-      row.has_headline = false;  // its status says why
-    }
+    read_row_headline(sweep, row);
     const std::lock_guard lock(report);
     ++done;
     if (options.finished) options.finished(row, done, rows.size());
   };
+  // In a job of several processes each takes every size-th run; process 0 writes the summary.
+  const int rank = options.group ? options.group->rank() : 0;
+  const int size = options.group ? options.group->size() : 1;
+  std::vector<std::size_t> mine;
+  for (std::size_t i = static_cast<std::size_t>(rank); i < rows.size();
+       i += static_cast<std::size_t>(size))
+    mine.push_back(i);
   // Runs write their own files at once only where the HDF5 library is built thread-safe
   // (Debian's is); otherwise one after the other, each still parallel inside.
   if (hdf5_is_threadsafe()) {
-    tbb::parallel_for(std::size_t{0}, sweep.runs.size(), std::size_t{1}, one);
+    tbb::parallel_for(std::size_t{0}, mine.size(), std::size_t{1},
+                      [&](std::size_t k) { one(mine[k]); });
   } else {
-    for (std::size_t i = 0; i < sweep.runs.size(); ++i) one(i);
+    for (std::size_t i : mine) one(i);
   }
+  if (size > 1 && !gather_rows(*options.group, mine, rows)) return rows;
+  if (size > 1)
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      if (static_cast<int>(i % static_cast<std::size_t>(size)) == 0) continue;
+      read_row_headline(sweep, rows[i]);
+      ++done;
+      if (options.finished) options.finished(rows[i], done, rows.size());
+    }
   core::write_file_atomically(sweep.output_dir / "summary.csv", summary_csv(sweep, rows));
   return rows;
 }

@@ -105,11 +105,25 @@ long planned_in_stretch(const DynamicPiece& piece, const vehicle::VehicleMotion&
 
 }  // namespace
 
+StartStates start_states(const RouteCase& route_case, const vehicle::VehicleCurving& curving) {
+  StartStates states;
+  for (int k = 0; k < vehicle::kWheelsets; ++k)
+    states[static_cast<std::size_t>(k)] = wheelset_state(route_case, curving, k, 1.0);
+  return states;
+}
+
 std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
                                             const vehicle::VehicleMotion& motion,
                                             const RouteCase& start_case,
                                             const vehicle::VehicleCurving& start,
                                             const std::vector<int>& worn, PieceRun& summary) {
+  return piece_states(piece, motion, start_states(start_case, start), worn, summary);
+}
+
+std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
+                                            const vehicle::VehicleMotion& motion,
+                                            const StartStates& start, const std::vector<int>& worn,
+                                            PieceRun& summary) {
   summary = {};
   summary.completed = motion.completed;
   summary.message = motion.message;
@@ -160,7 +174,8 @@ std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
       // lead up to it) carrying more than their own share.
       const double rest =
           per_wheelset * static_cast<double>(planned - n) / static_cast<double>(planned);
-      WheelsetStateSpec s = wheelset_state(start_case, start, k, rest);
+      WheelsetStateSpec s = start[K];
+      s.weight = rest;
       s.label = piece.label + ", wheelset " + std::to_string(k + 1) +
                 (n == 0 ? " (start state)" : " (start state, for the part not simulated)");
       states.push_back(std::move(s));

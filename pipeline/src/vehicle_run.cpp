@@ -1,7 +1,7 @@
 #include "wheelwear/pipeline/vehicle_run.hpp"
 
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <cmath>
@@ -76,9 +76,7 @@ RouteCase section_case(const vehicle::Route& route, std::size_t i, double start,
           section.length_m / total};
 }
 
-// The contact models of the four wheelsets in order of travel: the physical wheelset k, or
-// 3 - k running backwards with its sides swapped.
-using Models = std::array<vehicle::WheelsetModel, vehicle::kWheelsets>;
+using Models = RouteSolver::Models;
 
 // The linear critical speed of `way`'s vehicle with `models`, the contacts its dynamics uses,
 // into out.critical_speed and out.critical_speed_note; searched from the previous solve's where
@@ -107,32 +105,6 @@ void find_critical_speed(const RunningWay& way, const Models& models,
   } catch (const InputError& e) {
     out.critical_speed_note = std::string("not found: ") + e.what();
   }
-}
-
-// Simulates `out`'s pieces from their start cases' solutions, independently of each other, and
-// appends their states to out.states in the pieces' order.
-void simulate_pieces(const std::array<const Models*, 2>& models,
-                     const std::array<const RunningWay*, 2>& ways, const std::vector<int>& worn,
-                     VehicleCollective& out) {
-  out.piece_runs.resize(out.pieces.size());
-  std::vector<std::vector<WheelsetStateSpec>> sampled(out.pieces.size());
-  tbb::parallel_for(std::size_t{0}, out.pieces.size(), [&](std::size_t p) {
-    const DynamicPiece& piece = out.pieces[p];
-    const RunningWay& way = *ways[piece.reversed ? 1 : 0];
-    vehicle::VehicleMotionOptions options;
-    options.run_in = way.time_domain.run_in;
-    options.sample_distance = way.time_domain.sample_distance;
-    options.speed = piece.speed;
-    const vehicle::VehicleCurving& start = out.curving[piece.start_case];
-    const vehicle::VehicleMotion motion = vehicle::simulate_vehicle(
-        way.vehicle, *models[piece.reversed ? 1 : 0], way.route, piece.sim_start_m,
-        piece.sim_length_m, piece_irregularities(piece, way.time_domain, way.vehicle),
-        vehicle::placement_of(start), options);
-    sampled[p] =
-        piece_states(piece, motion, out.cases[piece.start_case], start, worn, out.piece_runs[p]);
-  });
-  for (std::vector<WheelsetStateSpec>& states : sampled)
-    for (WheelsetStateSpec& s : states) out.states.push_back(std::move(s));
 }
 
 // The profile of physical wheelset j's wheel on `side` (0 left, 1 right) among `wheels`
@@ -175,6 +147,67 @@ std::array<Models, 2> direction_models(const VehicleRun& run, const StateKernel&
     return Models{*distinct[p[0]], *distinct[p[1]], *distinct[p[2]], *distinct[p[3]]};
   };
   return {models(0), models(1)};
+}
+
+// Solves every case of `out` (from `previous`'s solutions where given) into out.curving, and adds
+// the worn cases' states to out.states.
+void solve_cases(const RouteSolver& solver, const VehicleCollective* previous,
+                 RouteExecutor& execute, VehicleCollective& out) {
+  std::vector<CaseTask> tasks;
+  for (std::size_t i = 0; i < out.cases.size(); ++i) {
+    tasks.push_back({i, std::nullopt});
+    if (previous) {
+      tasks.back().start = vehicle::placement_of(previous->curving[i]);
+      // A condition that took many iterations on the earlier profiles likely does again.
+      tasks.back().cost = 1.0 + previous->curving[i].iterations;
+    }
+  }
+  out.curving = execute.cases(solver, tasks);
+  require(out.curving.size() == out.cases.size(), "solved cases",
+          static_cast<double>(out.curving.size()), "one per case");
+  const std::vector<int> worn = solver.worn_wheelsets();
+  for (std::size_t i = 0; i < out.cases.size(); ++i) {
+    // A warm start that fails keeps the converged solution it started from.
+    if (previous && !out.curving[i].converged && previous->curving[i].converged) {
+      out.curving[i] = previous->curving[i];
+      ++out.kept;
+    }
+    if (!out.curving[i].converged) ++out.unconverged;
+    if (out.cases[i].share == 0.0) continue;  // only starts a piece
+    const double weight = out.cases[i].share / static_cast<double>(worn.size());
+    for (int k : worn)
+      out.states.push_back(wheelset_state(out.cases[i], out.curving[i], k, weight));
+  }
+}
+
+// Simulates every piece of `out` from its start case's solution, and appends their states to
+// out.states in the pieces' order.
+void simulate_pieces(const RouteSolver& solver, RouteExecutor& execute, VehicleCollective& out) {
+  std::vector<PieceTask> tasks;
+  for (std::size_t p = 0; p < out.pieces.size(); ++p) {
+    const std::size_t c = out.pieces[p].start_case;
+    // Its cost: the time simulated.
+    tasks.push_back({p, vehicle::placement_of(out.curving[c]),
+                     start_states(out.cases[c], out.curving[c]),
+                     out.pieces[p].sim_length_m / out.pieces[p].speed});
+  }
+  std::vector<PieceOutcome> simulated = execute.pieces(solver, tasks);
+  require(simulated.size() == tasks.size(), "simulated pieces",
+          static_cast<double>(simulated.size()), "one per piece");
+  out.piece_runs.resize(out.pieces.size());
+  for (std::size_t p = 0; p < simulated.size(); ++p) {
+    out.piece_runs[p] = std::move(simulated[p].run);
+    for (WheelsetStateSpec& s : simulated[p].states) out.states.push_back(std::move(s));
+  }
+}
+
+// `wheels` where a vehicle can wear them; InputError otherwise.
+const std::vector<const profiles::Profile*>& checked_wheels(
+    const std::vector<const profiles::Profile*>& wheels) {
+  require(wheels.size() == 1 || wheels.size() == 2 || wheels.size() == 2 * vehicle::kWheelsets,
+          "worn wheel profiles", static_cast<double>(wheels.size()),
+          "give one (shared), two (left, right) or eight (left and right of each wheelset)");
+  return wheels;
 }
 
 }  // namespace
@@ -354,66 +387,97 @@ WheelsetStateSpec wheelset_state(const RouteCase& route_case,
   return s;
 }
 
+RouteSolver::RouteSolver(const VehicleRun& run, const StateKernel& kernel,
+                         const std::vector<const profiles::Profile*>& wheels, std::uint64_t draw)
+    : plan_(route_plan(run)),
+      worn_(run.worn_wheelsets()),
+      models_(direction_models(run, kernel, checked_wheels(wheels))) {
+  if (run.time_domain.redraw) redraw_pieces(plan_.pieces, run, draw);
+  ways_[0] = running_way(run, false);
+  if (run.direction != RunningDirection::forward) ways_[1] = running_way(run, true);
+}
+
+const RunningWay& RouteSolver::way(bool reversed) const {
+  return reversed && ways_[1] ? *ways_[1] : *ways_[0];
+}
+
+PieceOutcome RouteSolver::simulate(const PieceTask& task) const {
+  const DynamicPiece& piece = plan_.pieces.at(task.piece);
+  const RunningWay& way = this->way(piece.reversed);
+  vehicle::VehicleMotionOptions options;
+  options.run_in = way.time_domain.run_in;
+  options.sample_distance = way.time_domain.sample_distance;
+  options.speed = piece.speed;
+  const vehicle::VehicleMotion motion = vehicle::simulate_vehicle(
+      way.vehicle, models(piece.reversed), way.route, piece.sim_start_m, piece.sim_length_m,
+      piece_irregularities(piece, way.time_domain, way.vehicle), task.start, options);
+  PieceOutcome out;
+  out.states = piece_states(piece, motion, task.start_states, worn_, out.run);
+  return out;
+}
+
+vehicle::VehicleCurving RouteSolver::solve(const CaseTask& task) const {
+  const RouteCase& route_case = plan_.cases.at(task.index);
+  vehicle::CurvingOptions options;
+  if (task.start) {
+    options.start = task.start;
+    // A fresh solve (continuation from tangent track) costs the most and rarely succeeds
+    // where the warm start fails on the slightly worn profiles.
+    options.restart_on_failure = false;
+    // A warm start that converges takes 2-16 iterations (once 39 over a 10^5 km run); a stall
+    // spent all 60, 40 % of the run's time, before it kept the earlier balance anyway.
+    options.max_iterations = 20;
+  }
+  return vehicle::solve_vehicle_curving(way(route_case.reversed).vehicle,
+                                        models(route_case.reversed), route_case.curve, options);
+}
+
+std::vector<vehicle::VehicleCurving> RouteExecutor::cases(const RouteSolver& solver,
+                                                          const std::vector<CaseTask>& tasks) {
+  std::vector<vehicle::VehicleCurving> out(tasks.size());
+  tbb::parallel_for(std::size_t{0}, tasks.size(),
+                    [&](std::size_t t) { out[t] = solver.solve(tasks[t]); });
+  return out;
+}
+
+std::vector<PieceOutcome> RouteExecutor::pieces(const RouteSolver& solver,
+                                                const std::vector<PieceTask>& tasks) {
+  std::vector<PieceOutcome> out(tasks.size());
+  tbb::parallel_for(std::size_t{0}, tasks.size(),
+                    [&](std::size_t t) { out[t] = solver.simulate(tasks[t]); });
+  return out;
+}
+
 VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKernel& kernel,
                                            const std::vector<const profiles::Profile*>& wheels,
-                                           const VehicleCollective* previous, std::uint64_t draw) {
-  require(wheels.size() == 1 || wheels.size() == 2 || wheels.size() == 2 * vehicle::kWheelsets,
-          "worn wheel profiles", static_cast<double>(wheels.size()),
-          "give one (shared), two (left, right) or eight (left and right of each wheelset)");
+                                           const VehicleCollective* previous, std::uint64_t draw,
+                                           RouteExecutor* executor) {
+  RouteExecutor here;
+  RouteExecutor& execute = executor ? *executor : here;
+  const RouteSolver solver(run, kernel, wheels, draw);
   VehicleCollective out;
-  RoutePlan plan = route_plan(run);
-  out.cases = std::move(plan.cases);
-  out.pieces = std::move(plan.pieces);
-  if (run.time_domain.redraw) redraw_pieces(out.pieces, run, draw);
+  out.cases = solver.plan().cases;
+  out.pieces = solver.plan().pieces;
   if (previous)
     require(previous->curving.size() == out.cases.size(), "previous solution's cases",
             static_cast<double>(previous->curving.size()), "must be the route's");
-  const std::array<Models, 2> models = direction_models(run, kernel, wheels);
-  const RunningWay forward = running_way(run, false);
-  const std::optional<RunningWay> backward = run.direction == RunningDirection::forward
-                                                 ? std::nullopt
-                                                 : std::optional(running_way(run, true));
-  const std::array<const RunningWay*, 2> ways{&forward, backward ? &*backward : &forward};
-  out.curving.resize(out.cases.size());
-  std::vector<int> kept(out.cases.size(), 0);
-  tbb::parallel_for(std::size_t{0}, out.cases.size(), [&](std::size_t i) {
-    vehicle::CurvingOptions options;
-    if (previous) {
-      options.start = vehicle::placement_of(previous->curving[i]);
-      // A fresh solve (continuation from tangent track) costs the most and rarely succeeds
-      // where the warm start fails on the slightly worn profiles.
-      options.restart_on_failure = false;
-      // A warm start that converges takes 2-16 iterations (once 39 over a 10^5 km run); a stall
-      // spent all 60, 40 % of the run's time, before it kept the earlier balance anyway.
-      options.max_iterations = 20;
-    }
-    const std::size_t d = out.cases[i].reversed ? 1 : 0;
-    out.curving[i] =
-        vehicle::solve_vehicle_curving(ways[d]->vehicle, models[d], out.cases[i].curve, options);
-    if (previous && !out.curving[i].converged && previous->curving[i].converged) {
-      out.curving[i] = previous->curving[i];
-      kept[i] = 1;
-    }
+  // The critical speed's search (serial) beside the cases and the pieces (parallel), which stay
+  // on this thread: an executor spreading them over processes talks to them from here.
+  tbb::task_group critical_speed;
+  critical_speed.run([&] {
+    // The vehicle as it runs: backwards only, the physical wheelset 4 leads.
+    const bool reversed = run.direction == RunningDirection::reverse;
+    if (run.critical_speed)
+      find_critical_speed(solver.way(reversed), solver.models(reversed), previous, out);
   });
-  const std::vector<int> worn = run.worn_wheelsets();
-  for (std::size_t i = 0; i < out.cases.size(); ++i) {
-    if (!out.curving[i].converged) ++out.unconverged;
-    out.kept += kept[i];
-    if (out.cases[i].share == 0.0) continue;  // only starts a piece
-    const double weight = out.cases[i].share / static_cast<double>(worn.size());
-    for (int k : worn)
-      out.states.push_back(wheelset_state(out.cases[i], out.curving[i], k, weight));
+  try {
+    solve_cases(solver, previous, execute, out);
+    simulate_pieces(solver, execute, out);
+  } catch (...) {
+    critical_speed.wait();
+    throw;
   }
-  // The critical speed's search (serial) beside the pieces' simulations (parallel).
-  tbb::parallel_invoke(
-      [&] {
-        // The vehicle as it runs: backwards only, the physical wheelset 4 leads.
-        const std::size_t d = run.direction == RunningDirection::reverse ? 1 : 0;
-        if (run.critical_speed) find_critical_speed(*ways[d], models[d], previous, out);
-      },
-      [&] {
-        simulate_pieces({&models[0], &models[1]}, ways, worn, out);
-      });
+  critical_speed.wait();
   return out;
 }
 

@@ -24,6 +24,7 @@
 #include "wheelwear/profiles/wear_update.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
+#include "worn_profile.hpp"
 
 namespace wheelwear::pipeline {
 
@@ -31,6 +32,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using detail::new_profiles;
 using detail::scalar;
 using detail::vector;
 
@@ -38,16 +40,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 using Clock = std::chrono::steady_clock;
 
-// A worn wheel profile as the run carries it: the points it is built from (exactly what the
-// file records, so a resumed run rebuilds the identical profile).
-struct WornProfile {
-  std::string name;  // group name in the file
-  profiles::ProfileInfo info;
-  profiles::CurveOptions curve;
-  profiles::PointList points;
-
-  profiles::Profile build() const { return profiles::Profile(points, info, curve); }
-};
+using detail::WornProfile;
 
 // What a vehicle run carries from step to step: its last solve (the collective, and where each
 // case's bodies were, to start the next solve from).
@@ -70,12 +63,21 @@ struct LoopStart {
 
 // Solves the vehicle again when the wear since its last solve reaches the scene's depth (at
 // every step for depth 0), at wear step `step`. Returns whether it solved.
+// Its cases and time-domain pieces are spread over the job's processes where the run has a
+// distributor.
 bool update_vehicle(const VehicleRun& run, const StateKernel& kernel,
+                    const std::vector<WornProfile>& worn,
                     const std::vector<const profiles::Profile*>& wheels, int step,
-                    VehicleCarry& carry) {
+                    StepDistributor* distributor, VehicleCarry& carry) {
   if (carry.solved && carry.depth_since_solve < run.resolve_depth) return false;
+  const auto draw = static_cast<std::uint64_t>(step);
+  if (distributor) {
+    std::vector<profiles::PointList> points;
+    for (const WornProfile& w : worn) points.push_back(w.points);
+    distributor->prepare_route(points, draw);
+  }
   carry.last = solve_vehicle_collective(run, kernel, wheels, carry.solved ? &carry.last : nullptr,
-                                        static_cast<std::uint64_t>(step));
+                                        draw, distributor);
   carry.depth_since_solve = 0.0;
   carry.solved = true;
   return true;
@@ -101,20 +103,6 @@ std::string dropped_description(const std::string& name) {
                 : what + "; their states are not worn";
 }
 
-std::vector<WornProfile> new_profiles(const Scene& scene) {
-  const profiles::Profile initial =
-      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
-  WornProfile w{"wheel", initial.info(), initial.curve_options(), initial.knot_points()};
-  // The profile is re-interpolated through its knots: smoothing was applied once, on reading.
-  w.curve.smoothing_length = 0.0;
-  std::vector<WornProfile> worn;
-  for (const std::string& name : profile_names(profile_layout(scene))) {
-    worn.push_back(w);
-    worn.back().name = name;
-  }
-  return worn;
-}
-
 // EN 15313's parameters of a wheel profile; NaN for a profile worn past their reference points.
 profiles::WheelParameters measured_parameters(const profiles::Profile& wheel) {
   try {
@@ -126,11 +114,30 @@ profiles::WheelParameters measured_parameters(const profiles::Profile& wheel) {
   }
 }
 
-RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, ResultsFile& file,
-                LoopStart start, const fs::path& scene_directory, bool builtin,
-                const RunOptions& options) {
+// The evaluation of `specs` on `wheels` (built from `worn`), spread over the job's processes
+// where the run has a distributor; the same bits either way.
+CollectiveWear evaluate_step(const CollectiveEvaluator& evaluator,
+                             const std::vector<WornProfile>& worn,
+                             const std::vector<const profiles::Profile*>& wheels,
+                             const std::vector<WheelsetStateSpec>& specs, bool scene_states,
+                             StepDistributor* distributor) {
+  if (!distributor) return evaluator.evaluate(wheels, specs);
+  std::vector<profiles::PointList> points;
+  for (const WornProfile& w : worn) points.push_back(w.points);
+  return evaluator.reduce(wheels, specs,
+                          distributor->outcomes(evaluator, points, wheels, specs, scene_states));
+}
+
+RunSummary loop(const Scene& scene, std::string_view scene_text,
+                const CollectiveEvaluator& evaluator, ResultsFile& file, LoopStart start,
+                const fs::path& scene_directory, bool builtin, const RunOptions& options) {
   const auto t0 = Clock::now();
   RunSummary summary;
+  if (options.distributor) {
+    options.distributor->start({builtin, std::string(scene_text), scene_directory, scene.inputs},
+                               scene);
+    summary.processes = options.distributor->processes();
+  }
   int step = start.step;
   double distance = start.distance;
   std::vector<WornProfile> worn = std::move(start.worn);
@@ -149,8 +156,8 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     for (const auto& w : wheels) pointers.push_back(&w);
     bool vehicle_solved = false;
     if (scene.vehicle_run) {
-      vehicle_solved =
-          update_vehicle(*scene.vehicle_run, evaluator.kernel(), pointers, step, carry);
+      vehicle_solved = update_vehicle(*scene.vehicle_run, evaluator.kernel(), worn, pointers, step,
+                                      options.distributor, carry);
       if (vehicle_solved) ++summary.vehicle_solves;
     }
     // The profiles' in-service parameters and limits, known before the step's states: a step
@@ -174,7 +181,12 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     const std::vector<WheelsetStateSpec>& specs = scene.vehicle_run ? carry.last.states
                                                   : scene.hook      ? hook.states
                                                                     : scene.states;
-    const CollectiveWear cw = evaluator.evaluate(pointers, specs);
+    const CollectiveWear cw = evaluate_step(evaluator, worn, pointers, specs,
+                                            !scene.vehicle_run && !scene.hook, options.distributor);
+    if (options.distributor) {
+      summary.gathered_bytes += options.distributor->gathered_bytes();
+      summary.gathered_states += options.distributor->gathered_states();
+    }
     summary.evaluations += specs.size();
     summary.geometry_solves += cw.geometry_solves;
 
@@ -276,7 +288,9 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     }
     if (scene.state_summaries) detail::add_state_summaries(g, cw.states);
     if (scene.tgamma_maps) detail::add_tgamma_maps(g, cw.states, scene.grid_nx, scene.grid_ny);
+    const auto writing = Clock::now();
     file.append_step(g);
+    summary.writing += std::chrono::duration<double>(Clock::now() - writing).count();
 
     summary.steps = step;
     summary.distance = distance;
@@ -305,6 +319,7 @@ RunSummary loop(const Scene& scene, const CollectiveEvaluator& evaluator, Result
     ++step;
   }
   summary.elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
+  if (options.distributor) summary.waited = options.distributor->waited_seconds();
   file.write_run_info(detail::run_info(scene_directory, builtin, summary.elapsed,
                                        summary.evaluations, start.step == 0 ? -1 : start.step - 1,
                                        options.program));
@@ -329,6 +344,20 @@ std::string table_hash(const Scene& scene) {
 }
 
 }  // namespace
+
+std::vector<WornProfile> detail::new_profiles(const Scene& scene) {
+  const profiles::Profile initial =
+      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
+  WornProfile w{"wheel", initial.info(), initial.curve_options(), initial.knot_points()};
+  // The profile is re-interpolated through its knots: smoothing was applied once, on reading.
+  w.curve.smoothing_length = 0.0;
+  std::vector<WornProfile> worn;
+  for (const std::string& name : profile_names(profile_layout(scene))) {
+    worn.push_back(w);
+    worn.back().name = name;
+  }
+  return worn;
+}
 
 fs::path hook_directory(const fs::path& output) {
   fs::path d = output;
@@ -357,7 +386,8 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
       {{"creep_table_sha256", table_hash(scene)}},
       detail::run_info(scene_directory, builtin_scene, 0.0, 0, -1, options.program),
       detail::stored_inputs(scene));
-  return loop(scene, evaluator, file, std::move(start), scene_directory, builtin_scene, options);
+  return loop(scene, scene_text, evaluator, file, std::move(start), scene_directory, builtin_scene,
+              options);
 }
 
 RunSummary run_scene_file(const fs::path& scene, const fs::path& output,
@@ -436,7 +466,8 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
     LoopStart start{0, 0.0, new_profiles(scene)};
     start.initial = start.worn;
     start.hook_directory = hook_directory(output);
-    return loop(scene, evaluator, file, std::move(start), *directory, builtin, options);
+    return loop(scene, file.scene_text(), evaluator, file, std::move(start), *directory, builtin,
+                options);
   }
   LoopStart start{last + 1, file.read_step_array(last, "distance").at(0) + step_distance,
                   new_profiles(scene)};
@@ -489,7 +520,8 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
     carry.depth_since_solve = file.read_step_array(last, "vehicle/depth_since_solve").at(0);
   }
   if (scene.hook) start.hook = detail::read_hook_carry(file, last, output);
-  return loop(scene, evaluator, file, std::move(start), *directory, builtin, options);
+  return loop(scene, file.scene_text(), evaluator, file, std::move(start), *directory, builtin,
+              options);
 }
 
 }  // namespace wheelwear::pipeline

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "support/run_command.hpp"
+#include "thread_group.hpp"
 #include "wear_run_support.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
@@ -219,6 +220,79 @@ TEST_F(SweepTest, AFileOfAnotherSceneFailsItsRunNamingTheFix) {
                                 "output_dir"),
             std::string::npos)
       << rows[0].status;
+}
+
+}  // namespace
+}  // namespace wheelwear::pipeline
+
+namespace wheelwear::pipeline {
+namespace {
+
+// Spread over processes (threads standing in for them), the runs are shared out and process 0
+// writes the summary of all; a process that refuses the inputs stops all of them before any run
+// starts (none left waiting for it), and process 0 says which process and why.
+TEST_F(SweepTest, SpreadOverProcessesAllRunOrAllStop) {
+  const Sweep sweep = read_sweep(sweep_file("\"contact.friction\" = [0.25, 0.3, 0.4]\n"));
+  std::vector<std::vector<SweepRow>> rows(2);
+  run_thread_group(
+      2,
+      [&](ProcessGroup& group) {
+        SweepOptions options;
+        options.group = &group;
+        try {
+          rows[0] = run_sweep(sweep, options);
+        } catch (const std::exception& e) {
+          ADD_FAILURE() << e.what();
+        }
+      },
+      [&](ProcessGroup& group) {
+        SweepOptions options;
+        options.group = &group;
+        rows[1] = run_sweep(sweep, options);
+      });
+  ASSERT_EQ(rows[0].size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(rows[0][i].status, "done") << i;
+    EXPECT_EQ(rows[0][i].index, i);
+    EXPECT_TRUE(rows[0][i].has_headline) << i;  // process 0 read process 1's run's file too
+    EXPECT_TRUE(rows[0][i].headline.complete) << i;
+  }
+  EXPECT_EQ(rows[1][1].status, "done");  // process 1 ran run 2, and only that one
+  EXPECT_TRUE(rows[1][0].status.empty());
+  EXPECT_EQ(csv(dir_ / "runs" / "summary.csv").size(), 4u);
+
+  // Process 1 cannot read the base scene (as on a node without the shared file system).
+  Sweep elsewhere = sweep;
+  elsewhere.base_scene = dir_ / "missing" / "base.toml";
+  elsewhere.output_dir = dir_ / "runs2";
+  Sweep here = sweep;
+  here.output_dir = dir_ / "runs2";
+  std::string said;
+  bool other_stopped = false;
+  run_thread_group(
+      2,
+      [&](ProcessGroup& group) {
+        SweepOptions options;
+        options.group = &group;
+        try {
+          run_sweep(here, options);
+        } catch (const InputError& e) {
+          said = e.what();
+        }
+      },
+      [&](ProcessGroup& group) {
+        SweepOptions options;
+        options.group = &group;
+        try {
+          run_sweep(elsewhere, options);
+        } catch (const std::exception&) {
+          other_stopped = true;
+        }
+      });
+  EXPECT_TRUE(other_stopped);
+  EXPECT_NE(said.find("process 1: "), std::string::npos) << said;
+  EXPECT_NE(said.find("missing"), std::string::npos) << said;
+  EXPECT_FALSE(fs::exists(dir_ / "runs2" / "run_0001.h5"));  // no run started
 }
 
 }  // namespace

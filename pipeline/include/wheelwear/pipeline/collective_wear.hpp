@@ -105,6 +105,12 @@ void reduce_states(const Scene& scene, const std::vector<WheelsetStateSpec>& spe
 void reduce_states(const Scene& scene, const std::vector<StateOutcome>& states,
                    CollectiveWear& out);
 
+/// Outcomes of some of a collective's states, in the order they were asked for.
+struct StateOutcomes {
+  std::vector<StateOutcome> states;
+  std::size_t geometry_solves = 0;  ///< distinct wheel/rail contacts solved for them
+};
+
 /// The fixed part of a run: the kernel (rail, track, models, law) and the collective.
 /// Evaluations are deterministic: the same profiles give bit-identical results for any number
 /// of threads.
@@ -124,6 +130,20 @@ class CollectiveEvaluator {
   CollectiveWear evaluate(const std::vector<const profiles::Profile*>& wheels,
                           const std::vector<WheelsetStateSpec>& specs) const;
 
+  /// Which of `ranks` processes evaluates each state of `specs` when a step is spread over
+  /// processes (distributed_run.hpp): whole contact geometries dealt out in turn, so that states
+  /// sharing a geometry stay together (none is solved twice) and the dearer curve states are
+  /// spread evenly. One rank (0 ... ranks - 1) per state.
+  std::vector<int> owners(const std::vector<WheelsetStateSpec>& specs, int ranks) const;
+  /// The outcomes of states `which` (indices into `specs`) on `wheels`, TBB-parallel; each is
+  /// bit-identical to its outcome in evaluate(), whatever else is asked with it.
+  StateOutcomes outcomes(const std::vector<const profiles::Profile*>& wheels,
+                         const std::vector<WheelsetStateSpec>& specs,
+                         const std::vector<std::size_t>& which) const;
+  /// The evaluation from the outcomes of every state of `specs`, in order (reduce_states).
+  CollectiveWear reduce(const std::vector<const profiles::Profile*>& wheels,
+                        const std::vector<WheelsetStateSpec>& specs, StateOutcomes all) const;
+
   const Scene& scene() const { return kernel_.scene(); }
   const StateKernel& kernel() const { return kernel_; }
   const profiles::Profile& rail() const { return kernel_.rail(); }
@@ -133,6 +153,8 @@ class CollectiveEvaluator {
   }
 
  private:
+  void check_wheels(const std::vector<const profiles::Profile*>& wheels) const;
+
   StateKernel kernel_;
   bool reuse_geometry_ = true;
 };

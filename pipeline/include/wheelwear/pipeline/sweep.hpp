@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "wheelwear/pipeline/process_group.hpp"
 #include "wheelwear/pipeline/run_headline.hpp"
 #include "wheelwear/pipeline/wear_run.hpp"
 
@@ -60,6 +61,10 @@ struct SweepOptions {
   RunOptions run;
   /// After each run, from the thread that ran it, serialised: the row and how many are done.
   std::function<void(const SweepRow&, std::size_t done, std::size_t total)> finished;
+  /// The processes of an MPI job to spread the runs over (each every size()-th run, its own
+  /// runs in parallel on its threads); process 0 then hears of the others' runs, calls
+  /// `finished` for them and writes the summary. Unset: this process runs them all. Not owned.
+  ProcessGroup* group = nullptr;
 };
 
 /// Runs every run of `sweep` not completed yet — a run whose file is complete is skipped, one
@@ -68,7 +73,8 @@ struct SweepOptions {
 /// where the HDF5 library is not thread-safe), each run itself parallel; a failing run is
 /// recorded and the others go on. Writes output_dir/summary.csv (atomically) and returns its
 /// rows in run order. Throws InputError before any run starts when the base scene or a run's
-/// scene is refused.
+/// scene is refused. Spread over the processes of options.group, only process 0 writes the
+/// summary and returns every row; the others return their own runs' rows (the rest default).
 std::vector<SweepRow> run_sweep(const Sweep& sweep, const SweepOptions& options);
 
 /// The summary's columns, with units in their names (docs/sweeps.md).

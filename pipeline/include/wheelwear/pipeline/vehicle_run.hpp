@@ -14,8 +14,10 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -157,20 +159,101 @@ struct VehicleCollective {
   std::string critical_speed_note = "not computed";
 };
 
+/// The states of the four wheelsets (in order of travel) in a solved case, each weighted 1
+/// (wheelset_state): where a time-domain piece starts, they stand in for the part of its stretch
+/// a simulation that stopped early did not reach.
+using StartStates = std::array<WheelsetStateSpec, vehicle::kWheelsets>;
+StartStates start_states(const RouteCase& route_case, const vehicle::VehicleCurving& curving);
+
+/// piece_states with the start case's states given as they are (start_states).
+std::vector<WheelsetStateSpec> piece_states(const DynamicPiece& piece,
+                                            const vehicle::VehicleMotion& motion,
+                                            const StartStates& start, const std::vector<int>& worn,
+                                            PieceRun& summary);
+
+/// One running condition to solve: its index in the plan's cases, and where its bodies start:
+/// the same condition's solution on the profiles before (then at most 20 Newton iterations and
+/// no fresh start: a warm start that fails keeps the earlier solution), or, unset, centred and
+/// radial with the curve reached by continuation.
+struct CaseTask {
+  std::size_t index = 0;
+  std::optional<vehicle::VehiclePlacement> start;
+  double cost = 1.0;  ///< expected, relative to the others (for sharing the tasks out)
+};
+
+/// One piece to simulate: its index in the plan's pieces, where every body starts (its start
+/// case's solution) and its wheelsets' states there.
+struct PieceTask {
+  std::size_t piece = 0;
+  vehicle::VehiclePlacement start;
+  StartStates start_states;
+  double cost = 1.0;  ///< expected, relative to the others (for sharing the tasks out)
+};
+
+/// What a piece's simulation gives: its summary and its states (piece_states).
+struct PieceOutcome {
+  PieceRun run;
+  std::vector<WheelsetStateSpec> states;
+};
+
+/// What a vehicle solve needs besides each case's and piece's start: the plan of `run` (for
+/// draw `draw`), its running ways, and the contact models of its wheelsets on `wheels`. Built
+/// from the same inputs, it solves a case and simulates a piece to the same bits in any
+/// process.
+class RouteSolver {
+ public:
+  /// The contact models of the four wheelsets in order of travel: the physical wheelset k, or
+  /// 3 - k running backwards with its sides swapped.
+  using Models = std::array<vehicle::WheelsetModel, vehicle::kWheelsets>;
+
+  RouteSolver(const VehicleRun& run, const StateKernel& kernel,
+              const std::vector<const profiles::Profile*>& wheels, std::uint64_t draw);
+
+  const RoutePlan& plan() const { return plan_; }
+  const Models& models(bool reversed) const { return models_[reversed ? 1 : 0]; }
+  const RunningWay& way(bool reversed) const;
+  /// The wheelsets the run wears (VehicleRun::worn_wheelsets).
+  const std::vector<int>& worn_wheelsets() const { return worn_; }
+  /// Solves the vehicle quasi-statically in the case of `task`.
+  vehicle::VehicleCurving solve(const CaseTask& task) const;
+  /// Simulates the piece of `task` from its start.
+  PieceOutcome simulate(const PieceTask& task) const;
+
+ private:
+  RoutePlan plan_;
+  std::vector<int> worn_;
+  std::array<Models, 2> models_;
+  std::array<std::optional<RunningWay>, 2> ways_;
+};
+
+/// Where a vehicle solve's cases and pieces are worked out, results in the tasks' order: in
+/// this process, TBB-parallel (the default), or spread over the processes of a job
+/// (StepDistributor).
+class RouteExecutor {
+ public:
+  virtual ~RouteExecutor() = default;
+  virtual std::vector<vehicle::VehicleCurving> cases(const RouteSolver& solver,
+                                                     const std::vector<CaseTask>& tasks);
+  virtual std::vector<PieceOutcome> pieces(const RouteSolver& solver,
+                                           const std::vector<PieceTask>& tasks);
+};
+
 /// Solves `run`'s vehicle in every case of its route on `wheels` (one profile for both wheels
 /// of every wheelset, left and right, or left and right of each physical wheelset in the forward
 /// order of travel: ProfileLayout), then simulates it through every piece from its start
-/// case's solution, TBB-parallel over the cases and over the pieces, and finds its linear
-/// critical speed (searched from the previous solution's where there is one). With `previous` (the
-/// same route's solution on earlier profiles) each case starts where it was, and is not solved
-/// afresh where that fails: a case that converged then keeps that solution (counted in `kept`),
-/// one that did not goes on from its last iterate. `draw`: the wear step the vehicle is solved
-/// at; with TimeDomainKeys::redraw the pieces' generated irregularities are that step's
-/// (redraw_pieces). Deterministic for any number of threads. Throws InputError on bad input.
+/// case's solution, TBB-parallel over the cases and over the pieces (or with `executor`), and
+/// finds its linear critical speed (searched from the previous solution's where there is one).
+/// With `previous` (the same route's solution on earlier profiles) each case starts where it
+/// was, and is not solved afresh where that fails: a case that converged then keeps that
+/// solution (counted in `kept`), one that did not goes on from its last iterate. `draw`: the wear
+/// step the vehicle is solved at; with TimeDomainKeys::redraw the pieces' generated
+/// irregularities are that step's (redraw_pieces). Deterministic for any number of threads or
+/// processes. Throws InputError on bad input.
 VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKernel& kernel,
                                            const std::vector<const profiles::Profile*>& wheels,
                                            const VehicleCollective* previous = nullptr,
-                                           std::uint64_t draw = 0);
+                                           std::uint64_t draw = 0,
+                                           RouteExecutor* executor = nullptr);
 
 /// The pieces' seeds of draw `draw` (TimeDomainKeys::redraw): each piece's section in its
 /// direction (sections + i running backwards), 2 sections further on per draw, so that no two

@@ -8,6 +8,7 @@
 
 #include "wheelwear/core/version.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
+#include "wheelwear/pipeline/distributed_run.hpp"
 #include "wheelwear/pipeline/scene.hpp"
 
 namespace wheelwear::pipeline {
@@ -42,6 +43,9 @@ struct RunOptions {
   /// The program and version that writes the run, recorded in /run_info/program (the command
   /// line gives its version and commit).
   std::string program = std::string("wheelwear library ") + core::version();
+  /// Spreads each step's states over the processes of a job (distributed_run.hpp); unset: this
+  /// process evaluates them all. Not owned.
+  StepDistributor* distributor = nullptr;
 };
 
 /// What a run did.
@@ -55,6 +59,13 @@ struct RunSummary {
   std::size_t patches = 0;          ///< contact patches solved by this process
   std::size_t table_patches = 0;    ///< of them, with totals from the book of tables ("best")
   int vehicle_solves = 0;           ///< a vehicle run's solves of its vehicle by this process
+  int processes = 1;                ///< processes the steps were spread over
+  std::size_t gathered_bytes = 0;   ///< outcomes gathered from the other processes, all steps
+  std::size_t gathered_states = 0;  ///< the states they were the outcomes of, all steps
+  /// Of `elapsed`, process 0's wait for the other processes (StepDistributor::waited_seconds)
+  /// and the writing of the steps to the results file [s].
+  double waited = 0.0;
+  double writing = 0.0;
 };
 
 /// The directory beside `output` where a co-simulation hook's calls keep their files
