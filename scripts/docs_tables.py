@@ -370,7 +370,8 @@ def cluster_scaling():
                       f"writing, {sig(r['gathered_mb_per_step'], 2)} MB per step gathered"
                       if r["processes"] != "1" else
                       f"{sig(r['writing_seconds'], 2)} s writing")
-            what = f"run: {r['scene']} ({r['steps']} steps, {r['states_per_step']} states each)"
+            what = (f"run: {r['scene']} ({r['steps']} wear steps, {r['states_per_step']} states "
+                    "each)")
         else:
             if r["processes"] == "1":
                 reference[key] = wall
