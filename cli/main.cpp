@@ -89,6 +89,13 @@ int main(int argc, char** argv) {
   if (!job.leader() && command != "run" && command != "sweep") return job.end(0);
   job.prepare(command);
   int code = run_command_line(argc, argv);
-  if (job.owes_service()) code = job.serve();  // process 0's run, whatever this parse gave
+  if (job.owes_service()) {  // process 0's run, whatever this parse gave
+    try {
+      code = job.serve();
+    } catch (const std::exception& error) {
+      say("failed", error.what());
+      code = 3;
+    }
+  }
   return job.end(code);
 }

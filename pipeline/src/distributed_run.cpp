@@ -139,6 +139,7 @@ StateOutcomes StepDistributor::outcomes(const CollectiveEvaluator& evaluator,
   tbb::this_task_arena::isolate([&] { mine = evaluator.outcomes(wheels, specs, own); });
   const auto waiting = Clock::now();
   const std::vector<std::string> parts = group_.gather({});
+  busy_ = false;  // the others are free again; what follows is this process's alone
 
   StateOutcomes all;
   all.states.resize(specs.size());
@@ -160,7 +161,6 @@ StateOutcomes StepDistributor::outcomes(const CollectiveEvaluator& evaluator,
     for (std::size_t k = 0; k < which.size(); ++k) all.states[which[k]] = std::move(theirs[k]);
   }
   waited_seconds_ += seconds_since(waiting);
-  busy_ = false;
   return all;
 }
 
@@ -191,6 +191,7 @@ std::vector<Result> StepDistributor::spread(std::uint64_t kind, const std::vecto
   tbb::this_task_arena::isolate([&] { mine = compute(tasks_of(tasks, owner, 0)); });
   const auto waiting = Clock::now();
   const std::vector<std::string> parts = group_.gather({});
+  busy_ = false;  // the others are free again; what follows is this process's alone
   std::vector<Result> all(tasks.size());
   for (int rank = 0; rank < group_.size(); ++rank) {
     std::vector<Result> theirs;
@@ -212,7 +213,6 @@ std::vector<Result> StepDistributor::spread(std::uint64_t kind, const std::vecto
       if (owner[t] == rank) all[t] = std::move(theirs[k++]);
   }
   waited_seconds_ += seconds_since(waiting);
-  busy_ = false;
   return all;
 }
 

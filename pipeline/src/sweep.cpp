@@ -311,23 +311,28 @@ void read_row_headline(const Sweep& sweep, SweepRow& row) {
 // stops them all. Process 0 keeps its own exception, or gets the first other process's reason
 // as an InputError naming it; the others are left with an exception of their own.
 void agree_to_start(ProcessGroup& group, std::exception_ptr& refused) {
-  std::string reason;
+  // "+" and nothing: ready; "-" and the reason: refused (a reason may be empty).
+  std::string answer = "+";
   if (refused) {
+    answer = "-";
     try {
       std::rethrow_exception(refused);
     } catch (const std::exception& e) {
-      reason = e.what();
+      answer += e.what();
     } catch (...) {
-      reason = "an unknown error";
+      answer += "an unknown error";
     }
   }
-  std::string first;
-  const std::vector<std::string> reasons = group.gather(reason);
-  for (std::size_t r = 0; r < reasons.size() && first.empty(); ++r)
-    if (!reasons[r].empty())
-      first = r == 0 ? reasons[r] : "process " + std::to_string(r) + ": " + reasons[r];
+  std::string first;  // "+" where all are ready, else "-" and the first refusal's reason
+  const std::vector<std::string> answers = group.gather(answer);
+  if (group.rank() == 0) {
+    first = "+";
+    for (std::size_t r = 0; r < answers.size() && first == "+"; ++r)
+      if (answers[r].starts_with("-"))
+        first = r == 0 ? answers[r] : "-process " + std::to_string(r) + ": " + answers[r].substr(1);
+  }
   group.broadcast(first);
-  if (!first.empty() && !refused) refused = std::make_exception_ptr(InputError(first));
+  if (first != "+" && !refused) refused = std::make_exception_ptr(InputError(first.substr(1)));
 }
 
 // The rows of the runs of the other processes to process 0 (their status and time; their

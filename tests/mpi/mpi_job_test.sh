@@ -7,6 +7,8 @@
 #   errors       a bad scene: one message, exit status 2; a process that cannot read the book
 #                of tables ends the job with its own message (MPI_Abort), no hang
 #   sweep        a sweep over 2 processes: each run's file and the summary as on one process
+#   vehicle      a vehicle run on a short route (its conditions and pieces spread at every
+#                solve) over 2 and 3 processes: files identical to one process's
 # Files are compared with h5diff, /run_info (times, process count) excluded. The options are
 # Open MPI's mpirun (Debian's MPI); its processes are not bound to cores, so that tests running
 # at the same time do not pile onto the same ones.
@@ -107,6 +109,52 @@ case $case_name in
     strip() { cut -d, -f1,3- "$1" | rev | cut -d, -f2- | rev; }
     diff <(strip one/summary.csv) <(strip np2/summary.csv) || fail "summaries differ"
     [[ $(wc -l <np2/summary.csv) == 4 ]] || fail "summary rows"
+    ;;
+  vehicle)
+    cat >route.toml <<'ROUTE'
+[route]
+name = "short"
+speed_m_s = 40
+[[section]]
+kind = "curve"
+length_m = 1000
+radius_m = 3000
+cant_m = 0.03
+friction_flange = 0.1
+[[section]]
+kind = "transition"
+length_m = 60
+radius_m = 0
+cant_m = 0
+[[section]]
+kind = "tangent"
+length_m = 940
+ROUTE
+    cat >vehicle.toml <<'SCENE'
+[contact]
+grid_nx = 12
+grid_ny = 12
+[run]
+distance_m = 20e3
+step_distance_m = 10e3
+max_depth_step_m = 1e-3
+[vehicle]
+file = "default"
+resolve_depth_m = 0
+[route]
+file = "route.toml"
+[time_domain]
+tangent_length_m = 40
+run_in_m = 10
+sample_distance_m = 2
+SCENE
+    "$wheelwear" run vehicle.toml -o one.h5 -q >/dev/null
+    for n in 2 3; do
+      "${mpi[@]}" -np "$n" "$wheelwear" run vehicle.toml -o "np$n.h5" -q >"np$n.out" 2>"np$n.err" ||
+        fail "-np $n: exit status $?"
+      same one.h5 "np$n.h5"
+    done
+    [[ $(h5ls -r one.h5 | grep -c "vehicle/cases/converged ") == 3 ]] || fail "not a 3-step vehicle run"
     ;;
   *)
     fail "unknown case $case_name"

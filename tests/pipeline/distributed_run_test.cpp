@@ -72,14 +72,15 @@ TEST_F(DistributedRunTest, FilesAreBitIdenticalToOneProcessForAnyNumber) {
   }
 }
 
-// A vehicle run (its states made by process 0 at each step and sent along) over 3 processes,
-// stopped after its first step and resumed over 2: the file of the uninterrupted single run.
+// A vehicle run (its conditions and pieces spread at each solve, its critical speed searched by
+// process 0 meanwhile, its states sent along) over 3 processes, stopped after its first step
+// and resumed over 2: the file of the uninterrupted single run.
 TEST_F(DistributedRunTest, VehicleRunStoppedAndResumedWithAnotherNumberOfProcesses) {
   write("route.toml", kShortRoute);
   const std::string text =
       "[contact]\ngrid_nx = 12\ngrid_ny = 12\n[run]\ndistance_m = 2000\nstep_distance_m = 1000\n"
       "max_depth_step_m = 1e-3\n[vehicle]\nfile = \"default\"\nresolve_depth_m = 0\n"
-      "critical_speed = false\n[route]\nfile = \"route.toml\"\n[time_domain]\n"
+      "[route]\nfile = \"route.toml\"\n[time_domain]\n"
       "tangent_length_m = 40\nrun_in_m = 10\nsample_distance_m = 2\n";
   const fs::path one = dir_ / "one.h5", stopped = dir_ / "stopped.h5";
   run(text, one);

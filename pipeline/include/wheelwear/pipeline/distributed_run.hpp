@@ -56,8 +56,8 @@ class StepDistributor final : public RouteExecutor {
   /// `points` for `draw` (their contact tables) while process 0 builds its own.
   void prepare_route(const std::vector<profiles::PointList>& points, std::uint64_t draw);
   /// The vehicle solve's cases and pieces (RouteExecutor) spread over the processes, after
-  /// prepare_route on the same profiles: every size()-th task each, results in the tasks'
-  /// order.
+  /// prepare_route on the same profiles: the dearest tasks first (CaseTask::cost,
+  /// PieceTask::cost), each to the least loaded process; results in the tasks' order.
   std::vector<vehicle::VehicleCurving> cases(const RouteSolver& solver,
                                              const std::vector<CaseTask>& tasks) override;
   std::vector<PieceOutcome> pieces(const RouteSolver& solver,
@@ -70,7 +70,8 @@ class StepDistributor final : public RouteExecutor {
   bool busy() const { return busy_; }
   bool started() const { return started_; }
   int processes() const { return group_.size(); }
-  /// Bytes of outcomes gathered from the other processes at the last step.
+  /// Bytes of state outcomes gathered from the other processes at the last step (a vehicle
+  /// solve's cases and pieces not counted).
   std::size_t gathered_bytes() const { return gathered_bytes_; }
   /// The states whose outcomes they were.
   std::size_t gathered_states() const { return gathered_states_; }
