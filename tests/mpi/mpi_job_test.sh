@@ -6,7 +6,7 @@
 #                resume, and resumed over 2 gives the file of an uninterrupted run
 #   errors       a bad scene: one message, exit status 2; a process that cannot read the book
 #                of tables ends the job with its own message (MPI_Abort), no hang
-#   sweep        a sweep over 2 processes: each run's file and the summary as on one process
+#   sweep        a sweep over 2 and 3 processes: each run's file and the summary as on one process
 #   vehicle      a vehicle run on a short route (its conditions and pieces spread at every
 #                solve) over 2 and 3 processes: files identical to one process's
 # Files are compared with h5diff, /run_info (times, process count) excluded. The options are
@@ -99,16 +99,19 @@ case $case_name in
     scene 10e3 5e3 sweep_base.toml
     printf 'scene = "base/sweep_base.toml"\noutput_dir = "%s"\n[vary]\n"contact.friction" = [0.25, 0.3, 0.4]\n' \
       one >one.toml
-    sed 's/output_dir = "one"/output_dir = "np2"/' one.toml >np2.toml
     "$wheelwear" sweep one.toml -q >/dev/null
-    "${mpi[@]}" -np 2 "$wheelwear" sweep np2.toml -q >np2.out 2>np2.err || fail "sweep: exit status $?"
-    cat np2.out
-    grep -q "3 runs, 0 failed" np2.out || fail "sweep summary line"
-    for run in run_0001.h5 run_0002.h5 run_0003.h5; do same "one/$run" "np2/$run"; done
     # The summary without its last column (each run's seconds) and the file names' folder.
     strip() { cut -d, -f1,3- "$1" | rev | cut -d, -f2- | rev; }
-    diff <(strip one/summary.csv) <(strip np2/summary.csv) || fail "summaries differ"
-    [[ $(wc -l <np2/summary.csv) == 4 ]] || fail "summary rows"
+    for n in 2 3; do
+      sed "s/output_dir = \"one\"/output_dir = \"np$n\"/" one.toml >"np$n.toml"
+      "${mpi[@]}" -np "$n" "$wheelwear" sweep "np$n.toml" -q >"np$n.out" 2>"np$n.err" ||
+        fail "sweep over $n: exit status $?"
+      cat "np$n.out"
+      grep -q "3 runs, 0 failed" "np$n.out" || fail "sweep over $n: summary line"
+      for run in run_0001.h5 run_0002.h5 run_0003.h5; do same "one/$run" "np$n/$run"; done
+      diff <(strip one/summary.csv) <(strip "np$n/summary.csv") || fail "summaries differ ($n)"
+      [[ $(wc -l <"np$n/summary.csv") == 4 ]] || fail "summary rows ($n)"
+    done
     ;;
   vehicle)
     cat >route.toml <<'ROUTE'
