@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "stored_inputs.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
 #include "wire.hpp"
@@ -96,14 +97,9 @@ std::vector<profiles::Profile> rebuilt(const std::vector<detail::WornProfile>& t
 
 Scene parse_source(const SceneSource& source) {
   if (source.builtin) return default_scene();
-  auto stored = std::make_shared<std::map<std::string, std::string>>();
-  for (const SceneInput& in : source.inputs) (*stored)[in.path] = in.content;
-  return parse_scene(source.text, source.directory,
-                     [stored](const std::filesystem::path& path) -> std::optional<std::string> {
-                       const auto it = stored->find(path.string());
-                       if (it == stored->end()) return std::nullopt;
-                       return it->second;
-                     });
+  std::map<std::string, std::string> files;
+  for (const SceneInput& in : source.inputs) files[in.path] = in.content;
+  return parse_scene(source.text, source.directory, detail::stored_files(std::move(files)));
 }
 
 void StepDistributor::start(const SceneSource& source, const Scene& scene) {
@@ -303,7 +299,7 @@ class StepServer {
     const std::vector<std::size_t> mine =
         states_by_rank(evaluator_->owners(specs, group_.size()),
                        group_.size())[static_cast<std::size_t>(group_.rank())];
-    const StateOutcomes outcomes = evaluator_->outcomes(pointers(wheels), specs, mine);
+    const StateOutcomes outcomes = evaluator_->outcomes(detail::pointers_to(wheels), specs, mine);
     detail::WireWriter w;
     w.u64(outcomes.geometry_solves);
     detail::write(w, outcomes.states);
@@ -317,7 +313,7 @@ class StepServer {
     route_wheels_ = rebuilt(templates_, detail::read_point_lists(r));
     const std::uint64_t draw = r.u64();
     solver_ = std::make_unique<RouteSolver>(*scene_->vehicle_run, evaluator_->kernel(),
-                                            pointers(route_wheels_), draw);
+                                            detail::pointers_to(route_wheels_), draw);
   }
 
   // This process's share of `tasks` (by the owners `r` holds next), worked out with `compute`,
@@ -331,13 +327,6 @@ class StepServer {
     detail::WireWriter w;
     detail::write(w, compute(tasks_of(tasks, owner, group_.rank())));
     group_.gather(w.bytes());
-  }
-
-  static std::vector<const profiles::Profile*> pointers(
-      const std::vector<profiles::Profile>& wheels) {
-    std::vector<const profiles::Profile*> out;
-    for (const profiles::Profile& w : wheels) out.push_back(&w);
-    return out;
   }
 
   ProcessGroup& group_;

@@ -25,15 +25,24 @@ GroupRecord stored_inputs(const Scene& scene) {
   return group;
 }
 
+SceneFileReader stored_files(std::map<std::string, std::string> files) {
+  auto stored = std::make_shared<const std::map<std::string, std::string>>(std::move(files));
+  return [stored](const std::filesystem::path& path) -> std::optional<std::string> {
+    const auto it = stored->find(path.string());
+    if (it == stored->end()) return std::nullopt;
+    return it->second;
+  };
+}
+
 SceneFileReader stored_reader(const ResultsFile& file, bool resume_stored) {
-  auto stored = std::make_shared<std::map<std::string, std::string>>();
+  std::map<std::string, std::string> stored;
   std::string changed;
   for (BytesRecord& in : file.read_bytes("/inputs")) {
     const std::string& path = in.attributes["path"];
     const std::optional<std::string> now = read_scene_file_from_disk(path);
     if (now && tangential::sha256_hex(*now) != in.attributes["sha256"])
       changed += "\n  " + path + " (" + in.attributes["key"] + ")";
-    (*stored)[path] = std::move(in.bytes);
+    stored[path] = std::move(in.bytes);
   }
   if (!changed.empty() && !resume_stored)
     throw InputError("results file " + file.path().string() +
@@ -41,11 +50,7 @@ SceneFileReader stored_reader(const ResultsFile& file, bool resume_stored) {
                      "\nthe run goes on only with the inputs it started with: resume with "
                      "--resume-stored to use the copies stored in the results file, or start a "
                      "new run with -o");
-  return [stored](const std::filesystem::path& path) -> std::optional<std::string> {
-    const auto it = stored->find(path.string());
-    if (it == stored->end()) return std::nullopt;
-    return it->second;
-  };
+  return stored_files(std::move(stored));
 }
 
 }  // namespace wheelwear::pipeline::detail

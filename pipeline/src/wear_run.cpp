@@ -71,11 +71,7 @@ bool update_vehicle(const VehicleRun& run, const StateKernel& kernel,
                     StepDistributor* distributor, VehicleCarry& carry) {
   if (carry.solved && carry.depth_since_solve < run.resolve_depth) return false;
   const auto draw = static_cast<std::uint64_t>(step);
-  if (distributor) {
-    std::vector<profiles::PointList> points;
-    for (const WornProfile& w : worn) points.push_back(w.points);
-    distributor->prepare_route(points, draw);
-  }
+  if (distributor) distributor->prepare_route(detail::points_of(worn), draw);
   carry.last = solve_vehicle_collective(run, kernel, wheels, carry.solved ? &carry.last : nullptr,
                                         draw, distributor);
   carry.depth_since_solve = 0.0;
@@ -122,10 +118,9 @@ CollectiveWear evaluate_step(const CollectiveEvaluator& evaluator,
                              const std::vector<WheelsetStateSpec>& specs, bool scene_states,
                              StepDistributor* distributor) {
   if (!distributor) return evaluator.evaluate(wheels, specs);
-  std::vector<profiles::PointList> points;
-  for (const WornProfile& w : worn) points.push_back(w.points);
-  return evaluator.reduce(wheels, specs,
-                          distributor->outcomes(evaluator, points, wheels, specs, scene_states));
+  return evaluator.reduce(
+      wheels, specs,
+      distributor->outcomes(evaluator, detail::points_of(worn), wheels, specs, scene_states));
 }
 
 RunSummary loop(const Scene& scene, std::string_view scene_text,
@@ -152,8 +147,7 @@ RunSummary loop(const Scene& scene, std::string_view scene_text,
   while (true) {
     std::vector<profiles::Profile> wheels;
     for (const WornProfile& w : worn) wheels.push_back(w.build());
-    std::vector<const profiles::Profile*> pointers;
-    for (const auto& w : wheels) pointers.push_back(&w);
+    const std::vector<const profiles::Profile*> pointers = detail::pointers_to(wheels);
     bool vehicle_solved = false;
     if (scene.vehicle_run) {
       vehicle_solved = update_vehicle(*scene.vehicle_run, evaluator.kernel(), worn, pointers, step,
