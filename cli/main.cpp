@@ -17,12 +17,15 @@ namespace {
 // command line, and one message is enough).
 void say(const char* what, const char* message) {
   const wheelwear::cli::Job& job = wheelwear::cli::job();
-  if (job.leader()) {
-    std::cerr << "wheelwear: " << what << ": " << message << '\n';
-  } else if (job.working()) {
-    std::cerr << "wheelwear: " << what << " (process " << job.rank() << " of " << job.size()
-              << "): " << message << '\n';
-  }
+  std::string line;
+  if (job.leader())
+    line = std::string("wheelwear: ") + what + ": " + message + '\n';
+  else if (job.working())
+    line = std::string("wheelwear: ") + what + " (process " + std::to_string(job.rank()) + " of " +
+           std::to_string(job.size()) + "): " + message + '\n';
+  // One write: an MPI launcher forwards a process's output in the pieces it was written in,
+  // and may put its own report of an abort between them.
+  std::cerr << line << std::flush;
 }
 
 int run_command_line(int argc, char** argv) {
