@@ -71,9 +71,12 @@ std::vector<PatchCreep> creep_of(const SolvedContact& solved, const ContactArgs&
   for (const auto& p : solved.contact.patches) {
     PatchCreep c;
     c.creepages = args.in.creepages_at(solved.pair, p);
-    c.forces = tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, c.creepages,
-                                   {p.normal_force, args.in.mu}, args.in.material())
-                   .forces;
+    // A patch of a blend: its description's problem, weighted by its share.
+    c.forces = tangential::weighted(
+        tangential::fastsim(tangential::FastsimMethod::sdec, p.sdec, c.creepages,
+                            {contactgeom::description_load(p), args.in.mu}, args.in.material())
+            .forces,
+        p.share);
     out.push_back(c);
   }
   return out;

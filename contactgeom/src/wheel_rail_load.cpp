@@ -23,6 +23,10 @@ namespace {
 // The bracket of the approach narrower than this [m] is taken as a jump of the vertical force.
 constexpr double kApproachResolution = 1e-13;
 constexpr int kMaxLoadEvaluations = 100;
+// Steps from a guess of the approach (a Hertz step, then secant steps) before the bracketed solve.
+constexpr int kMaxGuessSteps = 6;
+// The largest approach beyond first touch the load solve tries [m]: 20 um doubled 12 times.
+constexpr double kLargestApproach = 20e-6 * 4096.0;
 
 // Evaluations of the approach the fast path spends on correcting it to the strip-wise vertical
 // force before it leaves the contact to the bracketed solve (which takes ten or more): two or
@@ -77,6 +81,123 @@ bool fast_path_approach(const WheelRailGap& geometry, const GapSamples& g,
   return false;
 }
 
+// The approach beyond first touch that carries the load, from the load residual's root.
+struct LoadRoot {
+  double beyond_touch = 0.0;  // [m]
+  bool carried = false;       // a bracket was found (the load is carried within 80 mm)
+  bool at_jump = false;       // the bracket collapsed without meeting the load: a jump
+};
+
+// The root of `residual` (of the approach beyond first touch, -1 at 0): from `guess` [m] a Hertz
+// step (the approach beyond first touch as Fz^(2/3), so the step to the root is x / (1 + f)),
+// then secant steps while they stay inside what is bracketed; else, or without a guess (0), the
+// regula falsi of bracketed_root.hpp on the bracket found, or on one from 20 um up, doubling.
+template <class Residual>
+LoadRoot carry_load(Residual&& residual, double guess, const LoadTolerance& load_met) {
+  LoadRoot out;
+  double lo = 0.0, f_lo = -1.0;
+  double hi = -1.0, f_hi = 0.0;
+  if (guess > 0.0) {
+    double x = guess, x_previous = 0.0, f_previous = 0.0;
+    for (int i = 0; i < kMaxGuessSteps; ++i) {
+      const double f = residual(x);
+      if (load_met(f)) {
+        out.carried = true;
+        out.beyond_touch = x;
+        return out;
+      }
+      if (f < 0.0 && x > lo) {
+        lo = x;
+        f_lo = f;
+      }
+      if (f > 0.0 && (hi < 0.0 || x < hi)) {
+        hi = x;
+        f_hi = f;
+      }
+      double next = f > -0.5 ? x / (1.0 + f) : 2.0 * x;  // far below the load: no Hertz step
+      if (i > 0 && f != f_previous) next = x - f * (x - x_previous) / (f - f_previous);
+      // Steps that leave the bracket found so far go to the regula falsi instead.
+      if ((hi > 0.0 && next >= hi) || next <= lo) break;
+      x_previous = x;
+      f_previous = f;
+      x = next;
+    }
+  }
+  if (hi < 0.0) {
+    // Every approach tried carries too little: doubling from the largest.
+    for (double x = lo > 0.0 ? 2.0 * lo : 20e-6; x <= kLargestApproach; x *= 2.0) {
+      const double f = residual(x);
+      if (f >= 0.0) {
+        hi = x;
+        f_hi = f;
+        break;
+      }
+      lo = x;
+      f_lo = f;
+    }
+    if (hi < 0.0) return out;
+  }
+  const RootResult root = find_root_bracketed_until(residual, lo, f_lo, hi, f_hi, load_met,
+                                                    kApproachResolution, kMaxLoadEvaluations);
+  out.carried = true;
+  out.beyond_touch = root.x;
+  // A bracket that collapsed without meeting the load: the force jumps across this approach.
+  // Regions that join keep their loads and cuts move continuously (interpenetration_runs), so
+  // this is a jump no description removes; root.x is then the side nearer the load.
+  out.at_jump = !root.converged && std::abs(root.hi - root.lo) <= kApproachResolution;
+  return out;
+}
+
+// The load solve of a contact whose gap has rises to cut, and where the fast path's merged
+// answer is not the whole story.
+struct BlendRoot {
+  LoadRoot root;
+  double reference = kEveryRise;  // of the blend's shares (interpenetration_runs)
+  bool merged = false;            // the merged answer (at `merged_approach`) is the blend's
+};
+
+// First every rise of the gap cut (two contacts wherever there are two basins), then, where a
+// rise is a partial cut at that approach, the blend with its shares taken there: each solve's
+// load rises with the approach (interpenetration_runs), and the shares follow the all-cut
+// approach, continuous in the profiles' positions. `residual(beyond_touch, reference)` is the
+// load residual of the description with shares at `reference`; `merged_approach` the approach
+// beyond first touch of the fast path's merged answer, < 0 where there is none.
+template <class Residual>
+BlendRoot solve_blend(Residual&& residual, const GapSamples& g, double merged_approach,
+                      const LoadTolerance& load_met) {
+  BlendRoot out;
+  const auto all_cut = [&](double beyond_touch) { return residual(beyond_touch, kEveryRise); };
+  if (merged_approach > 0.0) {
+    // The merged answer is the blend's when the all-cut approach lies between where every rise
+    // is merged and the merged answer's own approach: the all-cut load rises with the
+    // approach, so two evaluations decide it (usually a ripple in one tread patch).
+    const double threshold = merged_from(g, g.h_min + merged_approach) - g.h_min;
+    if (threshold <= merged_approach && all_cut(merged_approach) >= 0.0 &&
+        (threshold <= 0.0 || all_cut(threshold) <= 0.0)) {
+      out.root = LoadRoot{merged_approach, true, false};
+      out.merged = true;
+      return out;
+    }
+  }
+  out.root = carry_load(all_cut, std::max(merged_approach, 0.0), load_met);
+  if (!out.root.carried || splits_at_every_rise(g, g.h_min + out.root.beyond_touch)) return out;
+  out.reference = g.h_min + out.root.beyond_touch;
+  // Where the shares leave the one region merged, its load rises with the approach, so the
+  // merged answer is the root.
+  if (merged_approach > 0.0) {
+    const std::vector<Run> runs =
+        interpenetration_runs(g, g.h_min + merged_approach, out.reference);
+    if (runs.size() == 1 && runs[0].share == 1.0) {
+      out.root = LoadRoot{merged_approach, true, false};
+      out.merged = true;
+      return out;
+    }
+  }
+  out.root = carry_load([&](double beyond_touch) { return residual(beyond_touch, out.reference); },
+                        out.root.beyond_touch, load_met);
+  return out;
+}
+
 // Why the contact has passed the flange (WheelRailStatus::past_flange), or "" when no loaded
 // patch has its O beyond the flank's steepest point towards the tip.
 std::string past_flange_reason(const WheelRailGap& geometry,
@@ -123,12 +244,15 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
   // Fast path, the usual case: one contact region. The window around the gap's minimum goes
   // to the Kik-Piotrowski load solve at the normal load Fz/cos(angle); the strip-wise vertical
   // force of that patch differs from Fz by the spread of the angle over the patch, so the
-  // approach is then corrected (fast_path_approach). The answer stands if, at its
-  // approach, the gap shows that one region only. Its patch is then the one patches_at() would
-  // find at that approach (same strips, s from the same O), so it is described directly.
+  // approach is then corrected (fast_path_approach). The answer is the merged description's
+  // (one patch over the whole region) if, at its approach, the gap shows one region only. Its
+  // patch is then the one patches_at() would find at that approach (same strips, s from the
+  // same O), so it is described directly. It stands where the region has no rise to cut, or
+  // where the blend's shares, taken at the all-cut approach, leave it merged.
   double d = -1.0;
   bool at_jump = false;
   std::optional<PatchSet> fast;
+  double fast_approach = -1.0;  // beyond touch, where the merged answer exists
   {
     std::size_t k = 0;
     for (std::size_t j = 0; j < g.h.size(); ++j)
@@ -137,62 +261,56 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
     while (first > 0 && g.window[first - 1] == g.window[k]) --first;
     while (last + 1 < g.h.size() && g.window[last + 1] == g.window[k]) ++last;
     // The angle at the refined minimum, as patches_at() takes it for the region.
-    const double y_O = with_minimum(g, first, last).y_O;
+    const Run window = with_minimum(g, first, last);
+    const double y_O = window.y_O;
     const double angle = geometry.contact_angle(y_O);
     const double c = std::cos(angle);
     thread_local std::vector<double> h, ax;
-    const GapStrips strips = strips_of(geometry, g, first, last, y_O, c, h, ax);
+    // No cut bounds the window: the approach does not enter its strips.
+    const GapStrips strips = strips_of(geometry, g, window, 0.0, c, h, ax);
     thread_local KpResult kp;
     PatchForces forces;
     if (fast_path_approach(geometry, g, directions, Region{strips, last, c}, E_star, vertical_force,
                            options, kp, forces)) {
       const double candidate = kp.approach / c - g.h_min;
-      const auto runs = interpenetration_runs(g, g.h_min + candidate);
-      if (runs.size() == 1 &&
-          std::abs(geometry.contact_angle(runs[0].y_O) - angle) < 1e-3 * std::max(1.0, angle)) {
-        d = candidate;
+      const std::vector<Run> regions = interpenetration_regions(g, g.h_min + candidate);
+      if (regions.size() == 1 &&
+          std::abs(geometry.contact_angle(regions[0].y_O) - angle) < 1e-3 * std::max(1.0, angle)) {
+        fast_approach = candidate;
         PatchSet e;
         e.vertical = forces.vertical;
         e.lateral = forces.lateral;
         e.steepest = std::abs(angle);
         e.patches.push_back(describe_patch(geometry, kp.patches[0], y_O, angle, forces, E_star));
         fast = std::move(e);
+        if (interpenetration_runs(g, g.h_min + candidate, kEveryRise).size() == 1) d = candidate;
       }
     }
   }
+  double reference = kEveryRise;
   if (d < 0.0) {
-    // Vertical force against approach beyond first touch: bracket, then the regula falsi of
-    // bracketed_root.hpp on the load residual, nearly linear in the approach.
-    auto residual = [&](double beyond_touch) {
-      const PatchSet e =
-          patches_at(geometry, g, directions, g.h_min + beyond_touch, E_star, options, false);
-      return load_residual(e.vertical, vertical_force);
-    };
-    double lo = 0.0, f_lo = -1.0;
-    double hi = 20e-6, f_hi = residual(hi);
-    for (int i = 0; f_hi < 0.0 && i < 12; ++i) {
-      lo = hi;
-      f_lo = f_hi;
-      hi *= 2.0;
-      f_hi = residual(hi);
-    }
-    if (f_hi < 0.0) {
+    const BlendRoot blend = solve_blend(
+        [&](double beyond_touch, double reference_approach) {
+          return load_residual(patches_at(geometry, g, directions, g.h_min + beyond_touch,
+                                          reference_approach, E_star, options, false)
+                                   .vertical,
+                               vertical_force);
+        },
+        g, fast ? fast_approach : -1.0, load_met);
+    if (!blend.root.carried) {
       result.status = WheelRailStatus::not_converged;
       result.message = "the load is not carried within an approach of 80 mm";
       return result;
     }
-    const RootResult root = find_root_bracketed_until(residual, lo, f_lo, hi, f_hi, load_met,
-                                                      kApproachResolution, kMaxLoadEvaluations);
-    d = root.x;
-    // A bracket that collapsed without meeting the load: the force jumps across this approach.
-    // Regions that join keep their loads (interpenetration_runs); what can still jump is a cut
-    // between two contacts moving by a whole sample of the gap. root.x is then the side nearer
-    // the load.
-    at_jump = !root.converged && std::abs(root.hi - root.lo) <= kApproachResolution;
+    d = blend.root.beyond_touch;
+    at_jump = blend.root.at_jump;
+    reference = blend.reference;
+    if (!blend.merged) fast.reset();
   }
 
-  PatchSet e = fast ? std::move(*fast)
-                    : patches_at(geometry, g, directions, g.h_min + d, E_star, options, true);
+  PatchSet e =
+      fast ? std::move(*fast)
+           : patches_at(geometry, g, directions, g.h_min + d, reference, E_star, options, true);
   std::sort(e.patches.begin(), e.patches.end(),
             [](const WheelRailPatch& a, const WheelRailPatch& b) { return a.y_rail < b.y_rail; });
   result.patches = std::move(e.patches);
@@ -201,7 +319,7 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
   result.approach = d;
   result.status = WheelRailStatus::ok;
   bool at_profile_end = false;
-  for (const Run& run : interpenetration_runs(g, g.h_min + d))
+  for (const Run& run : interpenetration_runs(g, g.h_min + d, reference))
     for (std::size_t k : g.end_samples) at_profile_end |= (k == run.first || k == run.last);
   const std::string past = past_flange_reason(geometry, result.patches);
   if (at_jump) {

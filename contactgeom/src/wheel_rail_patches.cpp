@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "blended_minimum.hpp"
+#include "parabola_vertex.hpp"
 #include "wheelwear/contactgeom/sdec_regularisation.hpp"
 
 namespace wheelwear::contactgeom::detail {
@@ -27,8 +28,9 @@ namespace {
 
 // A rise of the gap between two basins of one interpenetration run.
 struct Cut {
-  std::size_t at;     // the highest sample between the basins (the left piece keeps it)
+  std::size_t at;     // the highest sample between the basins
   double separation;  // 0: the basins are one contact ... 1: two contacts
+  double position;    // Run::cut_before / cut_after of the pieces it bounds, within at +- 1/2
 };
 
 double smoothstep(double t) {
@@ -67,79 +69,150 @@ double lowest_gap(const GapSamples& g, std::size_t first, std::size_t last) {
                            g.h.begin() + static_cast<std::ptrdiff_t>(last) + 1);
 }
 
-// The cuts of run [first, last] at `approach` with their separations.
+// The shallower of the two minima beside rise k of `at` (the rises of run [first, last]) [m].
+double shallower_minimum(const GapSamples& g, std::size_t first, std::size_t last,
+                         const std::vector<std::size_t>& at, std::size_t k) {
+  const std::size_t left_first = k == 0 ? first : at[k - 1] + 1;
+  const std::size_t right_last = k + 1 == at.size() ? last : at[k + 1];
+  return std::max(lowest_gap(g, left_first, at[k]), lowest_gap(g, at[k] + 1, right_last));
+}
+
+// The separation of a rise: 0 where its basins are one contact ... 1 where they are two.
+// `prominence`: the rise above the shallower basin's minimum `shallower`, both [m].
+double separation(double prominence, double shallower, double reference) {
+  // A rise is found once it reaches kBasinRipple, where a shallow basin's r may already lie
+  // above kMergedBelow: the cut fades in over the next ripple of rise, so that the contact does
+  // not jump as the rise is found (it did, by 15 % of a wheel's Fx, on a banded worn tread).
+  const double found = smoothstep(prominence / kBasinRipple - 1.0);
+  const double depth = reference - shallower;  // the shallower basin's local approach
+  if (!(depth > 0.0)) return found;            // not reached at the reference: its own contact
+  const double r = prominence / depth;
+  return found * smoothstep((r - kMergedBelow) / (kSeparateAbove - kMergedBelow));
+}
+
+// Where the rise whose highest sample is `at` lies between samples: the vertex of the parabola
+// through it and its neighbours, which moves continuously as the highest sample changes (at
+// two equal highest samples it lies half-way between them, seen from either).
+double cut_position(const GapSamples& g, std::size_t at) {
+  double offset = 0.0;
+  if (const auto vertex = parabola_vertex(-g.h[at - 1], -g.h[at], -g.h[at + 1]))
+    offset = std::clamp(vertex->offset, -0.5, 0.5);
+  return static_cast<double>(at) + offset;
+}
+
+// The cuts of run [first, last] with their separations at `reference`.
 std::vector<Cut> cuts_of(const GapSamples& g, std::size_t first, std::size_t last,
-                         double approach) {
+                         double reference) {
   const std::vector<std::size_t> at = rises(g, first, last);
   std::vector<Cut> cuts;
   for (std::size_t k = 0; k < at.size(); ++k) {
-    const std::size_t left_first = k == 0 ? first : at[k - 1] + 1;
-    const std::size_t right_last = k + 1 == at.size() ? last : at[k + 1];
-    const double shallower =
-        std::max(lowest_gap(g, left_first, at[k]), lowest_gap(g, at[k] + 1, right_last));
-    const double prominence = g.h[at[k]] - shallower;
-    const double depth = approach - shallower;  // the shallower basin's local approach
-    const double r = prominence / depth;
-    // A rise is found once it reaches kBasinRipple, where a shallow basin's r may already lie
-    // above kMergedBelow: the cut fades in over the next ripple of rise, so that the contact does
-    // not jump as the rise is found (it did, by 15 % of a wheel's Fx, on a banded worn tread).
-    const double found = smoothstep(prominence / kBasinRipple - 1.0);
+    const double shallower = shallower_minimum(g, first, last, at, k);
     cuts.push_back(
-        {at[k], found * smoothstep((r - kMergedBelow) / (kSeparateAbove - kMergedBelow))});
+        {at[k], separation(g.h[at[k]] - shallower, shallower, reference), cut_position(g, at[k])});
   }
   return cuts;
 }
 
-}  // namespace
+// The piece of run [first, last] between the cuts `before` and `after` (nullptr: the run's own
+// end), with its share of a blend: the samples less than half a sample beyond each cut.
+Run piece_of(const GapSamples& g, std::size_t first, std::size_t last, const Cut* before,
+             const Cut* after, double share) {
+  std::size_t from = first, to = last;
+  if (before) from = std::max(first, static_cast<std::size_t>(std::floor(before->position + 0.5)));
+  if (after) to = std::min(last, static_cast<std::size_t>(std::ceil(after->position - 0.5)));
+  Run run = with_minimum(g, from, to);
+  if (before) run.cut_before = before->position;
+  if (after) run.cut_after = after->position;
+  run.share = share;
+  return run;
+}
 
-std::vector<Run> interpenetration_runs(const GapSamples& g, double approach) {
-  std::vector<Run> runs;
+// The runs of samples below `level`, each as [first, last].
+template <class Visit>
+void for_each_run_below(const GapSamples& g, double level, Visit&& visit) {
   for (std::size_t i = 0; i < g.h.size();) {
-    if (!(g.h[i] < approach)) {
+    if (!(g.h[i] < level)) {
       ++i;
       continue;
     }
     std::size_t last = i;
-    while (last + 1 < g.h.size() && g.window[last + 1] == g.window[i] && g.h[last + 1] < approach)
+    while (last + 1 < g.h.size() && g.window[last + 1] == g.window[i] && g.h[last + 1] < level)
       ++last;
+    visit(i, last);
+    i = last + 1;
+  }
+}
+
+}  // namespace
+
+std::vector<Run> interpenetration_runs(const GapSamples& g, double approach, double reference) {
+  std::vector<Run> runs;
+  for_each_run_below(g, std::max(approach, reference), [&](std::size_t i, std::size_t last) {
     // Firm cuts separate contacts; between two firm cuts, the piece is blended from itself cut at
     // its partial cuts (share: their least separation) and itself uncut (the rest).
-    const std::vector<Cut> cuts = cuts_of(g, i, last, approach);
-    std::size_t piece_first = i;
+    const std::vector<Cut> cuts = cuts_of(g, i, last, reference);
+    const Cut* firm_before = nullptr;
     std::size_t k = 0;
-    while (piece_first <= last) {
-      std::vector<std::size_t> partial;
+    while (true) {
+      std::vector<const Cut*> partial;
       double split_share = 1.0;
-      std::size_t piece_last = last;
+      const Cut* firm_after = nullptr;
       for (; k < cuts.size(); ++k) {
         if (cuts[k].separation >= 1.0) {
-          piece_last = cuts[k++].at;
+          firm_after = &cuts[k++];
           break;
         }
         if (cuts[k].separation > 0.0) {
-          partial.push_back(cuts[k].at);
+          partial.push_back(&cuts[k]);
           split_share = std::min(split_share, cuts[k].separation);
         }
       }
       if (partial.empty()) {
-        runs.push_back(with_minimum(g, piece_first, piece_last));
+        runs.push_back(piece_of(g, i, last, firm_before, firm_after, 1.0));
       } else {
-        std::size_t from = piece_first;
-        for (std::size_t at : partial) {
-          runs.push_back(with_minimum(g, from, at));
-          runs.back().share = split_share;
-          from = at + 1;
+        const Cut* from = firm_before;
+        for (const Cut* cut : partial) {
+          runs.push_back(piece_of(g, i, last, from, cut, split_share));
+          from = cut;
         }
-        runs.push_back(with_minimum(g, from, piece_last));
-        runs.back().share = split_share;
-        runs.push_back(with_minimum(g, piece_first, piece_last));
-        runs.back().share = 1.0 - split_share;
+        runs.push_back(piece_of(g, i, last, from, firm_after, split_share));
+        runs.push_back(piece_of(g, i, last, firm_before, firm_after, 1.0 - split_share));
       }
-      piece_first = piece_last + 1;
+      if (!firm_after) break;
+      firm_before = firm_after;
     }
-    i = last + 1;
-  }
+  });
   return runs;
+}
+
+std::vector<Run> interpenetration_regions(const GapSamples& g, double approach) {
+  std::vector<Run> regions;
+  for_each_run_below(g, approach, [&](std::size_t first, std::size_t last) {
+    regions.push_back(with_minimum(g, first, last));
+  });
+  return regions;
+}
+
+double merged_from(const GapSamples& g, double approach) {
+  double least = -std::numeric_limits<double>::infinity();
+  for_each_run_below(g, approach, [&](std::size_t first, std::size_t last) {
+    const std::vector<std::size_t> at = rises(g, first, last);
+    for (std::size_t k = 0; k < at.size(); ++k) {
+      const double shallower = shallower_minimum(g, first, last, at, k);
+      least = std::max(least, shallower + (g.h[at[k]] - shallower) / kMergedBelow);
+    }
+  });
+  return least;
+}
+
+bool splits_at_every_rise(const GapSamples& g, double approach) {
+  bool same = true;
+  for_each_run_below(g, approach, [&](std::size_t first, std::size_t last) {
+    const std::vector<Cut> at = cuts_of(g, first, last, approach);
+    const std::vector<Cut> every = cuts_of(g, first, last, kEveryRise);
+    for (std::size_t k = 0; k < at.size(); ++k) same &= at[k].separation == every[k].separation;
+  });
+  return same;
 }
 
 void scale_loads(KpPatch& patch, double share) {
@@ -210,35 +283,40 @@ WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch
 }
 
 // The gap along the contact normal is the vertical gap times cos(angle), to second order.
-GapStrips strips_of(const WheelRailGap& geometry, const GapSamples& g, std::size_t first,
-                    std::size_t last, double y_O, double c, std::vector<double>& h,
-                    std::vector<double>& ax) {
-  const std::size_t n = last - first + 1;
+GapStrips strips_of(const WheelRailGap& geometry, const GapSamples& g, const Run& run,
+                    double approach, double c, std::vector<double>& h, std::vector<double>& ax) {
+  const std::size_t n = run.last - run.first + 1;
   h.resize(n);
   ax.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t j = last - k;
-    h[k] = g.h[j] * c;
+    const std::size_t j = run.last - k;
+    // Beyond a cut the gap rises to the rigid approach over one sample, linearly in the cut's
+    // position: a sample half a sample or more beyond it lies as a sample beyond the run does,
+    // and the patch's loads and edges follow the cut's position continuously.
+    const double beyond =
+        std::max(run.cut_before - static_cast<double>(j), static_cast<double>(j) - run.cut_after);
+    const double rise = std::clamp(beyond + 0.5, 0.0, 1.0) * std::max(0.0, approach - g.h[j]);
+    h[k] = (g.h[j] + rise) * c;
     ax[k] = c / (2.0 * geometry.rolling_radius(g.z_wheel[j]));
   }
   GapStrips strips;
   strips.ds = g.dy / c;
-  strips.s_first = -(g.y[last] - y_O) / c;
+  strips.s_first = -(g.y[run.last] - run.y_O) / c;
   strips.h = h;
   strips.ax = ax;
   return strips;
 }
 
 PatchSet patches_at(const WheelRailGap& geometry, const GapSamples& g, SampleDirections& directions,
-                    double approach, double E_star, const WheelRailOptions& options,
-                    bool describe) {
+                    double approach, double reference, double E_star,
+                    const WheelRailOptions& options, bool describe) {
   PatchSet out;
   thread_local std::vector<double> h, ax;
   thread_local KpResult kp;
-  for (const Run& run : interpenetration_runs(g, approach)) {
+  for (const Run& run : interpenetration_runs(g, approach, reference)) {
     const double angle = geometry.contact_angle(run.y_O);
     const double c = std::cos(angle);
-    const GapStrips strips = strips_of(geometry, g, run.first, run.last, run.y_O, c, h, ax);
+    const GapStrips strips = strips_of(geometry, g, run, approach, c, h, ax);
     solve_kp_approach(strips, E_star, approach * c, options.kp, kp);
     if (kp.status != KpStatus::converged) continue;
     for (KpPatch& patch : kp.patches) {

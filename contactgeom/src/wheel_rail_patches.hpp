@@ -4,6 +4,7 @@
 // wheel/rail contact).
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include "wheel_rail_gap.hpp"
@@ -17,6 +18,10 @@ struct Run {
   std::size_t first = 0, last = 0;  // sample indices, inclusive
   double y_O = 0.0, h_O = 0.0;      // gap minimum (parabola through the lowest sample)
   double share = 1.0;               // weight of this contact in a blend (interpenetration_runs)
+  // Where a cut bounds the run: its position in samples (fractional), the gap rising to the
+  // approach beyond it over one sample (strips_of); -inf, +inf: the run's own ends.
+  double cut_before = -std::numeric_limits<double>::infinity();
+  double cut_after = std::numeric_limits<double>::infinity();
 };
 
 // The run of samples [first, last] with its refined gap minimum.
@@ -26,30 +31,52 @@ Run with_minimum(const GapSamples& g, std::size_t first, std::size_t last);
 // measured profile within one contact, never a cut.
 constexpr double kBasinRipple = 0.5e-6;
 // Where the gap rises between two minima, r is the rise above the shallower minimum over that
-// minimum's depth below the approach (r = 1: the two regions have just joined). Below
-// kMergedBelow the basins are one contact; above kSeparateAbove two; in between the contact is
-// blended from both descriptions with shares that follow r smoothly. On S1002/60E1, a shallow
+// minimum's depth below the reference approach (r = 1 at the approach where two regions join).
+// Below kMergedBelow the basins are one contact; above kSeparateAbove two; in between the contact
+// is blended from both descriptions with shares that follow r smoothly. On S1002/60E1, a shallow
 // dip within CONTACT's single tread patch has r = 0.05; two-point tread and flange-root contacts
 // have r = 0.6 or more.
 constexpr double kMergedBelow = 0.3;
 constexpr double kSeparateAbove = 0.6;
 
-// Runs of samples where the surfaces interpenetrate at the rigid approach, each cut into one
-// contact per basin of the gap where the rise between basins is deep enough (see r above): it is
-// cut at the highest gap between them, and each piece is a contact of its own with its own
-// initial contact point and contact angle (two-point contact of tread and flange). The cuts and
-// shares are continuous in the approach and the profiles' positions, so the loads stay
-// continuous where two regions join or a basin's minimum vanishes (Kik-Piotrowski's virtual
-// penetration alone would merge them and drop the shallower one's load at once). Each run's
-// share is 1 unless it belongs to a blend.
-std::vector<Run> interpenetration_runs(const GapSamples& g, double approach);
+// Runs of samples where the surfaces interpenetrate, each cut into one contact per basin of the
+// gap where the rise between basins is deep enough (see r above): it is cut at the rise's top
+// (between samples: Run::cut_before, cut_after), and each piece is a contact of its own with its
+// own initial contact point and contact angle (two-point contact of tread and flange). Each
+// run's share is 1 unless it belongs to a blend.
+//
+// r is taken at the rigid approach `reference`, the runs are those at max(approach, reference):
+// for a fixed reference the description is fixed below it, and above it changes only where
+// regions join, which they do as two contacts (r > 1), so every contact's load rises
+// continuously with the approach and the load solve has one root. A basin not reached at
+// `reference` is a contact of its own; reference = kEveryRise cuts at every rise (two contacts
+// wherever there are two basins). The load solve takes the reference from that all-cut solution
+// (solve_blend in wheel_rail_load.cpp), so that the shares follow the profiles' positions
+// continuously too: taking r at the approach being tried made the load non-monotone in it where the
+// merged and the split description carry unlike loads (the Hertz-calibrated method), and the root
+// found switched.
+std::vector<Run> interpenetration_runs(const GapSamples& g, double approach, double reference);
 
-// The strips of samples [first, last] for the Kik-Piotrowski solver, in increasing s (towards
-// the gauge side, -y in the profile frame), s measured from y_O along the contact plane, whose
-// cosine is c. h and ax hold the strips' values (the result views them).
-GapStrips strips_of(const WheelRailGap& geometry, const GapSamples& g, std::size_t first,
-                    std::size_t last, double y_O, double c, std::vector<double>& h,
-                    std::vector<double>& ax);
+// The regions of the sampled gap below the rigid approach, uncut, each with its gap minimum.
+std::vector<Run> interpenetration_regions(const GapSamples& g, double approach);
+
+// The least reference approach at which every rise of the gap within the runs at `approach` is
+// no cut at all (r <= kMergedBelow); -inf where there is no rise.
+double merged_from(const GapSamples& g, double approach);
+
+// The reference that cuts at every rise.
+constexpr double kEveryRise = -std::numeric_limits<double>::infinity();
+
+// True when the runs at `approach` with their shares taken there are those of kEveryRise: every
+// rise is as firm a cut at this approach as it can be (r >= kSeparateAbove).
+bool splits_at_every_rise(const GapSamples& g, double approach);
+
+// The strips of `run` for the Kik-Piotrowski solver at the rigid approach `approach`, in
+// increasing s (towards the gauge side, -y in the profile frame), s measured from run.y_O along
+// the contact plane, whose cosine is c. h and ax hold the strips' values (the result views
+// them).
+GapStrips strips_of(const WheelRailGap& geometry, const GapSamples& g, const Run& run,
+                    double approach, double c, std::vector<double>& h, std::vector<double>& ax);
 
 // The vertical and lateral force of one patch [N].
 struct PatchForces {
@@ -106,9 +133,11 @@ struct PatchSet {
   double steepest = 0.0;                // largest |contact angle| at O [rad]
 };
 
-// Every patch at the rigid approach `approach` (same datum as g.h); `describe`: with the patches'
-// details, else the forces only. `directions` holds g's contact directions looked up so far.
+// Every patch at the rigid approach `approach` (same datum as g.h) of interpenetration_runs(g,
+// approach, reference); `describe`: with the patches' details, else the forces only.
+// `directions` holds g's contact directions looked up so far.
 PatchSet patches_at(const WheelRailGap& geometry, const GapSamples& g, SampleDirections& directions,
-                    double approach, double E_star, const WheelRailOptions& options, bool describe);
+                    double approach, double reference, double E_star,
+                    const WheelRailOptions& options, bool describe);
 
 }  // namespace wheelwear::contactgeom::detail

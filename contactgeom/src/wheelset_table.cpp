@@ -42,9 +42,9 @@ TableWheel tabulate(const WheelRailContact& contact) {
   if (!answers(contact.status) || !(contact.vertical_force > 0.0)) return w;
   const double Fz = contact.vertical_force;
   for (const WheelRailPatch& p : contact.patches) {
-    const TablePatch solved{p.normal_force,   p.vertical_force, p.lateral_force, p.sdec.a,
-                            p.sdec.b,         p.sdec.psi,       p.pmax,          p.contact_angle,
-                            p.rolling_radius, p.y_wheel,        p.y_rail,        p.s_wheel};
+    const TablePatch solved{
+        p.normal_force,  p.vertical_force, p.lateral_force, p.sdec.a, p.sdec.b,  p.sdec.psi, p.pmax,
+        p.contact_angle, p.rolling_radius, p.y_wheel,       p.y_rail, p.s_wheel, p.share};
     w.patches.push_back(rescaled(solved, 1.0 / Fz, 1.0 / std::cbrt(Fz)));
   }
   return w;
@@ -64,6 +64,7 @@ TablePatch mix(const TablePatch& p, double wp, const TablePatch& q, double wq) {
   m.y_wheel = wp * p.y_wheel + wq * q.y_wheel;
   m.y_rail = wp * p.y_rail + wq * q.y_rail;
   m.s_wheel = wp * p.s_wheel + wq * q.s_wheel;
+  m.share = wp * p.share + wq * q.share;
   return m;
 }
 
@@ -138,6 +139,7 @@ WheelRailContact scaled(const std::vector<TablePatch>& patches, WheelRailStatus 
     p.y_wheel = t.y_wheel;
     p.y_rail = t.y_rail;
     p.s_wheel = t.s_wheel;
+    p.share = t.share;
     c.vertical_force += p.vertical_force;
     c.lateral_force += p.lateral_force;
   }

@@ -205,21 +205,23 @@ WheelOutcome StateKernel::wheel(const contactgeom::WheelsetContact& both, int si
     p.creepages = given ? *given
                         : contactgeom::kinematic_creepages(patch, pose, motion,
                                                            wheel_profile.info().nominal_radius);
-    const tangential::ContactLoad load{patch.normal_force, friction.at(patch.contact_angle)};
+    // A patch of a blend: its description's problem, weighted by its share.
+    const tangential::ContactLoad load{contactgeom::description_load(patch),
+                                       friction.at(patch.contact_angle)};
     tangential::solve_patch(method_, region, p.creepages, load, material, options, solution);
     p.wear = wear_window(patch, region.b, wheel_profile.length());
     wear::WearDistribution part = wear::WearDistribution::zeros(
         static_cast<double>(p.wear.first) * kWearBin, kWearBin, p.wear.depth.size());
     wear::accumulate_wear(*solution.fields, motion.speed, law_,
-                          {patch.s_wheel, patch.rolling_radius}, 1.0, part);
+                          {patch.s_wheel, patch.rolling_radius}, patch.share, part);
     p.wear.depth = std::move(part.depth);
     // The totals travel with the outcome; the cells only where they are kept.
-    p.solution.forces = solution.forces;
+    p.solution.forces = tangential::weighted(solution.forces, patch.share);
     p.solution.status = solution.status;
     p.solution.message = solution.message;
     p.solution.cells = solution.cells;
     p.solution.slip_cells = solution.slip_cells;
-    p.solution.frictional_work = solution.frictional_work;
+    p.solution.frictional_work = patch.share * solution.frictional_work;
     p.solution.from_table = solution.from_table;
     if (keep_fields) {
       // A T gamma map needs the work density and the cell positions, not every field.
@@ -227,6 +229,8 @@ WheelOutcome StateKernel::wheel(const contactgeom::WheelsetContact& both, int si
       kept.nx = solution.fields->nx;
       kept.ny = solution.fields->ny;
       kept.work = solution.fields->work;
+      if (patch.share != 1.0)
+        for (double& w : kept.work) w *= patch.share;
       kept.x = solution.fields->x;
       kept.y = solution.fields->y;
     }

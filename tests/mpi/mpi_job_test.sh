@@ -27,6 +27,16 @@ fail() {  # says why, with what the commands printed
   done
   exit 1
 }
+
+# The processes whose parent is $1 (from /proc: no procps needed).
+children() {
+  local status
+  for status in /proc/[0-9]*/status; do
+    [[ $(awk '/^PPid:/ {print $2}' "$status" 2>/dev/null) == "$1" ]] && basename "$(dirname "$status")"
+  done
+  return 0
+}
+
 same() {  # same A B: identical results files, and h5diff does tell different ones apart
   h5diff --exclude-path /run_info "$1" "$2" || fail "$2 differs from $1"
   echo "identical: $1 $2"
@@ -66,7 +76,11 @@ case $case_name in
       sleep 0.1
     done
     grep -q "step 2 " stopped.err || fail "no step 2 within 4 minutes"
-    kill -TERM "$job"
+    # SIGTERM to every process of the job, as Slurm ends one (not to the launcher: mpirun then
+    # tears the job down and may drop process 0's last output).
+    processes=$(children "$job")
+    [[ -n $processes ]] || fail "no process of the job to stop"
+    kill -TERM $processes
     status=0
     wait "$job" || status=$?
     ((status != 0)) || fail "the stopped job exited with status 0"

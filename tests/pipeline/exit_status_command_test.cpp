@@ -59,16 +59,20 @@ TEST(Inclination, OneInFortyIsTheSlopeOfOneFortieth) {
   EXPECT_NE(mistyped.err.find("--incl 40: give 1:N"), std::string::npos) << mistyped.err;
 }
 
-// Computed but no usable answer: a curve in which the worn wheel of tests/data/profiles finds
-// no balance (R 3000 m at 45 m/s: docs/vehicle.md, Newton on its banded tread) prints its last
-// iterate and exits with 3.
+// Computed but no usable answer: a curve in which no balance exists prints its last iterate and
+// exits with 3. Wheels without a flange (a cone of 1:40) at 3.0 m/s^2 of uncompensated lateral
+// acceleration (R 300 m, 30 m/s, no cant) with friction 0.1: the rails can push the vehicle
+// inwards by at most about 0.1 g through the creep forces and 0.025 g through the cone.
 TEST_F(OutputRule, CurvingWithoutABalanceExitsWithThree) {
-  write("worn.toml", "[wheel]\nprofile = \"" +
-                         testing::test_data("profiles/s1002_worn_33200km.csv") +
+  std::string cone = "y_mm,z_mm\n";
+  for (int y = -65; y <= 65; ++y)
+    cone += std::to_string(y) + "," + std::to_string(-y / 40.0) + "\n";
+  write("cone.csv", cone);
+  write("cone.toml", "[wheel]\nprofile = \"" + (dir_ / "cone.csv").string() +
                          "\"\nradius_m = 0.46\n[rail]\nprofile = \"60E1\"\ninclination = "
                          "0.025\n[[load_collective.state]]\naxle_load_N = 1e5\nspeed_m_s = 30\n");
-  const auto r = run_wheelwear("curving " + (dir_ / "worn.toml").string() +
-                               " --radius 3000 --cant 0.05 --speed 45 --json");
+  const auto r = run_wheelwear("curving " + (dir_ / "cone.toml").string() +
+                               " --radius 300 --cant 0 --speed 30 --friction 0.1 --json");
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.out.find("\"converged\": false"), std::string::npos) << r.out.substr(0, 200);
   EXPECT_NE(r.err.find("wheelwear: failed: curving did not converge"), std::string::npos) << r.err;

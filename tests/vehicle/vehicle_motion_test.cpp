@@ -138,7 +138,9 @@ TEST(VehicleMotion, InASteadyCurveSettlesAtTheQuasiStaticState) {
     EXPECT_NEAR(w.state.spin, q.spin, 3e-7 * q.spin) << "wheelset " << k + 1;
     EXPECT_NEAR(w.forces.axle_torque, 0.0, 1e-3 * std::abs(w.forces.Fx_axle) * 0.46 + 1.0);
   }
-  EXPECT_NEAR(end.car_body.y, qs.car_body.y, 1e-8);  // 2 nm measured
+  // 18 nm measured: the leading wheelset's blend of contact descriptions takes its shares at the
+  // approach its loads give, met to 1e-4 here (with 1e-7, 2 nm as the rest); twice that.
+  EXPECT_NEAR(end.car_body.y, qs.car_body.y, 4e-8);
 }
 
 // A braking section: the motion settles at the quasi-static state with the same brake force on

@@ -83,11 +83,14 @@ WheelForces wheel_forces(const WheelsetModel& model, const contactgeom::WheelRai
     const contactgeom::Sdec region =
         model.ellipse_at_O ? contactgeom::Sdec{patch.sdec.a, patch.sdec.b, 0.0} : patch.sdec;
     const tangential::TangentialSolution s = tangential::solve_patch(
-        model.method, region, p.creepages, {patch.normal_force, friction.at(patch.contact_angle)},
-        model.material, model.solve);
-    p.Fx = s.forces.Fx;
-    p.Fy = s.forces.Fy;
-    p.Mz = s.forces.Mz.value_or(0.0);
+        model.method, region, p.creepages,
+        {contactgeom::description_load(patch), friction.at(patch.contact_angle)}, model.material,
+        model.solve);
+    // A patch of a blend: its description's problem, weighted by its share.
+    const tangential::CreepForces f = tangential::weighted(s.forces, patch.share);
+    p.Fx = f.Fx;
+    p.Fy = f.Fy;
+    p.Mz = f.Mz.value_or(0.0);
     const double c = std::cos(p.contact_angle), sn = std::sin(p.contact_angle);
     w.Q += patch.vertical_force - p.Fy * sn;
     w.Y += patch.lateral_force + p.Fy * c;

@@ -85,7 +85,7 @@ struct WheelRailPatch {
                          ///< flange [m]
   double y_rail = 0.0;   ///< O on the rail profile, from its origin, + towards the gauge side [m]
   double s_wheel = 0.0;  ///< arc length of O on the wheel profile [m]
-  double contact_angle = 0.0;   ///< angle of the contact plane to the track plane [rad]
+  double contact_angle = 0.0;  ///< angle of the contact plane to the track plane [rad]
   /// The rail's contact angle at the patch's centre of load (its strips' line loads' lateral
   /// centroid) [rad], where CONTACT reports its angle (at the weighted centre of its
   /// interpenetration); contact_angle is O's. The table's patches carry O's.
@@ -103,10 +103,20 @@ struct WheelRailPatch {
   double pmax = 0.0;  ///< [Pa]
   /// 1 for a contact of its own. Where two basins of the gap are between one contact and two,
   /// the contact is blended from both descriptions (the basins cut apart, and one patch over
-  /// both), each patch with its share of the blend, both shares summing to 1: its pressures and
-  /// forces above are already scaled by it, its shape is that of its description.
+  /// both), each patch with its share of the blend, the shares of a contact's descriptions
+  /// summing to 1; so is a cut between two samples of the gap (its piece ending at either). Its
+  /// pressures and forces above are already scaled by the share, its shape is that of its
+  /// description. The tangential problem is the description's: solved at description_load()
+  /// and its creep forces, frictional work and wear weighted by the share (a patch solved at the
+  /// scaled load would keep its full linear creep force, and a blend would count it twice).
   double share = 1.0;
 };
+
+/// The normal load of the patch's own description, normal_force / share [N]: its tangential
+/// problem is solved at this load, and the outcome weighted by the share.
+inline double description_load(const WheelRailPatch& patch) {
+  return patch.normal_force / patch.share;
+}
 
 /// Outcome of a wheel/rail contact evaluation. Where several apply, the first of load_jump,
 /// not_converged, profile_end, flange_climb, past_flange is reported (a load_jump's message

@@ -71,6 +71,7 @@ struct TablePatch {
   double contact_angle = 0.0;
   double rolling_radius = 0.0;
   double y_wheel = 0.0, y_rail = 0.0, s_wheel = 0.0;
+  double share = 1.0;  ///< WheelRailPatch::share: its weight in a blend of descriptions [-]
 };
 
 /// One wheel at one node.

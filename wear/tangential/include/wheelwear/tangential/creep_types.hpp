@@ -48,4 +48,12 @@ struct CreepForces {
   CoefficientFlags flags;  ///< where the coefficients came from
 };
 
+/// The forces times `weight` (a patch's share of a blend of descriptions).
+inline CreepForces weighted(CreepForces f, double weight) {
+  f.Fx *= weight;
+  f.Fy *= weight;
+  if (f.Mz) *f.Mz *= weight;
+  return f;
+}
+
 }  // namespace wheelwear::tangential
