@@ -31,7 +31,7 @@ struct ContactInputs {
   double E = 200e9;
   double nu = 0.25;
   double strip_width = 0.1e-3;
-  std::string normal_method = "kik-piotrowski";  // a contactgeom::kNormalMethodNames name
+  std::string normal_method = "hertz-calibrated";  // a contactgeom::kNormalMethodNames name
   double epsilon = 0.55;
   tangential::Creepages creepages;
   bool kinematic = false;  // creepages from the motion below instead

@@ -279,15 +279,16 @@ def contact(
     E: float = 200e9,
     nu: float = 0.25,
     strip_width: float = 0.1e-3,
-    normal_method: str = "kik-piotrowski",
+    normal_method: str = "hertz-calibrated",
     epsilon: float = 0.55,
 ) -> Any:
     """The contact patches of one wheel (the left one) of a wheelset on its rail, as
     ``wheelwear contact``: lateral shift ``dy`` [m] (+ towards this wheel's flange contact),
     vertical ``load`` on the wheel [N], ``yaw`` and ``roll`` [rad], track ``gauge`` and
     ``back_to_back`` [m], Young's modulus ``E`` [Pa], ``nu``, the gap's lateral sampling
-    ``strip_width`` [m], and the normal problem: ``normal_method`` "kik-piotrowski" (virtual
-    penetration ``epsilon``) or "hertz-calibrated".
+    ``strip_width`` [m], and the normal problem: ``normal_method`` "hertz-calibrated" (each
+    patch's virtual penetration from Hertz's ellipse for its curvature ratio; the default) or
+    "kik-piotrowski" (one factor ``epsilon``).
 
     Returns a record with ``status`` ("ok", or why not: a status, not an exception), ``message``,
     ``vertical_force``, ``lateral_force`` [N], ``approach`` [m] and ``patches``: each with
@@ -326,7 +327,7 @@ def wear(
     E: float = 200e9,
     nu: float = 0.25,
     strip_width: float = 0.1e-3,
-    normal_method: str = "kik-piotrowski",
+    normal_method: str = "hertz-calibrated",
     epsilon: float = 0.55,
 ) -> Any:
     """One wheel position's wear, as ``wheelwear wear``: the contact of :func:`contact`, each

@@ -59,11 +59,11 @@ TEST(ContactStatusCommand, FlankContactBeyondNadalsLimitIsFlagged) {
 
 // --normal-method: on the flank (CONTACT's y_ws = -8 mm, area 53.6 mm^2, width 1.8 mm with
 // 0.2 mm elements) the Hertz-calibrated patch is within 10 % of CONTACT's area and width
-// (wheel_rail_test.cpp), Kik-Piotrowski's (the default) 28 % and 57 % too large; an unknown
-// method is refused naming the choices.
+// (wheel_rail_test.cpp), Kik-Piotrowski's 28 % and 57 % too large; the calibrated method is
+// the default; an unknown method is refused naming the choices.
 TEST(ContactStatusCommand, NormalMethodChoosesThePatch) {
-  const auto kp = run_wheelwear(pair_args(0.008));
-  const auto calibrated = run_wheelwear(pair_args(0.008) + " --normal-method hertz-calibrated");
+  const auto kp = run_wheelwear(pair_args(0.008) + " --normal-method kik-piotrowski");
+  const auto calibrated = run_wheelwear(pair_args(0.008));
   ASSERT_EQ(kp.exit_code, 0) << kp.err;
   ASSERT_EQ(calibrated.exit_code, 0) << calibrated.err;
   EXPECT_NEAR(*json_number(calibrated.out, "area"), 53.56e-6, 0.10 * 53.56e-6);

@@ -83,7 +83,7 @@ TEST_F(SceneTest, ReadsEveryKeyInSiUnits) {
   EXPECT_EQ(s.scheme, tangential::FastsimScheme::second_order);
   EXPECT_EQ(s.normal_method, contactgeom::KpPenetration::hertz_calibrated);
   EXPECT_EQ(parse_scene(std::string(kState), dir_).normal_method,
-            contactgeom::KpPenetration::fixed);
+            contactgeom::KpPenetration::hertz_calibrated);  // the default
   EXPECT_EQ(s.wear_law, "archard");
   EXPECT_DOUBLE_EQ(s.distance, 1000.0);
   EXPECT_DOUBLE_EQ(s.step_distance, 100.0);

@@ -204,7 +204,7 @@ struct Scene {
   double strip_width = 0.2e-3;  ///< [m]
   /// How the normal problem chooses its virtual penetration: Kik-Piotrowski's fixed epsilon
   /// (virtual_penetration), or Hertz-calibrated per patch.
-  contactgeom::KpPenetration normal_method = contactgeom::KpPenetration::fixed;
+  contactgeom::KpPenetration normal_method = contactgeom::KpPenetration::hertz_calibrated;
   double virtual_penetration = 0.55;  ///< Kik-Piotrowski epsilon [-], with kik-piotrowski
   /// A contact steeper than this is flange climb, its state not worn [rad]
   /// (contactgeom::WheelRailOptions::max_contact_angle).
