@@ -35,14 +35,21 @@ struct ContactArgs {
 };
 
 // Kalker's exact theory on `p`, from the wheel/rail undeformed distance (wheel_rail_exact.hpp).
+// A patch of a blend is its description's problem, at its whole load, with the load and forces
+// weighted by its share as the other methods' are.
 tangential::WheelRailExactSolution exact_patch(const contactgeom::WheelRailPair& pair,
                                                const contactgeom::WheelRailPatch& p,
                                                const ContactArgs& args) {
   tangential::WheelRailExactOptions options;
   options.nx = options.ny = args.exact_grid;
   options.margin = args.exact_margin;
-  return tangential::wheel_rail_exact(pair, args.in.pose, p, args.in.creepages_at(pair, p),
-                                      args.in.mu, options);
+  contactgeom::WheelRailPatch whole = p;
+  whole.normal_force = contactgeom::description_load(p);
+  tangential::WheelRailExactSolution s = tangential::wheel_rail_exact(
+      pair, args.in.pose, whole, args.in.creepages_at(pair, p), args.in.mu, options);
+  s.rolling.normal_force *= p.share;
+  s.rolling.forces = tangential::weighted(s.rolling.forces, p.share);
+  return s;
 }
 
 void check_exact_options(const ContactArgs& args) {

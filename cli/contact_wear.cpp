@@ -49,19 +49,26 @@ ModelWear model_wear(const ContactInputs& in, const contactgeom::WheelRailPair& 
   // The T gamma map needs the cells' positions; the wear alone needs work, slip and pressure.
   options.fastsim.field_set =
       positions ? tangential::CellFieldSet::all : tangential::CellFieldSet::wear;
-  ModelWear out{model,
-                tangential::solve_patch(mp.method, mp.region, in.creepages_at(pair, p),
-                                        {p.normal_force, in.mu}, in.material(), options),
-                {},
-                {}};
+  // A patch of a blend: its description's problem, weighted by its share.
+  ModelWear out{
+      model,
+      tangential::solve_patch(mp.method, mp.region, in.creepages_at(pair, p),
+                              {contactgeom::description_load(p), in.mu}, in.material(), options),
+      {},
+      {}};
   // A grid on the wheel wide enough for every model's region around O, 0.1 mm bins.
   const double reach = 2.0 * std::max(p.sdec.b, hertz ? hertz->b : 0.0) + 2e-3;
   const double ds = 0.1e-3;
   const auto bins = static_cast<std::size_t>(2.0 * reach / ds) + 1;
   out.distribution = wear::WearDistribution::zeros(p.s_wheel - reach, ds, bins);
   wear::accumulate_wear(*out.solution.fields, in.motion.speed, law, {p.s_wheel, p.rolling_radius},
-                        1.0, out.distribution);
+                        p.share, out.distribution);
   out.summary = wear::summarise(out.distribution);
+  if (p.share != 1.0) {
+    out.solution.forces = tangential::weighted(out.solution.forces, p.share);
+    out.solution.frictional_work *= p.share;
+    for (double& w : out.solution.fields->work) w *= p.share;
+  }
   return out;
 }
 

@@ -116,6 +116,8 @@ LoadRoot carry_load(Residual&& residual, double guess, const LoadTolerance& load
       }
       double next = f > -0.5 ? x / (1.0 + f) : 2.0 * x;  // far below the load: no Hertz step
       if (i > 0 && f != f_previous) next = x - f * (x - x_previous) / (f - f_previous);
+      // Unbracketed above, a step at most doubles the approach (a nearly flat secant).
+      if (hi < 0.0 && !(next <= 2.0 * x)) next = 2.0 * x;
       // Steps that leave the bracket found so far go to the regula falsi instead.
       if ((hi > 0.0 && next >= hi) || next <= lo) break;
       x_previous = x;
@@ -124,8 +126,9 @@ LoadRoot carry_load(Residual&& residual, double guess, const LoadTolerance& load
     }
   }
   if (hi < 0.0) {
-    // Every approach tried carries too little: doubling from the largest.
-    for (double x = lo > 0.0 ? 2.0 * lo : 20e-6; x <= kLargestApproach; x *= 2.0) {
+    // Every approach tried carries too little: doubling from the largest, up to the last.
+    for (double x = lo > 0.0 ? std::min(2.0 * lo, kLargestApproach) : 20e-6; lo < kLargestApproach;
+         x = std::min(2.0 * x, kLargestApproach)) {
       const double f = residual(x);
       if (f >= 0.0) {
         hi = x;
@@ -319,7 +322,8 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
   result.approach = d;
   result.status = WheelRailStatus::ok;
   bool at_profile_end = false;
-  for (const Run& run : interpenetration_runs(g, g.h_min + d, reference))
+  // The regions in contact at the approach (a blend's runs may reach beyond them).
+  for (const Run& run : interpenetration_regions(g, g.h_min + d))
     for (std::size_t k : g.end_samples) at_profile_end |= (k == run.first || k == run.last);
   const std::string past = past_flange_reason(geometry, result.patches);
   if (at_jump) {

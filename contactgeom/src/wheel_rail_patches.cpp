@@ -91,8 +91,9 @@ double separation(double prominence, double shallower, double reference) {
 }
 
 // Where the rise whose highest sample is `at` lies between samples: the vertex of the parabola
-// through it and its neighbours, which moves continuously as the highest sample changes (at
-// two equal highest samples it lies half-way between them, seen from either).
+// through it and its neighbours, which moves continuously as the highest sample passes to a
+// neighbour (at two equal highest samples it lies half-way between them, seen from either);
+// a top that moves to a hump further away, past a dip shallower than kBasinRipple, still jumps.
 double cut_position(const GapSamples& g, std::size_t at) {
   double offset = 0.0;
   if (const auto vertex = parabola_vertex(-g.h[at - 1], -g.h[at], -g.h[at + 1]))
@@ -277,7 +278,11 @@ WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch
                                           (r ? geometry.pair().rail.curvature(r->s) : 0.0));
   const double longitudinal = c / (2.0 * p.rolling_radius);
   if (lateral_curvature > 0.0) {
-    p.hertz = hertz_from_load(longitudinal, lateral_curvature, E_star, patch.normal_force);
+    // The description's ellipse, at its whole load; its pressure scaled by the share as the
+    // patch's are.
+    p.hertz = hertz_from_load(longitudinal, lateral_curvature, E_star, patch.normal_force / share);
+    p.hertz->p0 *= share;
+    p.hertz->normal_force *= share;
   }
   return p;
 }

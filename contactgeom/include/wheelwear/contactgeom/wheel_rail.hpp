@@ -78,7 +78,8 @@ struct WheelRailPatch {
   KpPatch kp;              ///< the Kik-Piotrowski strips (s: lateral, + towards the gauge side)
   PatchMeasures measures;  ///< area, length, width, W1, W2 in the contact plane
   Sdec sdec;               ///< Eq. 13-14 regularisation
-  /// Hertz ellipse from the curvatures at O at the same normal force; none where the lateral
+  /// Hertz ellipse from the curvatures at O at the same normal force (a patch of a blend: at
+  /// description_load(), its p0 and normal_force scaled by the share); none where the lateral
   /// relative curvature is not positive.
   std::optional<HertzSolution> hertz;
   double y_wheel = 0.0;  ///< O on the (unrolled) wheel profile, from its origin, + towards the
