@@ -85,6 +85,7 @@ void print_json(const vehicle::VehicleCurving& c, const std::optional<TableRepor
       .add("cant_deficiency", c.cant_deficiency)
       .add("iterations", c.iterations)
       .add("wheelset_evaluations", c.wheelset_evaluations)
+      .add("finished_directly", c.finished_directly)
       .add_raw("car_body", body.str())
       .add_raw("bogies", json_array(bogies))
       .add_raw("wheelsets", json_array(wheelsets));

@@ -126,6 +126,7 @@ void write(WireWriter& w, const std::vector<vehicle::VehicleCurving>& curvings) 
     w.i64(c.iterations);
     w.i64(c.continuation_steps);
     w.flag(c.from_start);
+    w.flag(c.finished_directly);
     w.i64(c.wheelset_evaluations);
     w.text(c.message);
     w.f64(c.cant_deficiency);
@@ -156,6 +157,7 @@ std::vector<vehicle::VehicleCurving> read_curvings(WireReader& r) {
     c.iterations = static_cast<int>(r.i64());
     c.continuation_steps = static_cast<int>(r.i64());
     c.from_start = r.flag();
+    c.finished_directly = r.flag();
     c.wheelset_evaluations = static_cast<int>(r.i64());
     c.message = r.text();
     c.cant_deficiency = r.f64();

@@ -68,6 +68,7 @@ py::dict curving_dict(const cli::CurvingAnswer& answer) {
   out["cant_deficiency"] = c.cant_deficiency;
   out["iterations"] = c.iterations;
   out["wheelset_evaluations"] = c.wheelset_evaluations;
+  out["finished_directly"] = c.finished_directly;
   out["car_body"] = body;
   out["bogies"] = bogies;
   out["wheelsets"] = wheelsets;

@@ -183,6 +183,56 @@ TEST(WheelsetForces, QIsContinuousWhereAStripLeavesTheFlankPatch) {
   EXPECT_EQ(compared, 63);
 }
 
+// The built-in route's R 1500 m curve (80 mm cant, 38.9 m/s) on new profiles with the run's
+// contact model and table: Newton on the interpolated contacts stalls at a kink between two
+// nodes (the leading wheelset 0.2 nm below the node at 4.8 mm, scaled residual 1.04 against 1)
+// in either hand. The direct contacts finish the balance: it is the direct solve's (both meet
+// 1e-7 m g; over lateral stiffnesses of order 10 MN/m that is below 1e-10 m, bound 1e-9), the
+// hands mirror, and every axle rolls freely with the directly evaluated forces (1e-6 of
+// sum |Fx| r, the equilibrium bound of docs/vehicle.md).
+TEST(VehicleCollective, CurvingWithTheTableFinishesDirectlyWhereItsKinksStallNewton) {
+  const Scene scene = default_scene();
+  const StateKernel kernel(scene);
+  const profiles::Profile wheel =
+      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
+  const vehicle::Vehicle coach = vehicle::default_vehicle();
+  const vehicle::WheelsetModel direct = wheelset_model(kernel, wheel, wheel);
+  vehicle::WheelsetModel tabulated = direct;
+  tabulated.table = contact_table(direct, coach);
+  int compared = 0;
+  std::array<vehicle::VehicleCurving, 2> hands;
+  for (int hand = 0; hand < 2; ++hand) {
+    vehicle::SteadyCurve curve;
+    curve.running = {38.9, hand == 0 ? 1500.0 : -1500.0, 0.3};
+    curve.cant = 0.08;
+    const vehicle::VehicleCurving reference =
+        vehicle::solve_vehicle_curving(coach, {direct, direct, direct, direct}, curve);
+    hands[hand] =
+        vehicle::solve_vehicle_curving(coach, {tabulated, tabulated, tabulated, tabulated}, curve);
+    const vehicle::VehicleCurving& c = hands[hand];
+    ASSERT_TRUE(reference.converged && c.converged) << c.message;
+    EXPECT_TRUE(c.finished_directly) << "hand " << hand;
+    for (std::size_t k = 0; k < vehicle::kWheelsets; ++k) {
+      const vehicle::CurvingWheelset& w = c.wheelsets[k];
+      EXPECT_NEAR(w.state.dy, reference.wheelsets[k].state.dy, 1e-9) << k;
+      EXPECT_NEAR(w.state.yaw, reference.wheelsets[k].state.yaw, 1e-9) << k;
+      const vehicle::WheelsetForces f =
+          vehicle::wheelset_forces(direct, w.state, w.load_left, w.load_right, curve.running);
+      double scale = 0.0;
+      for (const vehicle::WheelForces& side : f.wheels)
+        for (const vehicle::PatchForces& p : side.patches)
+          scale += std::abs(p.Fx) * p.rolling_radius;
+      EXPECT_LE(std::abs(f.axle_torque), 1e-6 * scale) << k;
+      compared += 3;
+    }
+  }
+  for (std::size_t k = 0; k < vehicle::kWheelsets; ++k) {
+    EXPECT_NEAR(hands[0].wheelsets[k].state.dy, -hands[1].wheelsets[k].state.dy, 1e-9) << k;
+    ++compared;
+  }
+  EXPECT_EQ(compared, 2 * 4 * 3 + 4);
+}
+
 TEST(VehicleCollective, LubricatedGaugeFaceBoundsFlangePatches) {
   // A flange contact: the leading wheelset pushed to its flange (7.5 mm) with a large angle of
   // attack saturates every patch; each patch's creep force is then bounded by mu N with the

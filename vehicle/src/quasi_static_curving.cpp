@@ -413,6 +413,31 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
   Evaluation e;
   bool converged = false;
   std::string message;
+  // The tabulated contact (WheelsetModel::table) is linear between its nodes, and Newton can
+  // stall at their kinks short of the tolerance: an attempt at the whole curve that fails so is
+  // finished with the contacts evaluated directly, from its last iterate.
+  std::array<WheelsetModel, kWheelsets> direct = wheelsets;
+  bool tabulated = false;
+  for (WheelsetModel& m : direct) {
+    tabulated = tabulated || m.table != nullptr;
+    m.table.reset();
+  }
+  const auto finish_directly = [&] {
+    if (!tabulated) return false;
+    Vector v = u;
+    Evaluation f;
+    std::string why;
+    const CurvingProblem problem(vehicle, direct, curve, options, result.wheelset_evaluations);
+    try {
+      if (!problem.solve(v, f, result.iterations, why)) return false;
+    } catch (const InputError&) {
+      return false;  // the iterate lies beyond the profiles
+    }
+    u = v;
+    e = std::move(f);
+    result.finished_directly = true;
+    return true;
+  };
   if (options.start) {
     u = unknowns(*options.start);
     bool valid = u.allFinite();
@@ -420,7 +445,7 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
     if (valid) {
       const CurvingProblem problem(vehicle, wheelsets, curve, options, result.wheelset_evaluations);
       try {
-        converged = problem.solve(u, e, result.iterations, message);
+        converged = problem.solve(u, e, result.iterations, message) || finish_directly();
         result.from_start = converged;
       } catch (const InputError&) {
         converged = false;  // the start lies beyond the profiles now: start afresh
@@ -434,11 +459,14 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
     if (converged || !fresh) break;
     u = initial_guess(vehicle, curve);
     converged = true;
-    for (int s = 1; s <= steps && converged; ++s) {
+    int s = 1;
+    for (; s <= steps && converged; ++s) {
       const CurvingProblem problem(vehicle, wheelsets, partial_curve(curve, double(s) / steps),
                                    options, result.wheelset_evaluations);
       converged = problem.solve(u, e, result.iterations, message);
     }
+    // Only an attempt that failed at the whole curve is finished directly.
+    if (!converged && s > steps) converged = finish_directly();
     result.continuation_steps = steps;
     if (converged) break;
   }

@@ -87,9 +87,13 @@ struct CurvingOptions {
 /// The solved steady state.
 struct VehicleCurving {
   bool converged = false;
-  int iterations = 0;            ///< Newton iterations, over all continuation steps
-  int continuation_steps = 1;    ///< the curve reached in this many steps of curvature
-  bool from_start = false;       ///< converged from CurvingOptions::start
+  int iterations = 0;          ///< Newton iterations, over all continuation steps
+  int continuation_steps = 1;  ///< the curve reached in this many steps of curvature
+  bool from_start = false;     ///< converged from CurvingOptions::start
+  /// Converged with the contacts evaluated directly, where Newton on the tabulated contacts
+  /// (WheelsetModel::table) stalled at a kink of their interpolation; the balance is then with
+  /// the direct contacts' forces.
+  bool finished_directly = false;
   int wheelset_evaluations = 0;  ///< calls of wheelset_forces
   std::string message;           ///< why, when not converged
   double cant_deficiency = 0.0;  ///< [m]
