@@ -186,10 +186,11 @@ TEST(WheelsetForces, QIsContinuousWhereAStripLeavesTheFlankPatch) {
 // The built-in route's R 1500 m curve (80 mm cant, 38.9 m/s) on new profiles with the run's
 // contact model and table: Newton on the interpolated contacts stalls at a kink between two
 // nodes (the leading wheelset 0.2 nm below the node at 4.8 mm, scaled residual 1.04 against 1)
-// in either hand. The direct contacts finish the balance: it is the direct solve's (both meet
-// 1e-7 m g; over lateral stiffnesses of order 10 MN/m that is below 1e-10 m, bound 1e-9), the
-// hands mirror, and every axle rolls freely with the directly evaluated forces (1e-6 of
-// sum |Fx| r, the equilibrium bound of docs/vehicle.md).
+// in either hand, and its continuation ends further off. The direct contacts finish the
+// balance: it is the direct solve's (both meet 1e-7 m g; measured within 1e-10 m, bound 1e-8:
+// the car body's share of the tolerance acts through the soft secondary suspension), the hands
+// mirror, and every axle rolls freely with the directly evaluated forces (1e-6 of sum |Fx| r,
+// the equilibrium bound of docs/vehicle.md).
 TEST(VehicleCollective, CurvingWithTheTableFinishesDirectlyWhereItsKinksStallNewton) {
   const Scene scene = default_scene();
   const StateKernel kernel(scene);
@@ -214,8 +215,8 @@ TEST(VehicleCollective, CurvingWithTheTableFinishesDirectlyWhereItsKinksStallNew
     EXPECT_TRUE(c.finished_directly) << "hand " << hand;
     for (std::size_t k = 0; k < vehicle::kWheelsets; ++k) {
       const vehicle::CurvingWheelset& w = c.wheelsets[k];
-      EXPECT_NEAR(w.state.dy, reference.wheelsets[k].state.dy, 1e-9) << k;
-      EXPECT_NEAR(w.state.yaw, reference.wheelsets[k].state.yaw, 1e-9) << k;
+      EXPECT_NEAR(w.state.dy, reference.wheelsets[k].state.dy, 1e-8) << k;
+      EXPECT_NEAR(w.state.yaw, reference.wheelsets[k].state.yaw, 1e-8) << k;
       const vehicle::WheelsetForces f =
           vehicle::wheelset_forces(direct, w.state, w.load_left, w.load_right, curve.running);
       double scale = 0.0;
@@ -227,7 +228,7 @@ TEST(VehicleCollective, CurvingWithTheTableFinishesDirectlyWhereItsKinksStallNew
     }
   }
   for (std::size_t k = 0; k < vehicle::kWheelsets; ++k) {
-    EXPECT_NEAR(hands[0].wheelsets[k].state.dy, -hands[1].wheelsets[k].state.dy, 1e-9) << k;
+    EXPECT_NEAR(hands[0].wheelsets[k].state.dy, -hands[1].wheelsets[k].state.dy, 1e-8) << k;
     ++compared;
   }
   EXPECT_EQ(compared, 2 * 4 * 3 + 4);

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "wheelwear/core/input_error.hpp"
 
@@ -414,24 +415,38 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
   bool converged = false;
   std::string message;
   // The tabulated contact (WheelsetModel::table) is linear between its nodes, and Newton can
-  // stall at their kinks short of the tolerance: an attempt at the whole curve that fails so is
-  // finished with the contacts evaluated directly, from its last iterate.
-  std::array<WheelsetModel, kWheelsets> direct = wheelsets;
-  bool tabulated = false;
-  for (WheelsetModel& m : direct) {
-    tabulated = tabulated || m.table != nullptr;
-    m.table.reset();
-  }
+  // stall at their kinks short of the tolerance. Where every attempt on the table fails, the
+  // attempt at the whole curve that came nearest is finished with the contacts evaluated
+  // directly.
+  std::optional<Vector> nearest;
+  double nearest_residual = std::numeric_limits<double>::infinity();
+  bool nearest_from_start = false;
+  const auto remember = [&](const CurvingProblem& problem, bool from_start) {
+    const double residual = problem.scaled(e).norm();
+    if (residual < nearest_residual) {
+      nearest_residual = residual;
+      nearest = u;
+      nearest_from_start = from_start;
+    }
+  };
   const auto finish_directly = [&] {
-    if (!tabulated) return false;
-    Vector v = u;
+    const bool tabulated = std::any_of(wheelsets.begin(), wheelsets.end(),
+                                       [](const WheelsetModel& m) { return m.table != nullptr; });
+    if (!tabulated || !nearest) return false;
+    std::array<WheelsetModel, kWheelsets> direct = wheelsets;
+    for (WheelsetModel& m : direct) m.table.reset();
+    Vector v = *nearest;
     Evaluation f;
     std::string why;
     const CurvingProblem problem(vehicle, direct, curve, options, result.wheelset_evaluations);
     try {
-      if (!problem.solve(v, f, result.iterations, why)) return false;
-    } catch (const InputError&) {
-      return false;  // the iterate lies beyond the profiles
+      if (!problem.solve(v, f, result.iterations, why)) {
+        message += "; finished with direct contacts: " + why;
+        return false;
+      }
+    } catch (const InputError& error) {
+      message += std::string("; finished with direct contacts: ") + error.what();
+      return false;
     }
     u = v;
     e = std::move(f);
@@ -445,11 +460,12 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
     if (valid) {
       const CurvingProblem problem(vehicle, wheelsets, curve, options, result.wheelset_evaluations);
       try {
-        converged = problem.solve(u, e, result.iterations, message) || finish_directly();
-        result.from_start = converged;
+        converged = problem.solve(u, e, result.iterations, message);
+        if (!converged) remember(problem, true);
       } catch (const InputError&) {
         converged = false;  // the start lies beyond the profiles now: start afresh
       }
+      result.from_start = converged;
     }
   }
   // Straight to the curve first; where that fails (a flange contact Newton overshoots), in
@@ -459,16 +475,17 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
     if (converged || !fresh) break;
     u = initial_guess(vehicle, curve);
     converged = true;
-    int s = 1;
-    for (; s <= steps && converged; ++s) {
+    for (int s = 1; s <= steps && converged; ++s) {
       const CurvingProblem problem(vehicle, wheelsets, partial_curve(curve, double(s) / steps),
                                    options, result.wheelset_evaluations);
       converged = problem.solve(u, e, result.iterations, message);
+      if (!converged && s == steps) remember(problem, false);
     }
-    // Only an attempt that failed at the whole curve is finished directly.
-    if (!converged && s > steps) converged = finish_directly();
     result.continuation_steps = steps;
-    if (converged) break;
+  }
+  if (!converged) {
+    converged = finish_directly();
+    result.from_start = converged && nearest_from_start;
   }
   result.converged = converged;
   if (!converged) result.message = message;

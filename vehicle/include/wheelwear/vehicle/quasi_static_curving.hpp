@@ -90,8 +90,9 @@ struct VehicleCurving {
   int iterations = 0;          ///< Newton iterations, over all continuation steps
   int continuation_steps = 1;  ///< the curve reached in this many steps of curvature
   bool from_start = false;     ///< converged from CurvingOptions::start
-  /// Converged with the contacts evaluated directly, where Newton on the tabulated contacts
-  /// (WheelsetModel::table) stalled at a kink of their interpolation; the balance is then with
+  /// Converged with the contacts evaluated directly: every attempt on the tabulated contacts
+  /// (WheelsetModel::table) failed (Newton can stall at a kink of their interpolation), and the
+  /// one at the whole curve that came nearest was finished directly; the balance is then with
   /// the direct contacts' forces.
   bool finished_directly = false;
   int wheelset_evaluations = 0;  ///< calls of wheelset_forces
