@@ -68,7 +68,7 @@ void print_json(const vehicle::VehicleCurving& c, const std::optional<TableRepor
         .add("roll", w.forces.contact.roll)
         .add("Fx_axle", w.forces.Fx_axle)
         .add("axle_torque", w.forces.axle_torque)
-        .add("sum_Y", w.forces.wheels[0].Y + w.forces.wheels[1].Y)
+        .add("sum_Y", w.forces.lateral)  // Y_right - Y_left: the rails' lateral force, + left
         .add("status", wheelset_status(w.forces))
         .add_raw("wheels", json_array({wheel_json(w.forces.wheels[0], "left"),
                                        wheel_json(w.forces.wheels[1], "right")}));
@@ -157,6 +157,10 @@ void curving(const CurvingArgs& args) {
     if (table)
       std::printf("contact table: %zu shifts x %zu loads, %d contact solves, built in %.2f s\n",
                   table->shifts, table->load_levels, table->contact_solves, table->seconds);
+    if (c.finished_directly)
+      std::printf(
+          "the attempts on the contact table did not converge; the balance above is "
+          "with direct contacts\n");
   }
   // Computed but no balance: the last iterate is printed, and the command fails with exit
   // status 3 (docs/cli.md).

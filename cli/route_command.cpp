@@ -3,6 +3,7 @@
 // and the load collective its states make.
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -51,6 +52,11 @@ pipeline::VehicleRun vehicle_run(const pipeline::Scene& scene, const RouteArgs& 
   if (!args.vehicle.empty()) run.vehicle = vehicle::read_vehicle(args.vehicle);
   if (!args.route.empty()) run.route = vehicle::read_route(args.route);
   if (args.quasi_static) run.time_domain.enabled = false;
+  // The scene's route was checked with the scene (its warnings are the scene's); a route given
+  // here is checked here.
+  if (!args.route.empty())
+    for (const std::string& w : run.route.validate())
+      std::cerr << "wheelwear: warning: " << w << "\n";
   return run;
 }
 
@@ -72,31 +78,37 @@ CaseExtremes extremes(const vehicle::VehicleCurving& c) {
 
 // The time-domain pieces: per piece the leading wheelset's motion and the largest Y/Q.
 void print_pieces(const pipeline::VehicleCollective& v) {
-  std::printf("\n%-28s %7s %6s %7s %5s | %-27s | %6s\n", "time-domain piece", "length", "V",
+  int width = 17;  // the labels whole: "section 2, transition, R 6000 m" names its radius
+  for (const pipeline::DynamicPiece& d : v.pieces)
+    width = std::max(width, static_cast<int>(d.label.size()));
+  std::printf("\n%-*s %7s %6s %7s %5s | %-27s | %6s\n", width, "time-domain piece", "length", "V",
               "samples", "done", "leading wheelset dy rms/max", "Y/Q");
-  std::printf("%-28s %7s %6s %7s %5s | %-27s | %6s\n", "", "[m]", "[m/s]", "", "",
+  std::printf("%-*s %7s %6s %7s %5s | %-27s | %6s\n", width, "", "[m]", "[m/s]", "", "",
               "[mm] / [mm], aoa rms [mrad]", "max");
   for (std::size_t i = 0; i < v.pieces.size(); ++i) {
     const pipeline::DynamicPiece& d = v.pieces[i];
     const pipeline::PieceRun& r = v.piece_runs[i];
     double y_over_q = 0.0;
     for (double q : r.y_over_q) y_over_q = std::max(y_over_q, q);
-    std::printf("%-28.28s %7.0f %6.1f %7d %5s | %6.3f / %6.3f, %6.3f  | %6.3f\n", d.label.c_str(),
-                d.length_m, d.speed, r.samples[0], r.completed ? "yes" : "NO", r.dy_rms[0] * 1e3,
-                r.dy_max[0] * 1e3, r.yaw_rms[0] * 1e3, y_over_q);
+    std::printf("%-*s %7.0f %6.1f %7d %5s | %6.3f / %6.3f, %6.3f  | %6.3f\n", width,
+                d.label.c_str(), d.length_m, d.speed, r.samples[0], r.completed ? "yes" : "NO",
+                r.dy_rms[0] * 1e3, r.dy_max[0] * 1e3, r.yaw_rms[0] * 1e3, y_over_q);
   }
 }
 
 void print_text(const pipeline::VehicleCollective& v, double seconds) {
-  std::printf("%-28s %7s %6s %6s %6s %5s | %-23s | %6s %6s\n", "condition", "R [m]", "cant", "V",
-              "share", "conv", "leading wheelset dy/aoa", "Y/Q", "angle");
-  std::printf("%-28s %7s %6s %6s %6s %5s | %-23s | %6s %6s\n", "", "", "[mm]", "[m/s]", "[%]", "",
-              "[mm] / [mrad]", "max", "[deg]");
+  int width = 9;  // the labels whole
+  for (const pipeline::RouteCase& rc : v.cases)
+    width = std::max(width, static_cast<int>(rc.label.size()));
+  std::printf("%-*s %7s %6s %6s %6s %5s | %-23s | %6s %6s\n", width, "condition", "R [m]", "cant",
+              "V", "share", "conv", "leading wheelset dy/aoa", "Y/Q", "angle");
+  std::printf("%-*s %7s %6s %6s %6s %5s | %-23s | %6s %6s\n", width, "", "", "[mm]", "[m/s]", "[%]",
+              "", "[mm] / [mrad]", "max", "[deg]");
   for (std::size_t i = 0; i < v.cases.size(); ++i) {
     const pipeline::RouteCase& rc = v.cases[i];
     const vehicle::VehicleCurving& c = v.curving[i];
     const CaseExtremes e = extremes(c);
-    std::printf("%-28.28s %7.0f %6.0f %6.1f %6.2f %5s | %9.3f / %9.3f   | %6.3f %6.1f\n",
+    std::printf("%-*s %7.0f %6.0f %6.1f %6.2f %5s | %9.3f / %9.3f   | %6.3f %6.1f\n", width,
                 rc.label.c_str(), rc.curve.running.curve_radius, rc.curve.cant * 1e3,
                 rc.curve.running.speed, rc.share * 100.0, c.converged ? "yes" : "NO",
                 c.wheelsets[0].state.dy * 1e3, c.wheelsets[0].state.yaw * 1e3, e.y_over_q,
@@ -202,6 +214,7 @@ void route(const RouteArgs& args) {
   const auto threads = thread_limit(args.threads);
   const pipeline::Scene scene =
       args.scene.empty() ? pipeline::default_scene() : pipeline::load_scene(args.scene);
+  for (const std::string& w : scene.warnings) std::cerr << "wheelwear: warning: " << w << "\n";
   const pipeline::VehicleRun run = vehicle_run(scene, args);
   const pipeline::StateKernel kernel(scene);
   const profiles::Profile wheel =

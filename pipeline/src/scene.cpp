@@ -453,6 +453,8 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
     // A route that cannot be run backwards is refused now, not at the first solve.
     if (s.vehicle_run->direction != RunningDirection::forward)
       (void)vehicle::reversed(s.vehicle_run->route);
+    // A cant deficiency above what EN 13803 admits is a warning (Route::validate).
+    for (const std::string& w : s.vehicle_run->route.validate()) s.warnings.push_back(w);
     return s;
   }
   if (s.states.empty()) {

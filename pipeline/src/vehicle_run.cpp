@@ -341,6 +341,25 @@ vehicle::WheelsetModel wheelset_model(const StateKernel& kernel, const profiles:
   return model;
 }
 
+void require_upright_route(const VehicleRun& run, double lateral_arm) {
+  const std::vector<vehicle::RouteSection>& sections = run.route.sections;
+  for (std::size_t i = 0; i < sections.size(); ++i) {
+    const vehicle::RouteSection& section = sections[i];
+    if (section.radius_m == 0.0) continue;  // tangent track, or a transition ending on it
+    vehicle::SteadyCurve curve;
+    curve.running.speed = section.speed_m_s;
+    curve.running.curve_radius = section.radius_m;
+    curve.cant = section.cant_m;
+    try {
+      vehicle::require_upright(run.vehicle, curve, lateral_arm);
+    } catch (const InputError& e) {
+      throw InputError("route section " + std::to_string(i + 1) +
+                       (section.name.empty() ? "" : " (\"" + section.name + "\")") + ": " +
+                       e.what());
+    }
+  }
+}
+
 std::shared_ptr<const contactgeom::WheelsetContactTable> contact_table(
     const vehicle::WheelsetModel& model, const vehicle::Vehicle& vehicle) {
   // Loads from a quarter of the static wheel load to three times it: beyond the quasi-static
@@ -428,8 +447,12 @@ vehicle::VehicleCurving RouteSolver::solve(const CaseTask& task) const {
     // spent all 60, 40 % of the run's time, before it kept the earlier balance anyway.
     options.max_iterations = 20;
   }
-  return vehicle::solve_vehicle_curving(way(route_case.reversed).vehicle,
-                                        models(route_case.reversed), route_case.curve, options);
+  try {
+    return vehicle::solve_vehicle_curving(way(route_case.reversed).vehicle,
+                                          models(route_case.reversed), route_case.curve, options);
+  } catch (const InputError& e) {
+    throw InputError("route condition \"" + route_case.label + "\": " + e.what());
+  }
 }
 
 std::vector<vehicle::VehicleCurving> RouteExecutor::cases(const RouteSolver& solver,

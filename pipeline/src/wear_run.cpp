@@ -366,6 +366,7 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
     for (const std::string& w : scene.warnings) options.warning(w);
   // Everything that can fail on input fails before the file is created.
   detail::check_hook_allowed(scene, options);
+  if (scene.vehicle_run) require_upright_route(*scene.vehicle_run, scene.lateral_arm);
   const CollectiveEvaluator evaluator(scene);
   LoopStart start{0, 0.0, new_profiles(scene)};
   start.initial = start.worn;

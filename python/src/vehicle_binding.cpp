@@ -44,7 +44,7 @@ py::dict curving_dict(const cli::CurvingAnswer& answer) {
     o["roll"] = w.forces.contact.roll;
     o["Fx_axle"] = w.forces.Fx_axle;
     o["axle_torque"] = w.forces.axle_torque;
-    o["sum_Y"] = w.forces.wheels[0].Y + w.forces.wheels[1].Y;
+    o["sum_Y"] = w.forces.lateral;  // Y_right - Y_left, as the results file
     o["status"] = wheelset_status(w.forces);
     py::list wheels;
     wheels.append(wheel_dict(w.forces.wheels[0], "left"));

@@ -78,6 +78,51 @@ TEST_F(OutputRule, CurvingWithoutABalanceExitsWithThree) {
   EXPECT_NE(r.err.find("wheelwear: failed: curving did not converge"), std::string::npos) << r.err;
 }
 
+// A curve whose unbalanced lateral acceleration would lift the centred vehicle's inner wheels
+// (R 300 m, no cant, 40 m/s: 0.815 m of cant deficiency, 5.3 m/s^2) has no balance to solve:
+// `curving` and a run on a route with it are refused as bad input (status 2) with the curve, its
+// cant deficiency and the fix named, and the run before its results file is created. The
+// -2.4 kN is the centred coach's inner wheel load, W/2 - (moment of the weights' and the
+// centrifugal forces about the rail) / (2 x 0.75 m), printed by the vehicle library's wheel_loads.
+TEST_F(OutputRule, AnOverturningCurveIsRefusedBeforeAnythingIsWritten) {
+  const auto c = run_wheelwear("curving --radius 300 --cant 0 --speed 40");
+  EXPECT_EQ(c.exit_code, 2) << c.err;
+  EXPECT_NE(c.err.find("the vehicle overturns in this curve: at R 300 m, cant 0 m and 40 m/s "
+                       "(cant deficiency 0.815 m) its right wheels carry -2.4 kN"),
+            std::string::npos)
+      << c.err;
+  write("fast.toml",
+        "[route]\nspeed_m_s = 40\n[[section]]\nkind = \"tangent\"\nlength_m = 300\n"
+        "[[section]]\nkind = \"curve\"\nlength_m = 500\nradius_m = 300\ncant_m = 0\n"
+        "name = \"R300 too fast\"\n");
+  write("scene.toml", "[vehicle]\nfile = \"default\"\n[route]\nfile = \"" +
+                          (dir_ / "fast.toml").string() + "\"\n[time_domain]\nenabled = false\n");
+  const auto r =
+      run_wheelwear("run " + (dir_ / "scene.toml").string() + " -o " + (dir_ / "out.h5").string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("route section 2 (\"R300 too fast\"): the vehicle overturns"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("wheelwear: warning: "), std::string::npos) << r.err;  // above 0.3 m
+  EXPECT_FALSE(fs::exists(dir_ / "out.h5"));
+}
+
+// sum_Y of `curving --json` is the rails' lateral force on the wheelset (+ left), Y_right - Y_left
+// as the results file's vehicle/cases/sum_Y: zero for the symmetric vehicle centred on tangent
+// track (where Y_left + Y_right, what it was, is twice a wheel's gravitational Y, 1.6 kN).
+TEST_F(OutputRule, CurvingsSumYIsTheWheelsetsLateralForce) {
+  const auto r = run_wheelwear("curving --radius 0 --cant 0 --speed 30 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::regex sum_y(R"re("sum_Y": ([-+0-9.eE]+))re");
+  int compared = 0;
+  for (auto it = std::sregex_iterator(r.out.begin(), r.out.end(), sum_y);
+       it != std::sregex_iterator(); ++it) {
+    EXPECT_NEAR(std::stod((*it)[1].str()), 0.0, 1e-6) << r.out.substr(0, 300);
+    ++compared;
+  }
+  EXPECT_EQ(compared, 4);
+}
+
 std::string text_of(const fs::path& path) {
   std::ifstream in(path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};

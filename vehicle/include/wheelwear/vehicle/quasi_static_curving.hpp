@@ -90,10 +90,10 @@ struct VehicleCurving {
   int iterations = 0;          ///< Newton iterations, over all continuation steps
   int continuation_steps = 1;  ///< the curve reached in this many steps of curvature
   bool from_start = false;     ///< converged from CurvingOptions::start
-  /// Converged with the contacts evaluated directly: every attempt on the tabulated contacts
+  /// Converged with the contacts evaluated directly: the attempts on the tabulated contacts
   /// (WheelsetModel::table) failed (Newton can stall at a kink of their interpolation), and the
-  /// one at the whole curve that came nearest was finished directly; the balance is then with
-  /// the direct contacts' forces.
+  /// solve went on with direct contacts, from the nearest attempt or afresh; the balance is then
+  /// with the direct contacts' forces.
   bool finished_directly = false;
   int wheelset_evaluations = 0;  ///< calls of wheelset_forces
   std::string message;           ///< why, when not converged
@@ -120,5 +120,11 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
 std::array<double, 2> wheel_loads(const Vehicle& vehicle, const SteadyCurve& curve,
                                   double lateral_arm, double car_body_y, double bogie_y,
                                   double wheelset_y);
+
+/// Throws InputError where `curve`'s unbalanced lateral acceleration unloads a wheel of the
+/// centred vehicle (wheel_loads with every body centred, `lateral_arm` as WheelsetModel's): the
+/// vehicle overturns there and no balance exists. The message names the curve, the cant
+/// deficiency and the fix.
+void require_upright(const Vehicle& vehicle, const SteadyCurve& curve, double lateral_arm);
 
 }  // namespace wheelwear::vehicle
