@@ -149,7 +149,9 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
               at(last, "distance") / 1e3);
   // The change in its own column, to the micrometre: a short run's change is far below the
   // values' last digit.
-  std::printf("  %-22s %10s %10s %12s\n", "", "start", "end", "change");
+  // With a profile per wheel, the first one's (the group it is stored in).
+  std::printf("  %-22s %10s %10s %12s\n", wheel == "wheel" ? "" : wheel.c_str(), "start", "end",
+              "change");
   for (const char* name : {"Sh", "Sd", "qR"}) {
     const double start = at(0, wheel + "/" + name) * 1e3, end = at(last, wheel + "/" + name) * 1e3;
     std::printf("  %-22s %10.3f %10.3f %+12.4f\n", (std::string(name) + " [mm]").c_str(), start,

@@ -15,6 +15,33 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Why HDF5 failed, in its own words: the most specific message of its error stack ("truncated
+// file: eof = ...", "file signature not found"), which the C++ exception's "H5Fopen failed"
+// leaves out; the exception's message where the stack holds none.
+std::string hdf5_reason(const H5::Exception& error) {
+  std::string deepest;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_UPWARD,
+      [](unsigned n, const H5E_error2_t* e, void* data) -> herr_t {
+        if (n == 0 && e->desc) *static_cast<std::string*>(data) = e->desc;
+        return 0;
+      },
+      &deepest);
+  if (deepest.empty()) return error.getDetailMsg();
+  // One line: some descriptions carry line breaks (messages and CSV summaries are line-based).
+  for (char& c : deepest)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!deepest.empty() && deepest.back() == ' ') deepest.pop_back();
+  return deepest;
+}
+
+// The message for a file HDF5 cannot read at all.
+std::string unreadable(const fs::path& path, const H5::Exception& error) {
+  return "results file " + path.string() + ": unreadable HDF5 (" + hdf5_reason(error) +
+         "): the file is damaged or was copied incompletely (a run that is killed keeps its "
+         "file readable); copy it again, or start a new run with -o";
+}
+
 int read_int_attribute(const H5::H5Object& object, const std::string& name) {
   int value = 0;
   object.openAttribute(name).read(H5::PredType::NATIVE_INT, &value);
@@ -40,6 +67,8 @@ void collect_numeric_datasets(const H5::Group& group, const std::string& prefix,
 
 ResultsFile ResultsFile::read(const fs::path& path) {
   if (!fs::exists(path)) throw InputError("results file " + path.string() + ": does not exist");
+  if (fs::is_directory(path))
+    throw InputError("results file " + path.string() + ": is a folder, not a results file");
   try {
     H5::Exception::dontPrint();
     H5::H5File file(path.string(), H5F_ACC_RDONLY);
@@ -51,8 +80,7 @@ ResultsFile ResultsFile::read(const fs::path& path) {
     const int steps = read_int_attribute(file.openGroup("/steps"), "completed_steps");
     return ResultsFile(path, text, steps);
   } catch (const H5::Exception& error) {
-    throw InputError("results file " + path.string() + ": unreadable HDF5 (" +
-                     error.getDetailMsg() + ")");
+    throw InputError(unreadable(path, error));
   }
 }
 
@@ -72,7 +100,7 @@ std::vector<double> ResultsFile::read_array(const std::string& full) const {
     return values;
   } catch (const H5::Exception& error) {
     throw InputError("results file " + path_.string() + ": cannot read " + full + " (" +
-                     error.getDetailMsg() + ")");
+                     hdf5_reason(error) + ")");
   }
 }
 
@@ -99,7 +127,7 @@ std::vector<std::string> ResultsFile::array_names(const std::string& group) cons
     collect_numeric_datasets(file.openGroup(group), "", names);
   } catch (const H5::Exception& error) {
     throw InputError("results file " + path_.string() + ": cannot list " + group + " (" +
-                     error.getDetailMsg() + ")");
+                     hdf5_reason(error) + ")");
   }
   std::sort(names.begin(), names.end());
   return names;
@@ -112,8 +140,7 @@ int ResultsFile::format_version() const {
     const H5::Group root = file.openGroup("/");
     return root.attrExists("format_version") ? read_int_attribute(root, "format_version") : 1;
   } catch (const H5::Exception& error) {
-    throw InputError("results file " + path_.string() + ": unreadable HDF5 (" +
-                     error.getDetailMsg() + ")");
+    throw InputError(unreadable(path_, error));
   }
 }
 
@@ -129,7 +156,7 @@ std::optional<std::string> ResultsFile::root_attribute(const std::string& name) 
     return value;
   } catch (const H5::Exception& error) {
     throw InputError("results file " + path_.string() + ": cannot read attribute " + name + " (" +
-                     error.getDetailMsg() + ")");
+                     hdf5_reason(error) + ")");
   }
 }
 
@@ -144,7 +171,7 @@ std::optional<std::string> ResultsFile::read_text(const std::string& full) const
     return text;
   } catch (const H5::Exception& error) {
     throw InputError("results file " + path_.string() + ": cannot read " + full + " (" +
-                     error.getDetailMsg() + ")");
+                     hdf5_reason(error) + ")");
   }
 }
 
@@ -178,7 +205,7 @@ std::vector<BytesRecord> ResultsFile::read_bytes(const std::string& group) const
     }
   } catch (const H5::Exception& error) {
     throw InputError("results file " + path_.string() + ": cannot read " + group + " (" +
-                     error.getDetailMsg() + ")");
+                     hdf5_reason(error) + ")");
   }
   return records;
 }

@@ -302,7 +302,12 @@ RoutePlan route_plan(const VehicleRun& run) {
   for (RouteCase& c : back.cases) {
     c.share *= part;
     c.reversed = true;
-    c.label = "backwards, " + c.label;
+    // Its name is the route's, written for the forward way: say which hand the curve is now.
+    const double radius = c.curve.running.curve_radius;
+    c.label = "backwards, " + c.label +
+              (radius > 0.0   ? " (right-hand this way)"
+               : radius < 0.0 ? " (left-hand this way)"
+                              : "");
     plan.cases.push_back(std::move(c));
   }
   const std::size_t sections = run.route.sections.size();
@@ -345,13 +350,15 @@ void require_upright_route(const VehicleRun& run, double lateral_arm) {
   const std::vector<vehicle::RouteSection>& sections = run.route.sections;
   for (std::size_t i = 0; i < sections.size(); ++i) {
     const vehicle::RouteSection& section = sections[i];
-    if (section.radius_m == 0.0) continue;  // tangent track, or a transition ending on it
     vehicle::SteadyCurve curve;
     curve.running.speed = section.speed_m_s;
     curve.running.curve_radius = section.radius_m;
+    curve.running.friction = section.friction_top;
     curve.cant = section.cant_m;
+    curve.traction = section.traction_N;
     try {
       vehicle::require_upright(run.vehicle, curve, lateral_arm);
+      vehicle::require_adhesion(run.vehicle, curve, lateral_arm);
     } catch (const InputError& e) {
       throw InputError("route section " + std::to_string(i + 1) +
                        (section.name.empty() ? "" : " (\"" + section.name + "\")") + ": " +

@@ -91,6 +91,13 @@ TEST_F(OutputRule, AnOverturningCurveIsRefusedBeforeAnythingIsWritten) {
                        "(cant deficiency 0.815 m) its right wheels carry -2.4 kN"),
             std::string::npos)
       << c.err;
+  // Traction beyond a powered axle's adhesion (0.3 x 109.7 kN) is refused the same way.
+  const auto t = run_wheelwear("curving --radius 1000 --cant 0.1 --speed 33 --traction 1e5");
+  EXPECT_EQ(t.exit_code, 2) << t.err;
+  EXPECT_NE(t.err.find("traction of 100.0 kN per powered axle is beyond the adhesion of "
+                       "wheelset 1"),
+            std::string::npos)
+      << t.err;
   write("fast.toml",
         "[route]\nspeed_m_s = 40\n[[section]]\nkind = \"tangent\"\nlength_m = 300\n"
         "[[section]]\nkind = \"curve\"\nlength_m = 500\nradius_m = 300\ncant_m = 0\n"
@@ -105,6 +112,30 @@ TEST_F(OutputRule, AnOverturningCurveIsRefusedBeforeAnythingIsWritten) {
       << r.err;
   EXPECT_NE(r.err.find("wheelwear: warning: "), std::string::npos) << r.err;  // above 0.3 m
   EXPECT_FALSE(fs::exists(dir_ / "out.h5"));
+}
+
+// A results file HDF5 cannot read is named with HDF5's own reason and the fix, where it said
+// only "H5Fopen failed": an empty file and a text file have no signature, a copy cut short is
+// truncated (its size against the size it records). Nothing is written to them.
+TEST_F(OutputRule, ADamagedResultsFileIsRefusedWithHdf5sReason) {
+  run(small_scene(1e3, 1e3, 1e-3), dir_ / "whole.h5");
+  fs::copy_file(dir_ / "whole.h5", dir_ / "cut.h5");
+  fs::resize_file(dir_ / "cut.h5", fs::file_size(dir_ / "whole.h5") / 3);
+  write("empty.h5", "");
+  write("text.h5", "hello\n");
+  int compared = 0;
+  for (const auto& [name, reason] : {std::pair{"cut.h5", "truncated file: eof = "},
+                                     {"empty.h5", "file signature not found"},
+                                     {"text.h5", "file signature not found"}}) {
+    const auto size = fs::file_size(dir_ / name);
+    const auto r = run_wheelwear("run --resume " + (dir_ / name).string());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(std::string("unreadable HDF5 (") + reason), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("copy it again, or start a new run with -o"), std::string::npos) << r.err;
+    EXPECT_EQ(fs::file_size(dir_ / name), size) << name;
+    compared += 4;
+  }
+  EXPECT_EQ(compared, 12);
 }
 
 // sum_Y of `curving --json` is the rails' lateral force on the wheelset (+ left), Y_right - Y_left

@@ -30,13 +30,26 @@ class SweepTest : public WearRunTest {
     return write("sweep.toml", "scene = \"base.toml\"\noutput_dir = \"runs\"\ncombine = \"" +
                                    combine + "\"\n[vary]\n" + vary);
   }
+  // The rows of a CSV file; a quoted cell may hold commas and doubled quotes (RFC 4180).
   static std::vector<std::vector<std::string>> csv(const fs::path& file) {
     std::vector<std::vector<std::string>> rows;
     std::ifstream in(file);
     for (std::string line; std::getline(in, line);) {
-      std::vector<std::string> cells;
-      std::stringstream cells_in(line);
-      for (std::string cell; std::getline(cells_in, cell, ',');) cells.push_back(cell);
+      std::vector<std::string> cells(1);
+      bool quoted = false;
+      for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+          cells.back() += '"';
+          ++i;
+        } else if (c == '"') {
+          quoted = !quoted;
+        } else if (c == ',' && !quoted) {
+          cells.emplace_back();
+        } else {
+          cells.back() += c;
+        }
+      }
       rows.push_back(cells);
     }
     return rows;

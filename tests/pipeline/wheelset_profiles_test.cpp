@@ -142,7 +142,12 @@ TEST(WheelsetProfiles, BackwardPiecesRunTheReversedRoute) {
   const RoutePlan plan = route_plan(run);
   ASSERT_EQ(plan.pieces.size(), 4u);  // the transition and the tangent, each way
   double total = 0.0;
-  for (const RouteCase& c : plan.cases) total += c.share;
+  for (const RouteCase& c : plan.cases) {
+    total += c.share;
+    // A curve's name is the forward way's: backwards its label says the hand it has now.
+    if (c.reversed && c.curve.running.curve_radius < 0.0)
+      EXPECT_NE(c.label.find("(left-hand this way)"), std::string::npos) << c.label;
+  }
   for (const DynamicPiece& p : plan.pieces) {
     total += p.share;
     EXPECT_EQ(plan.cases[p.start_case].reversed, p.reversed);

@@ -408,6 +408,27 @@ void require_upright(const Vehicle& vehicle, const SteadyCurve& curve, double la
   throw InputError(text);
 }
 
+void require_adhesion(const Vehicle& vehicle, const SteadyCurve& curve, double lateral_arm) {
+  if (curve.traction == 0.0) return;
+  for (int k = 0; k < kWheelsets; ++k) {
+    // A powered axle carries its traction or braking through the creep forces, at most
+    // mu (Q_left + Q_right): beyond it the wheels slip or slide and no balance exists.
+    if (!vehicle.powered[static_cast<std::size_t>(k)]) continue;
+    const auto loads = wheel_loads(vehicle, curve, lateral_arm, 0.0, 0.0, 0.0);
+    const double adhesion = curve.running.friction * (loads[0] + loads[1]);
+    if (std::abs(curve.traction) < adhesion) continue;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%s of %.1f kN per powered axle is beyond the adhesion of wheelset %d, "
+                  "friction %g times its %.1f kN of wheel load = %.1f kN: its wheels %s; "
+                  "give at most that",
+                  curve.traction > 0.0 ? "traction" : "braking", std::abs(curve.traction) * 1e-3,
+                  k + 1, curve.running.friction, (loads[0] + loads[1]) * 1e-3, adhesion * 1e-3,
+                  curve.traction > 0.0 ? "would slip" : "would slide");
+    throw InputError(text);
+  }
+}
+
 VehiclePlacement placement_of(const VehicleCurving& curving) {
   VehiclePlacement p;
   p.car_body = curving.car_body;
@@ -425,7 +446,10 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
   require(std::isfinite(options.force_tolerance) && options.force_tolerance > 0.0,
           "force tolerance", options.force_tolerance, "must be positive");
 
-  for (int k = 0; k < kWheelsets; ++k) require_upright(vehicle, curve, wheelsets[k].lateral_arm);
+  for (int k = 0; k < kWheelsets; ++k) {
+    require_upright(vehicle, curve, wheelsets[k].lateral_arm);
+    require_adhesion(vehicle, curve, wheelsets[k].lateral_arm);
+  }
   VehicleCurving result;
   result.cant_deficiency = curve.cant_deficiency();
   Vector u = initial_guess(vehicle, curve);

@@ -127,4 +127,9 @@ std::array<double, 2> wheel_loads(const Vehicle& vehicle, const SteadyCurve& cur
 /// deficiency and the fix.
 void require_upright(const Vehicle& vehicle, const SteadyCurve& curve, double lateral_arm);
 
+/// Throws InputError where `curve`'s traction or braking (SteadyCurve::traction, per powered
+/// axle) reaches the adhesion of a powered axle of the centred vehicle, friction times its wheel
+/// loads: its wheels would slip or slide and no balance exists.
+void require_adhesion(const Vehicle& vehicle, const SteadyCurve& curve, double lateral_arm);
+
 }  // namespace wheelwear::vehicle
