@@ -347,22 +347,16 @@ vehicle::WheelsetModel wheelset_model(const StateKernel& kernel, const profiles:
 }
 
 void require_upright_route(const VehicleRun& run, double lateral_arm) {
-  const std::vector<vehicle::RouteSection>& sections = run.route.sections;
-  for (std::size_t i = 0; i < sections.size(); ++i) {
-    const vehicle::RouteSection& section = sections[i];
-    vehicle::SteadyCurve curve;
-    curve.running.speed = section.speed_m_s;
-    curve.running.curve_radius = section.radius_m;
-    curve.running.friction = section.friction_top;
-    curve.cant = section.cant_m;
-    curve.traction = section.traction_N;
+  // Every condition the run solves (curves, transitions, the pieces' starting states; both
+  // ways), each at its own speed and traction.
+  // (The wheel loads of the centred vehicle are alike for every wheelset, so either way's
+  // order of the wheelsets gives the same.)
+  for (const RouteCase& c : route_plan(run).cases) {
     try {
-      vehicle::require_upright(run.vehicle, curve, lateral_arm);
-      vehicle::require_adhesion(run.vehicle, curve, lateral_arm);
+      vehicle::require_upright(run.vehicle, c.curve, lateral_arm);
+      vehicle::require_adhesion(run.vehicle, c.curve, lateral_arm);
     } catch (const InputError& e) {
-      throw InputError("route section " + std::to_string(i + 1) +
-                       (section.name.empty() ? "" : " (\"" + section.name + "\")") + ": " +
-                       e.what());
+      throw InputError("route condition \"" + c.label + "\": " + e.what());
     }
   }
 }

@@ -455,6 +455,7 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
                      "); resuming would mix the two: start a new run with -o");
   }
   detail::check_hook_allowed(scene, options);
+  if (scene.vehicle_run) require_upright_route(*scene.vehicle_run, scene.lateral_arm);
   const CollectiveEvaluator evaluator(scene);
   if (last < 0) {
     // Killed before its first step was published: the run starts over from its stored scene.

@@ -107,7 +107,7 @@ TEST_F(OutputRule, AnOverturningCurveIsRefusedBeforeAnythingIsWritten) {
   const auto r =
       run_wheelwear("run " + (dir_ / "scene.toml").string() + " -o " + (dir_ / "out.h5").string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("route section 2 (\"R300 too fast\"): the vehicle overturns"),
+  EXPECT_NE(r.err.find("route condition \"R300 too fast\": the vehicle overturns"),
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("wheelwear: warning: "), std::string::npos) << r.err;  // above 0.3 m

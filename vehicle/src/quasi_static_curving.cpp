@@ -525,6 +525,7 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
     }
     return false;
   };
+  bool started = false;  // Newton ran from options.start
   if (options.start) {
     u = unknowns(*options.start);
     bool valid = u.allFinite();
@@ -533,6 +534,7 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
       const CurvingProblem problem(vehicle, wheelsets, curve, options, result.wheelset_evaluations);
       try {
         converged = problem.solve(u, e, result.iterations, message);
+        started = true;
         if (!converged) remember(problem, true);
       } catch (const InputError&) {
         converged = false;  // the start lies beyond the profiles now: start afresh
@@ -540,7 +542,9 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
       result.from_start = converged;
     }
   }
-  const bool fresh = !options.start || options.restart_on_failure;
+  // A start that could not be used (not finite, no spin, beyond the profiles) is no attempt:
+  // the solve starts afresh whatever restart_on_failure says.
+  const bool fresh = !options.start || options.restart_on_failure || !started;
   // On a table only the straight attempt: its continuation rarely reaches what the direct
   // contacts do not (measured on worn profiles it cost as much as their whole solve).
   if (!converged && fresh)

@@ -260,10 +260,11 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
 /// draws or directions share a track; draw 0 is route_plan's.
 void redraw_pieces(std::vector<DynamicPiece>& pieces, const VehicleRun& run, std::uint64_t draw);
 
-/// Throws InputError naming the section where one of `run`'s sections (at its end, for a
-/// transition) would unload a wheel of the centred vehicle or ask a powered axle for more
-/// traction or braking than its adhesion (vehicle::require_upright, require_adhesion): checked
-/// before a run creates its results file. `lateral_arm` as the scene's.
+/// Throws InputError naming the condition where one of the conditions `run` solves (route_plan:
+/// curves, transitions, the pieces' starting states, both ways) would unload a wheel of the
+/// centred vehicle or ask a powered axle for more traction or braking than its adhesion
+/// (vehicle::require_upright, require_adhesion): checked before a run creates its results file
+/// or resumes one. `lateral_arm` as the scene's.
 void require_upright_route(const VehicleRun& run, double lateral_arm);
 
 /// The contact look-up table of `model` the run interpolates from (VehicleRun::contact_table):

@@ -81,6 +81,8 @@ struct CurvingOptions {
   std::optional<VehiclePlacement> start;
   /// Where Newton fails from `start`: start afresh (true) or give up at once (false: a start
   /// that did not converge before rarely converges afresh, and a fresh solve costs the most).
+  /// A start that cannot be used (not finite, an axle without spin, beyond the profiles) is
+  /// no attempt: the solve starts afresh either way.
   bool restart_on_failure = true;
 };
 
