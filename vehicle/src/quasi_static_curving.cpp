@@ -482,9 +482,9 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
     return *untabulated;
   };
   // Newton from the nearest failed attempt, on the direct contacts, where it came near: the
-  // stalls at a table's kink end within a few hundred times the tolerance (scaled residual
-  // norms of 1.4 to 2e4 on new S1002/60E1); attempts that went astray on a worn tread end at
-  // 1e5 to 1e8 and are better restarted.
+  // stalls at a table's kink end at scaled residual norms of 1.4 to 2e4 (new S1002/60E1, the
+  // built-in route's R 1500 m); attempts that went astray on a worn tread end at 1e5 to 1e8 and
+  // are better restarted.
   constexpr double kNearEnough = 1e5;
   const auto finish_directly = [&] {
     if (!nearest || nearest_residual > kNearEnough) return false;
