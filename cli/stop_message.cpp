@@ -32,15 +32,26 @@ const char* stop_signal_name(int signal) {
   }
 }
 
+// The message goes out in one write: under mpirun a process's stderr is forwarded in the pieces
+// it was written in, and Open MPI's own report of the signal could land between them.
+// (memcpy and strlen are async-signal-safe, POSIX.1-2016.)
 extern "C" void stop_on_signal(int signal) {
+  char text[sizeof g_stop_message + 64];
+  std::size_t length = 0;
+  const auto append = [&](const char* part, std::size_t size) {
+    size = std::min(size, sizeof text - length);
+    std::memcpy(text + length, part, size);
+    length += size;
+  };
   const char* prefix = "\nwheelwear: stopped by ";
   const char* name = stop_signal_name(signal);
-  [[maybe_unused]] ssize_t n = ::write(STDERR_FILENO, prefix, std::strlen(prefix));
-  n = ::write(STDERR_FILENO, name, std::strlen(name));
+  append(prefix, std::strlen(prefix));
+  append(name, std::strlen(name));
   if (g_stop_written)
-    n = ::write(STDERR_FILENO, g_stop_message, g_stop_length);
+    append(g_stop_message, g_stop_length);
   else
-    n = ::write(STDERR_FILENO, g_stop_early, g_stop_early_length);
+    append(g_stop_early, g_stop_early_length);
+  [[maybe_unused]] const ssize_t n = ::write(STDERR_FILENO, text, length);
   std::signal(signal, SIG_DFL);
   ::raise(signal);
 }
