@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -76,11 +77,18 @@ CaseExtremes extremes(const vehicle::VehicleCurving& c) {
   return e;
 }
 
+// The width of a column that shows every label of `rows` whole (a label names a section's
+// radius at its end: "section 2, transition, R 6000 m"), at least `heading`'s.
+template <typename Rows>
+int label_width(const Rows& rows, const char* heading) {
+  std::size_t width = std::strlen(heading);
+  for (const auto& row : rows) width = std::max(width, row.label.size());
+  return static_cast<int>(width);
+}
+
 // The time-domain pieces: per piece the leading wheelset's motion and the largest Y/Q.
 void print_pieces(const pipeline::VehicleCollective& v) {
-  int width = 17;  // the labels whole: "section 2, transition, R 6000 m" names its radius
-  for (const pipeline::DynamicPiece& d : v.pieces)
-    width = std::max(width, static_cast<int>(d.label.size()));
+  const int width = label_width(v.pieces, "time-domain piece");
   std::printf("\n%-*s %7s %6s %7s %5s | %-27s | %6s\n", width, "time-domain piece", "length", "V",
               "samples", "done", "leading wheelset dy rms/max", "Y/Q");
   std::printf("%-*s %7s %6s %7s %5s | %-27s | %6s\n", width, "", "[m]", "[m/s]", "", "",
@@ -97,9 +105,7 @@ void print_pieces(const pipeline::VehicleCollective& v) {
 }
 
 void print_text(const pipeline::VehicleCollective& v, double seconds) {
-  int width = 9;  // the labels whole
-  for (const pipeline::RouteCase& rc : v.cases)
-    width = std::max(width, static_cast<int>(rc.label.size()));
+  const int width = label_width(v.cases, "condition");
   std::printf("%-*s %7s %6s %6s %6s %5s | %-23s | %6s %6s\n", width, "condition", "R [m]", "cant",
               "V", "share", "conv", "leading wheelset dy/aoa", "Y/Q", "angle");
   std::printf("%-*s %7s %6s %6s %6s %5s | %-23s | %6s %6s\n", width, "", "", "[mm]", "[m/s]", "[%]",
@@ -214,7 +220,12 @@ void route(const RouteArgs& args) {
   const auto threads = thread_limit(args.threads);
   const pipeline::Scene scene =
       args.scene.empty() ? pipeline::default_scene() : pipeline::load_scene(args.scene);
-  for (const std::string& w : scene.warnings) std::cerr << "wheelwear: warning: " << w << "\n";
+  // A route given here replaces the scene's, and with it the scene's warnings about its route.
+  std::vector<std::string> replaced;
+  if (!args.route.empty() && scene.vehicle_run) replaced = scene.vehicle_run->route.validate();
+  for (const std::string& w : scene.warnings)
+    if (std::find(replaced.begin(), replaced.end(), w) == replaced.end())
+      std::cerr << "wheelwear: warning: " << w << "\n";
   const pipeline::VehicleRun run = vehicle_run(scene, args);
   const pipeline::StateKernel kernel(scene);
   const profiles::Profile wheel =

@@ -410,11 +410,12 @@ void require_upright(const Vehicle& vehicle, const SteadyCurve& curve, double la
 
 void require_adhesion(const Vehicle& vehicle, const SteadyCurve& curve, double lateral_arm) {
   if (curve.traction == 0.0) return;
+  // Every wheelset of the centred vehicle carries the same loads.
+  const auto loads = wheel_loads(vehicle, curve, lateral_arm, 0.0, 0.0, 0.0);
   for (int k = 0; k < kWheelsets; ++k) {
     // A powered axle carries its traction or braking through the creep forces, at most
     // mu (Q_left + Q_right): beyond it the wheels slip or slide and no balance exists.
     if (!vehicle.powered[static_cast<std::size_t>(k)]) continue;
-    const auto loads = wheel_loads(vehicle, curve, lateral_arm, 0.0, 0.0, 0.0);
     const double adhesion = curve.running.friction * (loads[0] + loads[1]);
     if (std::abs(curve.traction) < adhesion) continue;
     char text[320];
