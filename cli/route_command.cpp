@@ -88,9 +88,10 @@ int label_width(const Rows& rows, const char* heading) {
 
 // The time-domain pieces: per piece the leading wheelset's motion and the largest Y/Q.
 void print_pieces(const pipeline::VehicleCollective& v) {
-  const int width = label_width(v.pieces, "time-domain piece");
-  std::printf("\n%-*s %7s %6s %7s %5s | %-27s | %6s\n", width, "time-domain piece", "length", "V",
-              "samples", "done", "leading wheelset dy rms/max", "Y/Q");
+  constexpr const char* kHeading = "time-domain piece";
+  const int width = label_width(v.pieces, kHeading);
+  std::printf("\n%-*s %7s %6s %7s %5s | %-27s | %6s\n", width, kHeading, "length", "V", "samples",
+              "done", "leading wheelset dy rms/max", "Y/Q");
   std::printf("%-*s %7s %6s %7s %5s | %-27s | %6s\n", width, "", "[m]", "[m/s]", "", "",
               "[mm] / [mm], aoa rms [mrad]", "max");
   for (std::size_t i = 0; i < v.pieces.size(); ++i) {
@@ -105,9 +106,10 @@ void print_pieces(const pipeline::VehicleCollective& v) {
 }
 
 void print_text(const pipeline::VehicleCollective& v, double seconds) {
-  const int width = label_width(v.cases, "condition");
-  std::printf("%-*s %7s %6s %6s %6s %5s | %-23s | %6s %6s\n", width, "condition", "R [m]", "cant",
-              "V", "share", "conv", "leading wheelset dy/aoa", "Y/Q", "angle");
+  constexpr const char* kHeading = "condition";
+  const int width = label_width(v.cases, kHeading);
+  std::printf("%-*s %7s %6s %6s %6s %5s | %-23s | %6s %6s\n", width, kHeading, "R [m]", "cant", "V",
+              "share", "conv", "leading wheelset dy/aoa", "Y/Q", "angle");
   std::printf("%-*s %7s %6s %6s %6s %5s | %-23s | %6s %6s\n", width, "", "", "[mm]", "[m/s]", "[%]",
               "", "[mm] / [mrad]", "max", "[deg]");
   for (std::size_t i = 0; i < v.cases.size(); ++i) {

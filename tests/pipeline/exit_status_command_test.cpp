@@ -114,25 +114,6 @@ TEST_F(OutputRule, AnOverturningCurveIsRefusedBeforeAnythingIsWritten) {
   EXPECT_FALSE(fs::exists(dir_ / "out.h5"));
 }
 
-// A route given on the command line replaces the scene's, and with it the scene's warnings
-// about its route: `route` warned about the cant deficiency of a route it did not run.
-TEST_F(OutputRule, ARouteGivenToRouteReplacesTheScenesWarnings) {
-  write("fast.toml",
-        "[route]\nspeed_m_s = 40\n[[section]]\nkind = \"tangent\"\nlength_m = 300\n"
-        "[[section]]\nkind = \"curve\"\nlength_m = 500\nradius_m = 300\ncant_m = 0\n");
-  write("straight.toml",
-        "[route]\nspeed_m_s = 40\n[[section]]\nkind = \"tangent\"\nlength_m = 300\n");
-  write("scene.toml", "[vehicle]\nfile = \"default\"\ncritical_speed = false\n[route]\nfile = \"" +
-                          (dir_ / "fast.toml").string() + "\"\n");
-  const auto scenes = run_wheelwear("route " + (dir_ / "scene.toml").string() + " --quasi-static");
-  EXPECT_EQ(scenes.exit_code, 2) << scenes.err;  // R 300 m at 40 m/s overturns the coach
-  EXPECT_NE(scenes.err.find("wheelwear: warning: "), std::string::npos) << scenes.err;
-  const auto given = run_wheelwear("route " + (dir_ / "scene.toml").string() + " --route " +
-                                   (dir_ / "straight.toml").string() + " --quasi-static");
-  EXPECT_EQ(given.exit_code, 0) << given.err;
-  EXPECT_EQ(given.err.find("warning"), std::string::npos) << given.err;
-}
-
 // A results file HDF5 cannot read is named with HDF5's own reason and the fix, where it said
 // only "H5Fopen failed": an empty file and a text file have no signature, a copy cut short is
 // truncated (its size against the size it records). Nothing is written to them.

@@ -126,6 +126,31 @@ TEST_F(RouteCommandTest, SimulatesTheScenesTangentsAndTransitionsInTime) {
       << r.out.substr(0, 400);
 }
 
+// A route given on the command line replaces the scene's, and with it the scene's warnings about
+// its route (R 600 m without cant at 40 m/s: 0.41 m of cant deficiency, above the 0.3 m that
+// warns, below the 0.8 m that would overturn the coach); the scene's other warnings stay (its
+// 20 000 steps). `route` used to warn about the cant deficiency of a route it did not run.
+TEST_F(RouteCommandTest, ARouteGivenOnTheCommandLineReplacesTheScenesWarnings) {
+  std::ofstream(dir_ / "deficient.toml")
+      << "[route]\nspeed_m_s = 40\n[[section]]\nkind = \"tangent\"\nlength_m = 300\n"
+         "[[section]]\nkind = \"curve\"\nlength_m = 500\nradius_m = 600\ncant_m = 0\n";
+  std::ofstream(dir_ / "straight.toml")
+      << "[route]\nspeed_m_s = 40\n[[section]]\nkind = \"tangent\"\nlength_m = 300\n";
+  std::ofstream(dir_ / "scene.toml")
+      << "[run]\ndistance_m = 2e4\nstep_distance_m = 1\n[vehicle]\nfile = \"default\"\n"
+         "critical_speed = false\n[route]\nfile = \"deficient.toml\"\n";
+  const std::string base = "route " + (dir_ / "scene.toml").string() + " --quasi-static";
+  const testing::CommandResult scenes = testing::run_wheelwear(base);
+  EXPECT_EQ(scenes.exit_code, 0) << scenes.err;
+  EXPECT_NE(scenes.err.find("cant deficiency"), std::string::npos) << scenes.err;
+  EXPECT_NE(scenes.err.find("20000 steps"), std::string::npos) << scenes.err;
+  const testing::CommandResult given =
+      testing::run_wheelwear(base + " --route " + (dir_ / "straight.toml").string());
+  EXPECT_EQ(given.exit_code, 0) << given.err;
+  EXPECT_EQ(given.err.find("cant deficiency"), std::string::npos) << given.err;
+  EXPECT_NE(given.err.find("20000 steps"), std::string::npos) << given.err;
+}
+
 TEST_F(RouteCommandTest, CollectiveCsvKeepsEveryLabelOneCellThatReadsBack) {
   std::vector<WheelsetStateSpec> states(3);
   const char* labels[] = {"curve, R 500\nleft", "#2 S-curve, wheelset 1", "  padded  "};

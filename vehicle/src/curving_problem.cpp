@@ -16,7 +16,7 @@ double outward(const SteadyCurve& curve) {
 }
 
 // A suspension joint's relative displacement and yaw of a child body at distance d ahead of its
-// parent, in the parent's frame (see the header).
+// parent, in the parent's frame (see quasi_static_curving.hpp).
 struct JointDeflection {
   double lateral = 0.0;
   double yaw = 0.0;
@@ -134,7 +134,6 @@ Vector initial_guess(const Vehicle& v, const SteadyCurve& curve) {
   return u;
 }
 
-// The curve scaled towards tangent track by `share` of its curvature and cant.
 SteadyCurve partial_curve(const SteadyCurve& curve, double share) {
   SteadyCurve c = curve;
   if (curve.running.curve_radius != 0.0)
@@ -170,9 +169,6 @@ Evaluation CurvingProblem::evaluate(const Vector& u) const {
   return e;
 }
 
-// The Jacobian: the suspension's exactly (finite differences of a linear or piecewise-linear
-// map); the contact's per wheelset in its own unknowns, and through its wheels' loads in the
-// lateral shifts of the bodies that load it (wheel_loads is linear in them).
 Matrix CurvingProblem::jacobian(const Vector& u, const Evaluation& at) const {
   Matrix J = Matrix::Zero();
   const Vector base = suspension_part(v_, curve_, u).residual;

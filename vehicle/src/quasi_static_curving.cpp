@@ -1,6 +1,5 @@
 #include "wheelwear/vehicle/quasi_static_curving.hpp"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
