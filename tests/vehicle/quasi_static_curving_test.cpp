@@ -125,6 +125,33 @@ TEST(QuasiStaticCurving, EveryBodyIsInEquilibrium) {
   EXPECT_EQ(compared, 4 * 19);
 }
 
+// At a curve's balance speed (no cant deficiency) gravity and the centrifugal force leave no
+// in-plane force to tilt the loads: the two wheels of a wheelset share its load equally but for
+// the weights' offsets against the track, at most the flange clearance of about 8 mm, which
+// moves 2 x 8 mm / 1.5 m = 1.1 % of the load to one wheel: bound 1.5 %. Taken at the car body's
+// centre, 90 mm inside the track in R 500 m (the versine between its pivots), the body's weight
+// loaded each inner wheel 9 kN (17 %) more than the outer.
+TEST(QuasiStaticCurving, AtTheBalanceSpeedBothWheelsCarryTheSameLoad) {
+  const Vehicle v = default_vehicle();
+  const auto models = four(standard_wheelset());
+  int compared = 0;
+  for (const double radius : {500.0, -500.0, 300.0}) {
+    const double cant = std::abs(radius) == 500.0 ? 0.1 : 0.15;
+    const double speed = std::sqrt(kGravity * std::abs(radius) * cant / 1.5);
+    const SteadyCurve curve = curve_of(radius, cant, speed);
+    ASSERT_NEAR(curve.cant_deficiency(), 0.0, 1e-12);
+    const VehicleCurving c = solve_vehicle_curving(v, models, curve);
+    ASSERT_TRUE(c.converged) << "R " << radius << ": " << c.message;
+    for (int k = 0; k < 4; ++k) {
+      const CurvingWheelset& w = c.wheelsets[k];
+      EXPECT_LE(std::abs(w.load_left - w.load_right), 0.015 * (w.load_left + w.load_right))
+          << "R " << radius << ", wheelset " << k << ": " << w.load_left << " / " << w.load_right;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 3 * 4);
+}
+
 // A worn wheel (tests/data/profiles/s1002_worn_33200km.csv: its tread worn into bands, its flank
 // to 1.46 rad, steeper than a rigid wheelset can roll onto): from R 500 m to R 5000 m the
 // curving converges to the same balances, with the leading wheelsets on their steep flanks

@@ -199,9 +199,11 @@ TEST(VehicleMotion, LeftAndRightHandCurvesMirror) {
     for (int k = 0; k < kWheelsets; ++k) {
       const WheelsetMotionSample& a = r.samples[i].wheelsets[k];
       const WheelsetMotionSample& b = l.samples[i].wheelsets[k];
-      // Mirror images up to round-off in the contact chain (1e-17 m measured).
-      EXPECT_NEAR(a.state.dy, -b.state.dy, 1e-12);
-      EXPECT_NEAR(a.state.yaw, -b.state.yaw, 1e-12);
+      // Mirror images up to round-off in the contact chain (measured: 3e-12 m and 1.2e-11 rad,
+      // not growing along the piece; 1e-17 m before the car body's weight was taken over the
+      // pivots, which puts this curve's leading wheelsets nearer their flange roots).
+      EXPECT_NEAR(a.state.dy, -b.state.dy, 1e-10);
+      EXPECT_NEAR(a.state.yaw, -b.state.yaw, 1e-10);
       EXPECT_NEAR(a.forces.wheels[0].Y, b.forces.wheels[1].Y, 1e-6 * a.load_left);
       compared += 3;
     }

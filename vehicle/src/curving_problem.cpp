@@ -142,6 +142,20 @@ SteadyCurve partial_curve(const SteadyCurve& curve, double share) {
   return c;
 }
 
+std::array<double, 2> CurvingProblem::loads(int k, const Vector& u) const {
+  const Placement p = placement(u);
+  const int i = k / 2;
+  // The car body's weight reaches the bogie at its pivot, where the secondary suspension carries
+  // it: the body's shift there, against the track there (in a curve the body's centre lies
+  // inside the track by the versine, kappa d^2 / 2, while its pivots follow the bogies).
+  const double curvature =
+      curve_.running.curve_radius == 0.0 ? 0.0 : 1.0 / curve_.running.curve_radius;
+  const double d = v_.bogie_x(i);
+  const double over_pivot = p.car_body.y + p.car_body.yaw * d + 0.5 * curvature * d * d;
+  return wheel_loads(v_, curve_, models_[k].lateral_arm, over_pivot, p.bogies[i].y,
+                     p.wheelsets[k].dy);
+}
+
 Evaluation CurvingProblem::evaluate(const Vector& u) const {
   Evaluation e;
   const SuspensionPart s = suspension_part(v_, curve_, u);
@@ -151,11 +165,10 @@ Evaluation CurvingProblem::evaluate(const Vector& u) const {
     CurvingWheelset& ws = e.wheelsets[k];
     ws.x = v_.wheelset_x(k);
     ws.state = p.wheelsets[k];
-    const auto loads = wheel_loads(v_, curve_, models_[k].lateral_arm, p.car_body.y,
-                                   p.bogies[k / 2].y, p.wheelsets[k].dy);
-    ws.load_left = loads[0];
-    ws.load_right = loads[1];
-    ws.forces = contact(k, ws.state, loads[0], loads[1]);
+    const auto wheel = loads(k, u);
+    ws.load_left = wheel[0];
+    ws.load_right = wheel[1];
+    ws.forces = contact(k, ws.state, wheel[0], wheel[1]);
     ws.suspension_lateral = s.lateral[k];
     ws.suspension_yaw = s.yaw[k];
     const int w = wheelset_index(k);
@@ -178,7 +191,6 @@ Matrix CurvingProblem::jacobian(const Vector& u, const Evaluation& at) const {
     t[c] += h;
     J.col(c) = (suspension_part(v_, curve_, t).residual - base) / h;
   }
-  const Placement p = placement(u);
   for (int k = 0; k < kWheelsets; ++k) {
     const int w = wheelset_index(k);
     const CurvingWheelset& ws = at.wheelsets[k];
@@ -198,21 +210,19 @@ Matrix CurvingProblem::jacobian(const Vector& u, const Evaluation& at) const {
       J.block<3, 1>(w, w + c) +=
           (forces_vector(contact(k, t, ws.load_left, ws.load_right, roll)) - f0) / steps[c];
     }
-    // d(forces)/d(load) per wheel, and d(load)/d(shift) of the car body, bogie and wheelset.
+    // d(forces)/d(load) per wheel, and d(load)/d(unknown) of the car body's shift and yaw, the
+    // bogie's shift and the wheelset's shift.
     const double dQ = 1e-6 * std::max(ws.load_left, ws.load_right);
     const Eigen::Vector3d by_left =
         (forces_vector(contact(k, ws.state, ws.load_left + dQ, ws.load_right, known)) - f0) / dQ;
     const Eigen::Vector3d by_right =
         (forces_vector(contact(k, ws.state, ws.load_left, ws.load_right + dQ, known)) - f0) / dQ;
-    // The unknowns of the car body's, the bogie's and the wheelset's shift, in wheel_loads'
-    // order of arguments.
-    const std::array<int, 3> shifts{0, bogie_index(k / 2), w};
-    for (int j = 0; j < 3; ++j) {
-      std::array<double, 3> y{p.car_body.y, p.bogies[k / 2].y, p.wheelsets[k].dy};
+    for (int column : {0, 1, bogie_index(k / 2), w}) {
+      // loads() is linear in these: any step is exact.
       const double h = 1e-4;
-      y[j] += h;
-      const int column = shifts[j];
-      const auto moved = wheel_loads(v_, curve_, models_[k].lateral_arm, y[0], y[1], y[2]);
+      Vector moved_u = u;
+      moved_u[column] += h;
+      const auto moved = loads(k, moved_u);
       J.block<3, 1>(w, column) +=
           by_left * (moved[0] - ws.load_left) / h + by_right * (moved[1] - ws.load_right) / h;
     }

@@ -62,6 +62,8 @@ class CurvingProblem {
     ++evaluations_;
     return wheelset_forces(models_[k], state, left, right, curve_.running, roll);
   }
+  // The wheels' loads (left, right) of wheelset k at `u` (wheel_loads).
+  std::array<double, 2> loads(int k, const Vector& u) const;
   // Every residual at `u`, with each wheelset's contact.
   Evaluation evaluate(const Vector& u) const;
   // The Jacobian: the suspension's exactly (finite differences of a linear or piecewise-linear

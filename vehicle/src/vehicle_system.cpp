@@ -115,8 +115,12 @@ void VehicleSystem::derivative(const State& x, State& dxdt, double t, VehicleSam
   std::array<double, kPositions> force{};  // lateral force and yaw moment per body
   for (int b = 0; b < kBodies; ++b)
     force[2 * b] += in_plane(masses_[b], speed_, tracks[b].kappa, tracks[b].theta);
+  // The car body's shift over each bogie's pivot, against the track there: where its weight
+  // reaches the bogie (the wheels' loads).
+  std::array<double, kBogies> over_pivot{};
   for (int i = 0; i < kBogies; ++i) {
     const JointMotion j = joint(x, tracks, 0, bogie_body(i));
+    over_pivot[i] = parent_over(x, tracks, 0, bogie_body(i));
     const double lateral =
         -(v_.secondary.joint_lateral_stiffness() * j.lateral + v_.lateral_stop.force_at(j.lateral) +
           v_.secondary.joint_lateral_damping() * j.lateral_rate);
@@ -138,7 +142,7 @@ void VehicleSystem::derivative(const State& x, State& dxdt, double t, VehicleSam
     const int b = wheelset_body(k);
     const RailOffset rails = rail_offset(irregular_, stencil_, tracks[b].s);
     const double tilt = wheelset_tilt(tracks[b], rails);
-    const WheelsetMotionSample c = contact(x, tracks[b], rails, tilt, k);
+    const WheelsetMotionSample c = contact(x, tracks[b], rails, tilt, k, over_pivot[k / 2]);
     force[2 * b] += c.forces.lateral + carried_lateral(tracks[b], tilt);
     force[2 * b + 1] += c.forces.yaw_moment;
     // A powered axle's motor or brake, driving the section's traction force.
@@ -162,6 +166,14 @@ void VehicleSystem::derivative(const State& x, State& dxdt, double t, VehicleSam
     for (int i = 0; i < kBogies; ++i)
       sample->bogies[i] = {x[2 * bogie_body(i)], x[2 * bogie_body(i) + 1]};
   }
+}
+
+double VehicleSystem::parent_over(const State& x, const std::array<BodyTrack, kBodies>& tracks,
+                                  int parent, int child) const {
+  const double d = xs_[child] - xs_[parent];
+  // As joint(): the design track's offset from the parent's tangent to the child.
+  const double offset = d * d / 6.0 * (2.0 * tracks[parent].kappa + tracks[child].kappa);
+  return x[2 * parent] + x[2 * parent + 1] * d + offset;
 }
 
 JointMotion VehicleSystem::joint(const State& x, const std::array<BodyTrack, kBodies>& tracks,
@@ -193,7 +205,8 @@ double VehicleSystem::carried_lateral(const BodyTrack& t, double tilt) const {
 }
 
 WheelsetMotionSample VehicleSystem::contact(const State& x, const BodyTrack& t,
-                                            const RailOffset& rails, double tilt, int k) {
+                                            const RailOffset& rails, double tilt, int k,
+                                            double car_body_over_pivot) {
   const int b = wheelset_body(k);
   const TrackPoint& p = t.point;
   WheelsetMotionSample c;
@@ -215,7 +228,7 @@ WheelsetMotionSample VehicleSystem::contact(const State& x, const BodyTrack& t,
     double mass, height, y;
   };
   const std::array<Share, 3> shares{
-      Share{v_.car_body.mass / kWheelsets, v_.car_body.cg_height, x[0]},
+      Share{v_.car_body.mass / kWheelsets, v_.car_body.cg_height, car_body_over_pivot},
       Share{v_.bogie.mass / 2.0, v_.bogie.cg_height, x[2 * bogie_body(k / 2)]},
       Share{v_.wheelset.body.mass, v_.wheelset.body.cg_height, x[2 * b]}};
   double weight = 0.0, moment = 0.0;

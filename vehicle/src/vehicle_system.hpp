@@ -116,6 +116,10 @@ class VehicleSystem {
   static constexpr double kCantBase = 1.5;
 
   // Joint motion of `child` against `parent` (body indices).
+  // The parent's lateral shift at the child's place, against the design track there (the
+  // joint's displacement is the child's shift less this).
+  double parent_over(const State& x, const std::array<BodyTrack, kBodies>& tracks, int parent,
+                     int child) const;
   JointMotion joint(const State& x, const std::array<BodyTrack, kBodies>& tracks, int parent,
                     int child) const;
 
@@ -139,9 +143,10 @@ class VehicleSystem {
   double carried_lateral(const BodyTrack& t, double tilt) const;
 
   // The rails' forces on wheelset k on the design track `t`, its rails at `rails`, tilted by
-  // `tilt`.
+  // `tilt`, the car body's shift over its bogie's pivot `car_body_over_pivot` (against the track
+  // there).
   WheelsetMotionSample contact(const State& x, const BodyTrack& t, const RailOffset& rails,
-                               double tilt, int k);
+                               double tilt, int k, double car_body_over_pivot);
 
   const Vehicle& v_;
   std::array<WheelsetModel, kWheelsets> models_;

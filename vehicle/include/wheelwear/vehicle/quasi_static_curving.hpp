@@ -20,7 +20,11 @@
 /// - Wheel loads: each wheelset carries its own mass, half its bogie's and a quarter of the car
 ///   body's; their weight (g cos(phi) + V^2/|R| sin(phi) per unit mass) is shared by the two
 ///   wheels so that the moment about the track centre line at rail level balances: the bodies'
-///   in-plane forces at their centres of gravity and their weights at their lateral positions.
+///   in-plane forces at their centres of gravity and their weights at their lateral positions,
+///   the car body's where the bogie's secondary suspension carries it: its shift over the
+///   bogie's pivot, against the track there (in a curve the body's centre lies inside the
+///   track by the versine, kappa d^2 / 2 at R 500 m and 9.5 m from the pivots 90 mm, where the
+///   pivots follow the bogies).
 ///   The bodies' roll in their suspension is not modelled (its shift of the car body's centre of
 ///   gravity is left out).
 /// - The longitudinal balance is not solved: the stiff longitudinal springs carry the small
@@ -117,8 +121,9 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
                                      const std::array<WheelsetModel, kWheelsets>& wheelsets,
                                      const SteadyCurve& curve, const CurvingOptions& options = {});
 
-/// The wheels' loads (left, right) [N] of wheelset k for the bodies at the given lateral shifts
-/// (car body, bogie of the wheelset, wheelset) in `curve` (model above).
+/// The wheels' loads (left, right) [N] of a wheelset for the bodies at the given lateral shifts
+/// against the track (the car body's over the wheelset's bogie pivot, the bogie's, the
+/// wheelset's) in `curve` (model above).
 std::array<double, 2> wheel_loads(const Vehicle& vehicle, const SteadyCurve& curve,
                                   double lateral_arm, double car_body_y, double bogie_y,
                                   double wheelset_y);
