@@ -9,6 +9,11 @@ namespace wheelwear::vehicle::detail {
 
 namespace {
 
+// The curve's curvature [1/m], + right-hand; 0 on tangent track.
+double curvature_of(const SteadyCurve& curve) {
+  return curve.running.curve_radius == 0.0 ? 0.0 : 1.0 / curve.running.curve_radius;
+}
+
 // +1 when the outside of the curve is +y (a right-hand curve, R > 0), -1 for a left-hand one.
 double outward(const SteadyCurve& curve) {
   const double r = curve.running.curve_radius;
@@ -37,8 +42,7 @@ struct SuspensionPart {
 
 SuspensionPart suspension_part(const Vehicle& v, const SteadyCurve& curve, const Vector& u) {
   const Placement p = placement(u);
-  const double curvature =
-      curve.running.curve_radius == 0.0 ? 0.0 : 1.0 / curve.running.curve_radius;
+  const double curvature = curvature_of(curve);
   SuspensionPart out;
   Vector& r = out.residual;
   r[0] += applied_force(curve, v.car_body.mass);
@@ -148,8 +152,7 @@ std::array<double, 2> CurvingProblem::loads(int k, const Vector& u) const {
   // The car body's weight reaches the bogie at its pivot, where the secondary suspension carries
   // it: the body's shift there, against the track there (in a curve the body's centre lies
   // inside the track by the versine, kappa d^2 / 2, while its pivots follow the bogies).
-  const double curvature =
-      curve_.running.curve_radius == 0.0 ? 0.0 : 1.0 / curve_.running.curve_radius;
+  const double curvature = curvature_of(curve_);
   const double d = v_.bogie_x(i);
   const double over_pivot = p.car_body.y + p.car_body.yaw * d + 0.5 * curvature * d * d;
   return wheel_loads(v_, curve_, models_[k].lateral_arm, over_pivot, p.bogies[i].y,

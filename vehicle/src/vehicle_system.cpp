@@ -168,11 +168,20 @@ void VehicleSystem::derivative(const State& x, State& dxdt, double t, VehicleSam
   }
 }
 
+namespace {
+
+// The design track's lateral offset from a parent body's tangent to a child body at distance d
+// along it, exact for a curvature linear in distance (kappa at the parent and at the child).
+double track_offset(double d, double parent_kappa, double child_kappa) {
+  return d * d / 6.0 * (2.0 * parent_kappa + child_kappa);
+}
+
+}  // namespace
+
 double VehicleSystem::parent_over(const State& x, const std::array<BodyTrack, kBodies>& tracks,
                                   int parent, int child) const {
   const double d = xs_[child] - xs_[parent];
-  // As joint(): the design track's offset from the parent's tangent to the child.
-  const double offset = d * d / 6.0 * (2.0 * tracks[parent].kappa + tracks[child].kappa);
+  const double offset = track_offset(d, tracks[parent].kappa, tracks[child].kappa);
   return x[2 * parent] + x[2 * parent + 1] * d + offset;
 }
 
@@ -183,7 +192,7 @@ JointMotion VehicleSystem::joint(const State& x, const std::array<BodyTrack, kBo
   const BodyTrack& c = tracks[child];
   // The design track's offset and turn from the parent's tangent to the child, exact for a
   // curvature linear in distance, and their rates at speed V.
-  const double offset = d * d / 6.0 * (2.0 * p.kappa + c.kappa);
+  const double offset = track_offset(d, p.kappa, c.kappa);
   const double turn = 0.5 * d * (p.kappa + c.kappa);
   const double offset_rate = speed_ * d * d / 6.0 * (2.0 * p.kappa_slope + c.kappa_slope);
   const double turn_rate = speed_ * 0.5 * d * (p.kappa_slope + c.kappa_slope);
