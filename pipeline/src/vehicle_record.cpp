@@ -421,4 +421,23 @@ std::vector<vehicle::VehicleCurving> read_vehicle_cases(const ResultsFile& file,
   return out;
 }
 
+VehicleCollective read_vehicle_collective(const ResultsFile& file, int step,
+                                          const VehicleRun& run) {
+  VehicleCollective v;
+  RoutePlan plan = route_plan(run);
+  v.cases = std::move(plan.cases);
+  v.pieces = std::move(plan.pieces);
+  v.piece_runs = read_vehicle_pieces(file, step, v.pieces.size());
+  v.states = read_collective(file, step, "collective/");
+  // The cases' solved states as recorded: the records of the steps until the next solve, and
+  // where that solve starts.
+  v.curving = read_vehicle_cases(file, step, v.cases.size());
+  v.unconverged = static_cast<int>(file.read_step_array(step, "vehicle/unconverged_cases").at(0));
+  v.kept = static_cast<int>(file.read_step_array(step, "vehicle/kept_cases").at(0));
+  v.critical_speed = file.read_step_array(step, "vehicle/critical_speed").at(0);
+  v.critical_speed_note =
+      file.read_text(ResultsFile::step_group(step) + "/vehicle/critical_speed_note").value_or("");
+  return v;
+}
+
 }  // namespace wheelwear::pipeline::detail

@@ -40,4 +40,9 @@ void add_vehicle_pieces(GroupRecord& g, const VehicleCollective& vehicle);
 // Throws InputError when the step holds another number of pieces.
 std::vector<PieceRun> read_vehicle_pieces(const ResultsFile& file, int step, std::size_t pieces);
 
+// The vehicle's solve as add_vehicle_record recorded it in step `step` of `run` (its route's
+// cases and pieces, their records, the collective, the counts and the critical speed): what a
+// resumed run records until the vehicle's next solve and starts that solve from.
+VehicleCollective read_vehicle_collective(const ResultsFile& file, int step, const VehicleRun& run);
+
 }  // namespace wheelwear::pipeline::detail

@@ -499,20 +499,7 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   if (scene.vehicle_run) {
     VehicleCarry& carry = start.vehicle;
     carry.solved = true;
-    RoutePlan plan = route_plan(*scene.vehicle_run);
-    carry.last.cases = std::move(plan.cases);
-    carry.last.pieces = std::move(plan.pieces);
-    carry.last.piece_runs = detail::read_vehicle_pieces(file, last, carry.last.pieces.size());
-    carry.last.states = detail::read_collective(file, last, "collective/");
-    // The cases' solved states as recorded: the records of the steps until the next solve,
-    // and where that solve starts.
-    carry.last.curving = detail::read_vehicle_cases(file, last, carry.last.cases.size());
-    carry.last.unconverged =
-        static_cast<int>(file.read_step_array(last, "vehicle/unconverged_cases").at(0));
-    carry.last.kept = static_cast<int>(file.read_step_array(last, "vehicle/kept_cases").at(0));
-    carry.last.critical_speed = file.read_step_array(last, "vehicle/critical_speed").at(0);
-    carry.last.critical_speed_note =
-        file.read_text(ResultsFile::step_group(last) + "/vehicle/critical_speed_note").value_or("");
+    carry.last = detail::read_vehicle_collective(file, last, *scene.vehicle_run);
     carry.depth_since_solve = file.read_step_array(last, "vehicle/depth_since_solve").at(0);
   }
   if (scene.hook) start.hook = detail::read_hook_carry(file, last, output);
