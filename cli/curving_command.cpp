@@ -12,6 +12,7 @@
 #include "curving_request.hpp"
 #include "json_writer.hpp"
 #include "output_path.hpp"
+#include "thread_limit.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/scene.hpp"
@@ -32,6 +33,7 @@ struct CurvingArgs {
   double traction = 0.0;
   bool json = false;
   bool contact_table = false;
+  int threads = 0;
   std::string export_vehicle;
   bool overwrite = false;
 };
@@ -137,6 +139,7 @@ void curving(const CurvingArgs& args) {
     export_vehicle(args);
     return;
   }
+  const auto threads = thread_limit(args.threads);
   CurvingRequest request;
   request.scene = args.scene;
   request.vehicle = args.vehicle;
@@ -147,6 +150,7 @@ void curving(const CurvingArgs& args) {
   request.traction = args.traction;
   request.contact_table = args.contact_table;
   const CurvingAnswer answer = solve_curving(request);
+  for (const std::string& w : answer.warnings) std::cerr << "wheelwear: warning: " << w << "\n";
   const vehicle::VehicleCurving& c = answer.curving;
   const vehicle::SteadyCurve& curve = answer.curve;
   const std::optional<TableReport>& table = answer.table;
@@ -177,11 +181,14 @@ void add_curving_command(CLI::App& app) {
       "curve: the steady state where every body is in balance and every axle rolls freely,\n"
       "with the rails' forces from the scene's contact chain. Frames: docs/architecture.md;\n"
       "the model: docs/vehicle.md. Without SCENE the built-in scene's profiles (S1002 on 60E1\n"
-      "1:40); without --vehicle the built-in Manchester benchmark coach.\n"
+      "1:40); without --vehicle the scene's [vehicle], else the built-in Manchester benchmark\n"
+      "coach. The scene's profiles, track and friction are used; where a vehicle file's wheel\n"
+      "radius or proposed [contact] differ from them, a warning names each.\n"
       "Example: wheelwear curving --radius 500 --cant 0.1 --speed 20 --json");
   cmd->add_option("scene", args->scene, "scene file (TOML) for profiles, track and contact model")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--vehicle", args->vehicle, "vehicle file (TOML); the built-in when omitted")
+  cmd->add_option("--vehicle", args->vehicle,
+                  "vehicle file (TOML); default the scene's, else the built-in")
       ->check(CLI::ExistingFile);
   cmd->add_option("--radius", args->radius,
                   "curve radius [m]: > 0 right-hand (left rail outer), < 0 left-hand, 0 tangent");
@@ -199,6 +206,9 @@ void add_curving_command(CLI::App& app) {
   cmd->add_flag("--contact-table", args->contact_table,
                 "interpolate the contacts from a look-up table built first (as a run does; "
                 "docs/vehicle.md) instead of solving each directly");
+  cmd->add_option("--threads", args->threads,
+                  "worker threads for the contact table's build (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--export-default-vehicle", args->export_vehicle,
                   "write the built-in vehicle (vehicle.toml) into this directory and exit");
   cmd->add_flag("--overwrite", args->overwrite, "replace an existing exported file");

@@ -14,9 +14,20 @@ namespace wheelwear::cli {
 
 CurvingAnswer solve_curving(const CurvingRequest& request) {
   const pipeline::Scene scene =
-      request.scene.empty() ? pipeline::default_scene() : pipeline::load_scene(request.scene);
-  const vehicle::Vehicle v =
-      request.vehicle.empty() ? vehicle::default_vehicle() : vehicle::read_vehicle(request.vehicle);
+      request.scene.empty()
+          ? pipeline::default_scene()
+          : pipeline::load_scene(request.scene, pipeline::SceneUse::vehicle_solve);
+  // --vehicle, else the scene's [vehicle], else the built-in coach.
+  vehicle::Vehicle v = vehicle::default_vehicle();
+  std::string vehicle_name;
+  if (!request.vehicle.empty()) {
+    v = vehicle::read_vehicle(request.vehicle);
+    vehicle_name = "--vehicle " + request.vehicle;
+  } else if (scene.vehicle_run) {
+    v = scene.vehicle_run->vehicle;
+    if (!scene.vehicle_run->vehicle_file.empty())
+      vehicle_name = "vehicle file " + scene.vehicle_run->vehicle_file;
+  }
   vehicle::SteadyCurve curve;
   curve.running = {request.speed, request.radius, request.friction.value_or(scene.friction)};
   if (!request.friction) curve.running.friction_flange = scene.friction_flange;
@@ -35,6 +46,9 @@ CurvingAnswer solve_curving(const CurvingRequest& request) {
       profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
   vehicle::WheelsetModel model = pipeline::wheelset_model(kernel, wheel, wheel);
   CurvingAnswer answer;
+  if (!vehicle_name.empty())
+    answer.warnings = pipeline::vehicle_scene_differences(
+        v, vehicle_name, scene, wheel.info().nominal_radius, curve.running.friction);
   std::optional<TableReport>& table = answer.table;
   if (request.contact_table) {
     const auto start = std::chrono::steady_clock::now();

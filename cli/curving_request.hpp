@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "wheelwear/vehicle/quasi_static_curving.hpp"
 
@@ -12,7 +13,7 @@ namespace wheelwear::cli {
 
 struct CurvingRequest {
   std::string scene;    ///< scene file for profiles, track and contact; empty: the built-in
-  std::string vehicle;  ///< vehicle file; empty: the built-in coach
+  std::string vehicle;  ///< vehicle file; empty: the scene's [vehicle], else the built-in coach
   double radius = 0.0;  ///< [m], + right-hand, 0 tangent
   double cant = 0.0;    ///< [m], >= 0
   double speed = 0.0;   ///< [m/s], > 0
@@ -32,6 +33,8 @@ struct CurvingAnswer {
   vehicle::SteadyCurve curve;
   vehicle::VehicleCurving curving;
   std::optional<TableReport> table;
+  /// Where the vehicle file and the scene disagree (pipeline::vehicle_scene_differences).
+  std::vector<std::string> warnings;
 };
 
 /// Throws InputError for a bad curve or file, naming the option and the fix.

@@ -215,13 +215,34 @@ void print_json(const pipeline::VehicleCollective& v, double seconds) {
             << '\n';
 }
 
+// Computed but not every condition balanced or every piece run through: what was computed is
+// printed and written, and the command fails with exit status 3 (docs/cli.md).
+bool complete(const pipeline::VehicleCollective& v) {
+  return v.unconverged == 0 && v.incomplete() == 0;
+}
+
+void require_complete(const pipeline::VehicleCollective& v) {
+  if (complete(v)) return;
+  std::string what;
+  if (v.unconverged > 0)
+    what = std::to_string(v.unconverged) + " of " + std::to_string(v.cases.size()) +
+           " quasi-static conditions did not converge (their last iterates are in the states, "
+           "shown as NO)";
+  if (v.incomplete() > 0)
+    what += std::string(what.empty() ? "" : "; ") + std::to_string(v.incomplete()) + " of " +
+            std::to_string(v.pieces.size()) +
+            " simulated pieces stopped early (their samples up to there are in the states)";
+  throw std::runtime_error(what);
+}
+
 void route(const RouteArgs& args) {
   if (!args.output.empty() && std::filesystem::exists(args.output) && !args.overwrite) {
     throw InputError("-o " + args.output + ": the file exists; pass --overwrite to replace it");
   }
   const auto threads = thread_limit(args.threads);
   const pipeline::Scene scene =
-      args.scene.empty() ? pipeline::default_scene() : pipeline::load_scene(args.scene);
+      args.scene.empty() ? pipeline::default_scene()
+                         : pipeline::load_scene(args.scene, pipeline::SceneUse::vehicle_solve);
   // A route given here replaces the scene's, and with it the scene's warnings about its route.
   std::vector<std::string> replaced;
   if (!args.route.empty() && scene.vehicle_run) replaced = scene.vehicle_run->route.validate();
@@ -232,6 +253,13 @@ void route(const RouteArgs& args) {
   const pipeline::StateKernel kernel(scene);
   const profiles::Profile wheel =
       profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
+  const std::string vehicle_name = !args.vehicle.empty()       ? "--vehicle " + args.vehicle
+                                   : !run.vehicle_file.empty() ? "vehicle file " + run.vehicle_file
+                                                               : std::string();
+  if (!vehicle_name.empty())
+    for (const std::string& w : pipeline::vehicle_scene_differences(
+             run.vehicle, vehicle_name, scene, wheel.info().nominal_radius, std::nullopt))
+      std::cerr << "wheelwear: warning: " << w << "\n";
   const auto t0 = std::chrono::steady_clock::now();
   const pipeline::VehicleCollective v = pipeline::solve_vehicle_collective(run, kernel, {&wheel});
   const double seconds =
@@ -240,15 +268,21 @@ void route(const RouteArgs& args) {
     core::write_file_atomically(args.output, pipeline::collective_csv(v.states));
   if (args.json) {
     print_json(v, seconds);
-    return;
+  } else {
+    print_text(v, seconds);
+    if (!args.output.empty() && complete(v)) {
+      std::printf(
+          "wrote %s: %zu states, the load collective of this vehicle on this route; wear "
+          "with it by naming it in a scene's [load_collective] file\n",
+          args.output.c_str(), v.states.size());
+    } else if (!args.output.empty()) {
+      std::printf(
+          "wrote %s: %zu states, among them the last iterates of the conditions that did not "
+          "converge and the samples of the pieces that stopped early (below)\n",
+          args.output.c_str(), v.states.size());
+    }
   }
-  print_text(v, seconds);
-  if (!args.output.empty()) {
-    std::printf(
-        "wrote %s: %zu states, the load collective of this vehicle on this route; wear "
-        "with it by naming it in a scene's [load_collective] file\n",
-        args.output.c_str(), v.states.size());
-  }
+  require_complete(v);
 }
 
 }  // namespace
@@ -267,7 +301,8 @@ void add_route_command(CLI::App& app) {
       "the vehicle's linear critical speed on tangent track ([vehicle] critical_speed);\n"
       "-o writes the load collective the states make (CSV, the columns of docs/scenes.md) for a\n"
       "scene or a study.\n"
-      "Without SCENE, or when it has no [vehicle]: the built-in coach on the built-in route.\n"
+      "Without SCENE, or where it names none, the built-in coach and the built-in route (a scene\n"
+      "of profiles alone will do).\n"
       "Example: wheelwear route -o route_states.csv");
   cmd->add_option("scene", args->scene,
                   "scene file (TOML): profiles, contact model, [vehicle], "

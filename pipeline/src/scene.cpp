@@ -46,7 +46,7 @@ using detail::wheel_origin;
 }  // namespace
 
 Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
-                  const SceneFileReader& read) {
+                  const SceneFileReader& read, SceneUse use) {
   toml::table root;
   try {
     root = toml::parse(toml_text, std::string_view("scene"));
@@ -439,8 +439,13 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                        "collective of every step");
     return s;
   }
+  // A vehicle solve alone takes the built-in coach or route for the one a scene leaves out.
+  if (s.vehicle_run && use == SceneUse::vehicle_solve) {
+    if (!vehicle_line) s.vehicle_run->vehicle = vehicle::default_vehicle();
+    if (!route_line) s.vehicle_run->route = vehicle::default_route();
+  }
   if (s.vehicle_run) {
-    if (!vehicle_line || !route_line) {
+    if (use == SceneUse::wear_run && (!vehicle_line || !route_line)) {
       throw InputError(std::string("scene: a vehicle run needs both [vehicle] file and [route] "
                                    "file (\"default\" for the built-in ones); ") +
                        (vehicle_line ? "[route] file" : "[vehicle] file") + " is missing");
@@ -457,6 +462,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
     for (const std::string& w : s.vehicle_run->route.validate()) s.warnings.push_back(w);
     return s;
   }
+  if (s.states.empty() && !collective_line && use == SceneUse::vehicle_solve) return s;
   if (s.states.empty()) {
     throw InputError(collective_line ? "scene line " + std::to_string(*collective_line) +
                                            ": load_collective: no states"
@@ -473,12 +479,12 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   return s;
 }
 
-Scene load_scene(const fs::path& path) {
+Scene load_scene(const fs::path& path, SceneUse use) {
   if (!fs::is_regular_file(path)) throw InputError("scene " + path.string() + ": no such file");
   const std::string text = core::read_text_file(path);
   try {
     // Absolute: the files it names are recorded by the paths a resumed run looks them up by.
-    return parse_scene(text, fs::absolute(path).parent_path());
+    return parse_scene(text, fs::absolute(path).parent_path(), {}, use);
   } catch (const InputError& error) {
     throw InputError(path.string() + ": " + error.what());
   }

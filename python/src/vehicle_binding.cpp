@@ -72,6 +72,7 @@ py::dict curving_dict(const cli::CurvingAnswer& answer) {
   out["car_body"] = body;
   out["bogies"] = bogies;
   out["wheelsets"] = wheelsets;
+  out["warnings"] = answer.warnings;
   if (answer.table) {
     py::dict t;
     t["shifts"] = answer.table->shifts;

@@ -1,6 +1,7 @@
 """Profiles, contact, wear and curving from Python against the command line's JSON."""
 
 import os
+import re
 
 import numpy as np
 import pytest
@@ -128,6 +129,20 @@ def test_curving_refuses_a_negative_speed(cli):
     with pytest.raises(ValueError) as error:
         wheelwear.curving(radius=500.0, speed=-1.0)
     assert str(error.value) == cli.error("curving", "--radius", "500", "--speed", "-1")
+
+
+def test_curving_warns_where_the_vehicle_file_and_the_scene_differ(source_dir, tmp_path):
+    # The built-in coach proposing a friction of 0.4: the scene's 0.3 is used and the difference
+    # is a RuntimeWarning naming the key, as the command line warns of it.
+    text = open(os.path.join(source_dir, "data", "vehicles", "default.toml")).read()
+    vehicle = tmp_path / "vehicle.toml"
+    vehicle.write_text(re.sub(r"\nfriction = [0-9.]+", "\nfriction = 0.4", text))
+    with pytest.warns(RuntimeWarning, match=r"\[contact\] friction = 0.4 is not used: the curve's 0.3"):
+        got = wheelwear.curving(radius=500.0, cant=0.1, speed=20.0, vehicle=vehicle)
+    assert got.converged is True
+    # Solved at the scene's 0.3: the same balance as the built-in coach's.
+    builtin = wheelwear.curving(radius=500.0, cant=0.1, speed=20.0)
+    assert got.wheelsets[0].dy == builtin.wheelsets[0].dy
 
 
 @pytest.mark.parametrize("name", ["s1002_flange_back.whl", "s1002_worn_33200km.csv"])

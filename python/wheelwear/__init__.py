@@ -368,7 +368,9 @@ def curving(
     curve ``radius`` [m] (+ right-hand, left rail outer; 0 tangent track), ``cant`` [m] (outer
     rail above the inner), ``speed`` [m/s], ``friction`` (top of rail and flange alike; default
     the scene's), ``traction`` per powered axle [N]. Without ``scene`` the built-in profiles
-    (S1002 on 60E1 1:40); without ``vehicle`` the built-in Manchester benchmark coach.
+    (S1002 on 60E1 1:40); without ``vehicle`` the scene's ``[vehicle]``, else the built-in
+    Manchester benchmark coach. Where the vehicle file's wheel radius, lateral arm or proposed
+    ``[contact]`` differ from the scene's, a ``RuntimeWarning`` names each (the scene's are used).
 
     Returns a record with ``converged`` (a status, not an exception), ``message``,
     ``cant_deficiency`` [m], and ``wheelsets`` in order of travel: ``dy`` [m],
@@ -382,6 +384,7 @@ def curving(
         "" if vehicle is None else _os.fspath(vehicle),
         radius, cant, speed, friction, traction, contact_table, threads,
     )
+    _warn_all(result.pop("warnings"))
     return _records(result)
 
 

@@ -151,6 +151,35 @@ TEST_F(RouteCommandTest, ARouteGivenOnTheCommandLineReplacesTheScenesWarnings) {
   EXPECT_NE(given.err.find("20000 steps"), std::string::npos) << given.err;
 }
 
+// A route with a curve in which no balance exists is computed but not usable: its states are
+// printed and written, and the command exits with 3 naming how many conditions did not
+// converge (it exited with 0). The curve is that of exit_status_command_test.cpp's
+// CurvingWithoutABalanceExitsWithThree: wheels without a flange (a cone of 1:40), R 300 m
+// without cant at 30 m/s, friction 0.1. The scene gives the profiles alone: `route` takes the
+// built-in coach where a scene names no vehicle (it was refused for having no collective).
+TEST_F(RouteCommandTest, ARouteWithoutABalanceWritesItsStatesAndExitsWithThree) {
+  std::string cone = "y_mm,z_mm\n";
+  for (int y = -65; y <= 65; ++y)
+    cone += std::to_string(y) + "," + std::to_string(-y / 40.0) + "\n";
+  std::ofstream(dir_ / "cone.csv") << cone;
+  std::ofstream(dir_ / "cone.toml") << "[wheel]\nprofile = \"cone.csv\"\nradius_m = 0.46\n"
+                                       "[rail]\nprofile = \"60E1\"\ninclination = 0.025\n";
+  std::ofstream(dir_ / "sharp.toml")
+      << "[route]\nspeed_m_s = 30\nfriction = 0.1\n[[section]]\nkind = \"tangent\"\n"
+         "length_m = 300\n[[section]]\nkind = \"curve\"\nlength_m = 500\nradius_m = 300\n"
+         "cant_m = 0\n";
+  const fs::path csv = dir_ / "states.csv";
+  const testing::CommandResult r =
+      testing::run_wheelwear("route " + (dir_ / "cone.toml").string() + " --quasi-static --route " +
+                             (dir_ / "sharp.toml").string() + " -o " + csv.string() + " --json");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_EQ(testing::json_number(r.out, "unconverged"), 1.0) << r.out.substr(0, 300);
+  EXPECT_NE(r.err.find("wheelwear: failed: 1 of 2 quasi-static conditions did not converge"),
+            std::string::npos)
+      << r.err;
+  EXPECT_TRUE(fs::exists(csv));
+}
+
 TEST_F(RouteCommandTest, CollectiveCsvKeepsEveryLabelOneCellThatReadsBack) {
   std::vector<WheelsetStateSpec> states(3);
   const char* labels[] = {"curve, R 500\nleft", "#2 S-curve, wheelset 1", "  padded  "};

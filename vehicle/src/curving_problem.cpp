@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "wheelwear/core/input_error.hpp"
 
@@ -96,6 +97,12 @@ double step_limit(const Vector& delta) {
   return 1.0 / ratio;
 }
 
+// The mean of the wheelset's two wheels' nominal radii (they differ where each wheel has its
+// own profile) [m].
+double nominal_radius(const WheelsetModel& model) {
+  return 0.5 * (model.track.left.wheel_radius + model.track.right.wheel_radius);
+}
+
 }  // namespace
 
 double applied_force(const SteadyCurve& curve, double mass) {
@@ -131,10 +138,11 @@ Vector unknowns(const VehiclePlacement& p) {
   return u;
 }
 
-Vector initial_guess(const Vehicle& v, const SteadyCurve& curve) {
+Vector initial_guess(const std::array<WheelsetModel, kWheelsets>& models,
+                     const SteadyCurve& curve) {
   Vector u = Vector::Zero();
   for (int k = 0; k < kWheelsets; ++k)
-    u[wheelset_index(k) + 2] = curve.running.speed / v.wheelset.wheel_radius;
+    u[wheelset_index(k) + 2] = curve.running.speed / nominal_radius(models[k]);
   return u;
 }
 
@@ -245,7 +253,7 @@ Vector CurvingProblem::scaled(const Evaluation& e) const {
   for (int k = 0; k < kWheelsets; ++k) {
     const int w = wheelset_index(k);
     const CurvingWheelset& ws = e.wheelsets[k];
-    double torque_scale = 1e-9 * std::max(ws.load_left, ws.load_right) * v_.wheelset.wheel_radius;
+    double torque_scale = 1e-9 * std::max(ws.load_left, ws.load_right) * nominal_radius(models_[k]);
     for (const WheelForces& wheel : ws.forces.wheels)
       for (const PatchForces& patch : wheel.patches)
         torque_scale += 1e-7 * std::abs(patch.Fx) * patch.rolling_radius;
@@ -267,6 +275,40 @@ bool CurvingProblem::derailed(const Evaluation& e) {
       return f.status == contactgeom::WheelRailStatus::past_flange;
     });
   });
+}
+
+namespace {
+
+// The balance that equation `i` of the residual states, for messages.
+std::string equation_name(int i) {
+  static constexpr std::array<const char*, 3> kWheelset{"lateral force", "yaw moment",
+                                                        "axle torque"};
+  if (i < 2) return std::string("car body ") + (i == 0 ? "lateral force" : "yaw moment");
+  if (i < kBodyUnknowns)
+    return "bogie " + std::to_string((i - 2) / 2 + 1) +
+           ((i - 2) % 2 == 0 ? " lateral force" : " yaw moment");
+  const int k = (i - kBodyUnknowns) / 3;
+  return "wheelset " + std::to_string(k + 1) + " " + kWheelset[(i - kBodyUnknowns) % 3];
+}
+
+// "largest scaled residual 3.2, wheelset 1 axle torque": how far from the tolerance (1) the
+// iterate stopped, and where.
+std::string largest_residual(const Vector& scaled) {
+  int at = 0;
+  const double largest = scaled.cwiseAbs().maxCoeff(&at);
+  char number[32];
+  std::snprintf(number, sizeof number, "%.2g", largest);
+  return std::string("largest scaled residual ") + number + ", " + equation_name(at);
+}
+
+}  // namespace
+
+std::string CurvingProblem::shortfall(const Vector& scaled, const Evaluation& e) const {
+  if (scaled.cwiseAbs().maxCoeff() <= 1.0) {
+    if (derailed(e)) return "balanced, but a wheel's contact lies past its flange's steepest point";
+    if (!loads_met(e)) return "balanced, but a wheel's contact does not carry its load";
+  }
+  return largest_residual(scaled);
 }
 
 bool CurvingProblem::solve(Vector& u, Evaluation& e, int& iterations, std::string& message) const {
@@ -317,12 +359,12 @@ bool CurvingProblem::solve(Vector& u, Evaluation& e, int& iterations, std::strin
       }
     }
     if (!taken) {
-      message = "the line search found no smaller residual (largest scaled residual " +
-                std::to_string(size.cwiseAbs().maxCoeff()) + ")";
+      message = "the line search found no smaller residual (" + shortfall(size, e) + ")";
       return false;
     }
   }
-  message = "no convergence in " + std::to_string(options_.max_iterations) + " Newton iterations";
+  message = "no convergence in " + std::to_string(options_.max_iterations) +
+            " Newton iterations (" + shortfall(scaled(e), e) + ")";
   return false;
 }
 

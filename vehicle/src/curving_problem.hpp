@@ -42,8 +42,9 @@ struct Evaluation {
 
 // The unknowns of a placement, and back (placement).
 Vector unknowns(const VehiclePlacement& p);
-// The start: every body centred and radial, each axle at the spin of its nominal radius.
-Vector initial_guess(const Vehicle& v, const SteadyCurve& curve);
+// The start: every body centred and radial, each axle at the spin of its wheels' nominal
+// radius (the contact's, which a vehicle file's own radius need not match).
+Vector initial_guess(const std::array<WheelsetModel, kWheelsets>& models, const SteadyCurve& curve);
 // The curve scaled towards tangent track by `share` of its curvature and cant.
 SteadyCurve partial_curve(const SteadyCurve& curve, double share);
 
@@ -72,6 +73,9 @@ class CurvingProblem {
   Matrix jacobian(const Vector& u, const Evaluation& at) const;
   // The residuals in units of their tolerances: within 1 everywhere is converged.
   Vector scaled(const Evaluation& e) const;
+  // Why `e` (scaled residual `scaled`) is not a solution, for messages: the balance furthest
+  // from its tolerance, or the contact that a balanced state fails on.
+  std::string shortfall(const Vector& scaled, const Evaluation& e) const;
   // Every wheel's contact met its load.
   bool loads_met(const Evaluation& e) const;
   // A wheel whose contact has passed its flank's steepest point has derailed: a balance there

@@ -102,7 +102,7 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
   }
   VehicleCurving result;
   result.cant_deficiency = curve.cant_deficiency();
-  Vector u = initial_guess(vehicle, curve);
+  Vector u = initial_guess(wheelsets, curve);
   Evaluation e;
   bool converged = false;
   std::string message;
@@ -160,7 +160,7 @@ VehicleCurving solve_vehicle_curving(const Vehicle& vehicle,
   const auto continuation = [&](const std::array<WheelsetModel, kWheelsets>& models,
                                 std::initializer_list<int> attempts) {
     for (int steps : attempts) {
-      u = initial_guess(vehicle, curve);
+      u = initial_guess(models, curve);
       bool reached = true;
       for (int s = 1; s <= steps && reached; ++s) {
         const CurvingProblem problem(vehicle, models, partial_curve(curve, double(s) / steps),

@@ -38,6 +38,8 @@ class VehicleReader {
                          "--export-default-vehicle DIR` for a complete file)");
     }
     v.wheelset.body.cg_height = v.wheelset.wheel_radius;
+    for (const std::string& key : seen_)
+      if (key.rfind("contact.", 0) == 0) v.contact.given.insert(key.substr(8));
     if (!stop_deflection_.empty() || !stop_force_.empty()) {
       v.lateral_stop.deflection = stop_deflection_;
       v.lateral_stop.force = stop_force_;

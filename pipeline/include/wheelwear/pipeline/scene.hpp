@@ -241,16 +241,21 @@ using SceneFileReader = std::function<std::optional<std::string>(const std::file
 /// The reader of files on disk (a regular file's bytes, else none).
 std::optional<std::string> read_scene_file_from_disk(const std::filesystem::path& path);
 
+/// What a scene is read for: a wear run needs its states' source ([load_collective], [vehicle]
+/// or [hook]); a vehicle solve alone (`curving`, `route`) takes the profiles, track and contact
+/// model of any scene and the built-in coach and route where it names none.
+enum class SceneUse { wear_run, vehicle_solve };
+
 /// Parses a scene. Relative file names are taken from `base_directory`; `read` reads every file
 /// the scene names (default: from disk), each once, and the scene keeps them (Scene::inputs).
 /// Every problem (TOML syntax, unknown key, wrong type,
 /// a value out of range, a missing file) throws InputError naming the key and its line, before
 /// any work starts.
 Scene parse_scene(std::string_view toml_text, const std::filesystem::path& base_directory,
-                  const SceneFileReader& read = {});
+                  const SceneFileReader& read = {}, SceneUse use = SceneUse::wear_run);
 
 /// Reads and parses the scene file `path`.
-Scene load_scene(const std::filesystem::path& path);
+Scene load_scene(const std::filesystem::path& path, SceneUse use = SceneUse::wear_run);
 
 /// The built-in default scene's text (data/scenes/default.toml).
 std::string_view default_scene_text();

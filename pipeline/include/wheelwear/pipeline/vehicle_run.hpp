@@ -267,6 +267,17 @@ void redraw_pieces(std::vector<DynamicPiece>& pieces, const VehicleRun& run, std
 /// or resumes one. `lateral_arm` as the scene's.
 void require_upright_route(const VehicleRun& run, double lateral_arm);
 
+/// Where a vehicle file disagrees with the scene it runs in, one warning each naming the key,
+/// both values and which one is used (a difference was silent): its wheel radius (the contact
+/// rolls on the scene's wheel) and lateral arm, and every key of its [contact] table it states
+/// (a pairing it proposes; the scene's profiles and track are used). `vehicle_name` names the
+/// file in the warnings; `wheel_radius` is the scene's wheel's nominal radius [m]; `friction`
+/// the friction of a single curve (`curving`), unset on a route, whose sections give their own.
+std::vector<std::string> vehicle_scene_differences(const vehicle::Vehicle& v,
+                                                   const std::string& vehicle_name,
+                                                   const Scene& scene, double wheel_radius,
+                                                   std::optional<double> friction);
+
 /// The contact look-up table of `model` the run interpolates from (VehicleRun::contact_table):
 /// the default grid (contactgeom::WheelsetTableOptions), its loads from a quarter to three times
 /// `vehicle`'s static wheel load.

@@ -4,6 +4,7 @@
 /// vehicle file gives them (vehicle_file.hpp). SI units throughout.
 
 #include <array>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,8 @@ struct VehicleContactDefaults {
   double gauge = 1.435;             ///< [m]
   double back_to_back = 1.360;      ///< [m]
   double friction = 0.3;            ///< [-]
+  /// The keys the vehicle file states ("friction", "gauge_m", ...); the others are defaults.
+  std::set<std::string> given;
 };
 
 /// The vehicle.
