@@ -14,6 +14,7 @@ profiles::ProfileFileOptions ProfileFileArgs::options() const {
   out.origin = *parsed;
   out.taping_line_distance = taping_line_distance;
   out.max_drop_fraction = max_drop;
+  out.smoothing_length = smoothing;
   const auto mirror = profiles::gauge_side_mirror(gauge_side);
   if (!mirror) throw InputError("--gauge-side " + gauge_side + ": must be auto, left or right");
   out.rail_gauge_side = *mirror;
@@ -31,7 +32,10 @@ void ProfileFileArgs::refuse_for_standard(bool standard_wheel, bool standard_rai
     refuse(taping_line_distance_option, "wheel");
   }
   if (standard_rail) refuse(gauge_side_option, "rail");
-  if (standard_wheel && standard_rail) refuse(max_drop_option, "profile");
+  if (standard_wheel && standard_rail) {
+    refuse(max_drop_option, "profile");
+    refuse(smoothing_option, "profile");
+  }
 }
 
 void add_profile_file_options(CLI::App* cmd, ProfileFileArgs& args) {
@@ -61,6 +65,14 @@ void add_profile_file_options(CLI::App* cmd, ProfileFileArgs& args) {
                       "written: left = smaller values, right = larger (MiniProf rails: right),\n"
                       "auto = the end measured deeper; set it when auto mirrors a rail")
           ->check(CLI::IsMember({"auto", "left", "right"}))
+          ->capture_default_str();
+  args.smoothing_option =
+      cmd->add_option(
+             "--smoothing", args.smoothing,
+             "profile files: smoothing length of the fit [m], 0 ... 0.005; wavelengths of\n"
+             "2 pi times it are halved. Longer for a record wavy on the scale of a\n"
+             "millimetre (its slope swings along the flank), 0 to pass through the points")
+          ->check(CLI::Range(0.0, 5e-3))
           ->capture_default_str();
 }
 

@@ -37,6 +37,7 @@ using detail::text;
 using detail::where;
 
 using detail::builtin_or_file;
+using detail::file_smoothing;
 using detail::inline_states;
 using detail::max_drop;
 using detail::profile_spec;
@@ -110,6 +111,10 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                          {"max_drop",
                           [&](const auto& n, const auto& k) {
                             s.wheel_file.max_drop_fraction = max_drop(n, k);
+                          }},
+                         {"smoothing_length_m",
+                          [&](const auto& n, const auto& k) {
+                            s.wheel_file.smoothing_length = file_smoothing(n, k);
                           }}})},
       {"rail", section("rail",
                        {{"profile",
@@ -119,6 +124,10 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                         {"max_drop",
                          [&](const auto& n, const auto& k) {
                            s.rail_file.max_drop_fraction = max_drop(n, k);
+                         }},
+                        {"smoothing_length_m",
+                         [&](const auto& n, const auto& k) {
+                           s.rail_file.smoothing_length = file_smoothing(n, k);
                          }},
                         {"gauge_side",
                          [&](const auto& n, const auto& k) {

@@ -106,6 +106,13 @@ double max_drop(const toml::node& node, const std::string& key) {
                 "the share of points the cleaning may discard (merged duplicates do not count)");
 }
 
+double file_smoothing(const toml::node& node, const std::string& key) {
+  // 5 mm: longer would round the flange tip (radius 12 mm in EN 13715) and the gauge corner.
+  return number(node, key, 0.0, 5e-3,
+                "the profile file's smoothing length in m (wavelengths of 2 pi times it are "
+                "halved; 0: the curve passes through the points)");
+}
+
 std::vector<std::string> hook_command(const toml::node& node, const std::string& key,
                                       const std::filesystem::path& base) {
   const toml::array* array = node.as_array();

@@ -55,6 +55,9 @@ profiles::WheelOrigin wheel_origin(const toml::node& node, const std::string& ke
 // The share of a file's points the cleaning may discard.
 double max_drop(const toml::node& node, const std::string& key);
 
+// The smoothing length of a profile file's fit [m].
+double file_smoothing(const toml::node& node, const std::string& key);
+
 // [hook] command: a list of strings, the program first; a relative program name with a '/' is
 // taken from `base` (a bare name is looked up on PATH).
 std::vector<std::string> hook_command(const toml::node& node, const std::string& key,

@@ -46,6 +46,7 @@ LoadOptions ProfileFileOptions::load_options(Body body) const {
   options.origin = origin;
   options.taping_line_distance = taping_line_distance;
   options.cleaning.max_drop_fraction = max_drop_fraction;
+  options.curve.smoothing_length = smoothing_length;
   if (body == Body::rail) options.orientation.mirror_y = rail_gauge_side;
   return options;
 }

@@ -181,6 +181,36 @@ TEST(QuasiStaticCurving, AWornWheelWithBandsAndASteepFlankFindsItsBalance) {
   EXPECT_EQ(compared, 5 * 19);
 }
 
+// A measured wheel whose record is wavy on the scale of a millimetre (Car7216_0001r.whl,
+// MiniProf: with the default 0.3 mm smoothing its flank's slope swings 62-55-71-65-80-49
+// degrees within 7 mm; with 2 mm it rises to one peak of 74 degrees). In curves its leading
+// wheelsets run out to a light flange contact, which on the wavy fit lies beyond the flank's
+// steepest wave (past the flange), and Newton finds no balance (22 of the built-in route's 25
+// conditions with the scene's contact chain); with the fit's smoothing length at 2 mm (a
+// scene's [wheel] smoothing_length_m) R 3000 m and R 1000 m are in equilibrium (the whole route
+// with the scene's chain: route_command_test.cpp).
+TEST(QuasiStaticCurving, AWavyMeasuredWheelFindsItsBalanceWhenFittedSmoother) {
+  const Vehicle v = default_vehicle();
+  const auto measured = [](double smoothing) {
+    profiles::LoadOptions options;
+    options.read.body = profiles::Body::wheel;
+    options.curve.smoothing_length = smoothing;
+    return profiles::load_profile(test_data("measured/Car7216_0001r.whl"), options).profile;
+  };
+  const SteadyCurve r3000 = curve_of(3000.0, 0.1, 25.0);
+  EXPECT_FALSE(
+      solve_vehicle_curving(v, four(standard_wheelset(measured(0.3e-3))), r3000).converged);
+  const auto models = four(standard_wheelset(measured(2e-3)));
+  int compared = 0;
+  for (double radius : {3000.0, 1000.0}) {
+    const SteadyCurve curve = curve_of(radius, 0.1, 25.0);
+    const VehicleCurving c = solve_vehicle_curving(v, models, curve);
+    ASSERT_TRUE(c.converged) << "R " << radius << ": " << c.message;
+    expect_equilibrium(v, models, curve, c, compared);
+  }
+  EXPECT_EQ(compared, 2 * 19);
+}
+
 // Traction and braking on the leading bogie's axles only: every body still in balance, the
 // powered axles carry the traction force, the trailing ones roll freely.
 TEST(QuasiStaticCurving, PoweredAxlesCarryTractionAndBraking) {

@@ -18,6 +18,10 @@ struct ProfileFileOptions {
   /// file's header where it states one, else 70 mm (EN 13715).
   std::optional<double> taping_line_distance;
   double max_drop_fraction = 0.2;  ///< share of points cleaning may discard (CleaningOptions)
+  /// The fit's smoothing length [m] (CurveOptions::smoothing_length; LoadOptions' default):
+  /// longer for a record whose surface is wavy on the scale of a millimetre, whose contact
+  /// point then jumps between the waves.
+  double smoothing_length = LoadOptions{}.curve.smoothing_length;
   /// Rails: where the file has its gauge face on its lateral axis (OrientationOptions::mirror_y:
   /// automatic, keep = the smaller values, flip = the larger ones).
   Mirror rail_gauge_side = Mirror::automatic;
