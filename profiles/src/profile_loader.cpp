@@ -5,6 +5,7 @@
 #include <sstream>
 #include <vector>
 
+#include "flank_waviness.hpp"
 #include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
@@ -267,6 +268,10 @@ LoadedProfile prepare_profile(RawProfile raw, const LoadOptions& options) {
     info.taping_line_distance = taping_line_distance(raw, options);
   }
   Profile profile(raw.points, info, options.curve);
+  if (*body == Body::wheel)
+    if (const auto warning =
+            detail::wavy_flank_warning(profile, raw.source, options.curve.smoothing_length))
+      cleaning.warnings.push_back(*warning);
   if (*body == Body::rail) {
     if (const auto warning = gauge_point_warning(profile, raw, orientation))
       cleaning.warnings.push_back(*warning);
