@@ -46,9 +46,11 @@ CurvingAnswer solve_curving(const CurvingRequest& request) {
       profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
   vehicle::WheelsetModel model = pipeline::wheelset_model(kernel, wheel, wheel);
   CurvingAnswer answer;
+  answer.warnings = scene.warnings;
   if (!vehicle_name.empty())
-    answer.warnings = pipeline::vehicle_scene_differences(
-        v, vehicle_name, scene, wheel.info().nominal_radius, curve.running.friction);
+    for (std::string& w : pipeline::vehicle_scene_differences(
+             v, vehicle_name, scene, wheel.info().nominal_radius, curve.running.friction))
+      answer.warnings.push_back(std::move(w));
   std::optional<TableReport>& table = answer.table;
   if (request.contact_table) {
     const auto start = std::chrono::steady_clock::now();

@@ -33,7 +33,8 @@ struct CurvingAnswer {
   vehicle::SteadyCurve curve;
   vehicle::VehicleCurving curving;
   std::optional<TableReport> table;
-  /// Where the vehicle file and the scene disagree (pipeline::vehicle_scene_differences).
+  /// The scene's warnings (what reading its profile files noticed, ...) and where the vehicle
+  /// file and the scene disagree (pipeline::vehicle_scene_differences).
   std::vector<std::string> warnings;
 };
 

@@ -345,8 +345,9 @@ void add_profile_command(CLI::App& app) {
   cmd->add_option("--spacing", args->spacing, "arc-length spacing of the output points [m]")
       ->capture_default_str();
   cmd->add_option("--smoothing", args->smoothing,
-                  "files: smoothing length [m]; wavelengths of 2*pi times it are halved, 0\n"
-                  "interpolates (generated profiles are never smoothed)")
+                  "files: smoothing length [m], 0 ... 0.005; wavelengths of 2*pi times it are\n"
+                  "halved, 0 interpolates (generated profiles are never smoothed)")
+      ->check(CLI::Range(0.0, 5e-3))
       ->capture_default_str();
   cmd->add_option("--unit", args->unit,
                   "plain-text files: auto (from the header or the magnitudes), mm or m")

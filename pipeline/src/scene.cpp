@@ -15,6 +15,7 @@
 #include "scene_values.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/tangential/tangential.hpp"
 #include "wheelwear/vehicle/vehicle_file.hpp"
 #include "wheelwear/wear/wear_law.hpp"
@@ -43,6 +44,16 @@ using detail::max_drop;
 using detail::profile_spec;
 using detail::scene_tangential_method;
 using detail::wheel_origin;
+
+// What reading the scene's profile files noticed (a dropped point, a header that disagrees, a
+// wavy flank): read once here, so that every command a scene drives says it, where the profiles
+// read later for the work kept it to themselves.
+void append_profile_warnings(Scene& s) {
+  if (s.wheel_file.text)
+    (void)profiles::wheel_profile(s.wheel_profile, s.wheel_radius, s.wheel_file, &s.warnings);
+  if (s.rail_file.text)
+    (void)profiles::rail_profile(s.rail_profile, s.rail_inclination, s.rail_file, &s.warnings);
+}
 
 }  // namespace
 
@@ -421,6 +432,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
   }
   s.wear_law_table = law_table;
   s.inputs = files.take();
+  append_profile_warnings(s);
   s.step_distance = std::min(s.step_distance, s.distance);  // one step need not exceed the run
   const double steps = std::ceil(s.distance / s.step_distance);
   if (steps > kStepsLimit) {

@@ -97,13 +97,20 @@ std::optional<std::string> wavy_flank_warning(const Profile& wheel, const std::s
     std::snprintf(text, sizeof text, "%s%.0f", angles.empty() ? "" : ", ", p.angle);
     angles += text;
   }
-  char smoothing[32];
-  std::snprintf(smoothing, sizeof smoothing, "%.2g mm", smoothing_length * 1e3);
+  // Twice the present smoothing, at least 2 mm (which fits the record this was found on as
+  // one flank), at most the 5 mm a scene admits.
+  const double longer = std::clamp(2.0 * smoothing_length, 2e-3, 5e-3);
+  char present[16], suggested[16], metres[16], option[16];
+  std::snprintf(present, sizeof present, "%.2g mm", smoothing_length * 1e3);
+  std::snprintf(suggested, sizeof suggested, "%.2g mm", longer * 1e3);
+  std::snprintf(metres, sizeof metres, "%.2g", longer);
+  std::snprintf(option, sizeof option, "%.4g", longer);
   return source + ": the flank is wavy: its slope peaks " + std::to_string(peaks.size()) +
-         " times (" + angles + " degrees) within a few millimetres with the fit's " + smoothing +
+         " times (" + angles + " degrees) within a few millimetres with the fit's " + present +
          " smoothing; the contact then jumps from wave to wave and a vehicle on it may find no "
-         "balance. A longer smoothing fits one flank (2 mm: the scene's [wheel] "
-         "smoothing_length_m = 2e-3, or --smoothing 0.002)";
+         "balance. A longer smoothing fits one flank (" +
+         suggested + ": the scene's [wheel] smoothing_length_m = " + metres + ", or --smoothing " +
+         option + ")";
 }
 
 }  // namespace wheelwear::profiles::detail

@@ -38,6 +38,15 @@ void refuse_for_standard(bool standard, const char* option, bool given, const ch
                      " files only; the standard profile is generated, not read");
 }
 
+// A file's smoothing length [m], in the command line's range (--smoothing).
+double checked_smoothing(double smoothing) {
+  if (!(smoothing >= 0.0 && smoothing <= 5e-3))
+    throw InputError("--smoothing = " + core::format_number(smoothing) +
+                     ": the smoothing length of a profile file's fit must lie in 0 ... 0.005 m "
+                     "(2 mm fits a record wavy on the scale of a millimetre)");
+  return smoothing;
+}
+
 }  // namespace
 
 void bind_profiles(py::module_& m) {
@@ -106,8 +115,10 @@ void bind_profiles(py::module_& m) {
   m.def(
       "wheel_profile",
       [](const std::string& spec, std::optional<double> radius, std::optional<std::string> origin,
-         std::optional<double> taping_line_distance, std::optional<double> max_drop) {
+         std::optional<double> taping_line_distance, std::optional<double> max_drop,
+         std::optional<double> smoothing) {
         const bool standard = spec == "S1002";
+        refuse_for_standard(standard, "--smoothing", smoothing.has_value(), "profile");
         refuse_for_standard(standard, "--origin", origin.has_value(), "wheel");
         refuse_for_standard(standard, "--taping-line-distance", taping_line_distance.has_value(),
                             "wheel");
@@ -118,23 +129,27 @@ void bind_profiles(py::module_& m) {
         files.origin = origin.value_or("auto");
         files.taping_line_distance = taping_line_distance;
         if (max_drop) files.max_drop = *max_drop;
+        if (smoothing) files.smoothing = checked_smoothing(*smoothing);
         std::vector<std::string> warnings;
         Profile p = profiles::wheel_profile(spec, radius, files.options(), &warnings);
         return std::pair(std::move(p), warnings);
       },
       py::arg("spec"), py::arg("radius"), py::arg("origin"), py::arg("taping_line_distance"),
-      py::arg("max_drop"));
+      py::arg("max_drop"), py::arg("smoothing"));
   m.def(
       "rail_profile",
       [](const std::string& spec, std::optional<std::string> inclination,
-         std::optional<std::string> gauge_side, std::optional<double> max_drop) {
+         std::optional<std::string> gauge_side, std::optional<double> max_drop,
+         std::optional<double> smoothing) {
         const bool standard = spec == "60E1" || spec == "UIC60";
+        refuse_for_standard(standard, "--smoothing", smoothing.has_value(), "profile");
         refuse_for_standard(standard, "--gauge-side", gauge_side.has_value(), "rail");
         refuse_for_standard(standard, "--max-drop", max_drop.has_value(), "profile");
         if (gauge_side) cli::require_choice("--gauge-side", *gauge_side, {"auto", "left", "right"});
         cli::ProfileFileArgs files;
         files.gauge_side = gauge_side.value_or("auto");
         if (max_drop) files.max_drop = *max_drop;
+        if (smoothing) files.smoothing = checked_smoothing(*smoothing);
         const std::optional<double> incl =
             inclination ? std::optional(core::parse_inclination(*inclination, "--incl"))
                         : std::nullopt;
@@ -142,7 +157,8 @@ void bind_profiles(py::module_& m) {
         Profile p = profiles::rail_profile(spec, incl, files.options(), &warnings);
         return std::pair(std::move(p), warnings);
       },
-      py::arg("spec"), py::arg("inclination"), py::arg("gauge_side"), py::arg("max_drop"));
+      py::arg("spec"), py::arg("inclination"), py::arg("gauge_side"), py::arg("max_drop"),
+      py::arg("smoothing"));
 }
 
 }  // namespace wheelwear::python

@@ -2,6 +2,7 @@
 
 import os
 import re
+import warnings
 
 import numpy as np
 import pytest
@@ -143,6 +144,22 @@ def test_curving_warns_where_the_vehicle_file_and_the_scene_differ(source_dir, t
     # Solved at the scene's 0.3: the same balance as the built-in coach's.
     builtin = wheelwear.curving(radius=500.0, cant=0.1, speed=20.0)
     assert got.wheelsets[0].dy == builtin.wheelsets[0].dy
+
+
+def test_a_wavy_record_warns_and_a_longer_smoothing_fits_one_flank(source_dir):
+    # The measured record whose flank's slope peaks 4 times within 5 mm at the default 0.3 mm
+    # fit (tests/profiles/flank_waviness_test.cpp): a RuntimeWarning with the fix; none at 2 mm,
+    # which also lowers Sh by 0.2 mm (27.64 -> 27.44 mm, measured), the cost of the longer fit.
+    path = os.path.join(source_dir, "tests", "data", "measured", "Car7216_0001r.whl")
+    with pytest.warns(RuntimeWarning, match="the flank is wavy"):
+        wavy = wheelwear.wheel_profile(path)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        smooth = wheelwear.wheel_profile(path, smoothing=2e-3)
+    assert abs(wavy.parameters()["Sh"] - 27.64e-3) < 0.01e-3
+    assert abs(smooth.parameters()["Sh"] - 27.44e-3) < 0.01e-3
+    with pytest.raises(ValueError, match="--smoothing applies to profile files only"):
+        wheelwear.wheel_profile("S1002", smoothing=2e-3)
 
 
 @pytest.mark.parametrize("name", ["s1002_flange_back.whl", "s1002_worn_33200km.csv"])

@@ -212,18 +212,20 @@ def wheel_profile(
     origin: Optional[str] = None,
     taping_line_distance: Optional[float] = None,
     max_drop: Optional[float] = None,
+    smoothing: Optional[float] = None,
 ) -> Any:
     """A wheel profile: "S1002" (generated, EN 13715) or a profile file (CSV, Simpack, MiniProf).
 
     ``radius``: nominal rolling radius at the taping line [m] (default half the diameter a
     file's header states, else 0.46). For files only: ``origin`` ("auto", "taping-line",
     "internal-face"), ``taping_line_distance`` [m] for an internal-face origin, ``max_drop`` (the
-    share of points cleaning may discard, default 0.2). Loading warnings are issued as
-    ``RuntimeWarning``. Returns a :class:`Profile` (``.sample()``, ``.parameters()`` for Sh, Sd,
-    qR, ...).
+    share of points cleaning may discard, default 0.2), ``smoothing`` (the fit's smoothing
+    length [m], default 0.3e-3; 2e-3 for a record wavy on the scale of a millimetre, which
+    loading warns of). Loading warnings are issued as ``RuntimeWarning``. Returns a
+    :class:`Profile` (``.sample()``, ``.parameters()`` for Sh, Sd, qR, ...).
     """
     profile, warnings = _wheelwear.wheel_profile(
-        _os.fspath(spec), radius, origin, taping_line_distance, max_drop
+        _os.fspath(spec), radius, origin, taping_line_distance, max_drop, smoothing
     )
     _warn_all(warnings)
     return profile
@@ -235,14 +237,18 @@ def rail_profile(
     inclination: Optional[Union[str, float]] = None,
     gauge_side: Optional[str] = None,
     max_drop: Optional[float] = None,
+    smoothing: Optional[float] = None,
 ) -> Any:
     """A rail profile: "60E1" (generated, EN 13674-1) or a profile file.
 
     ``inclination``: "1:40", a slope such as 0.025, or "none" (default 1:40 for 60E1, none for
-    files). For files only: ``gauge_side`` ("auto", "left", "right"), ``max_drop``.
+    files). For files only: ``gauge_side`` ("auto", "left", "right"), ``max_drop``,
+    ``smoothing`` (as the wheel's).
     """
     incl = None if inclination is None else str(inclination)
-    profile, warnings = _wheelwear.rail_profile(_os.fspath(spec), incl, gauge_side, max_drop)
+    profile, warnings = _wheelwear.rail_profile(
+        _os.fspath(spec), incl, gauge_side, max_drop, smoothing
+    )
     _warn_all(warnings)
     return profile
 

@@ -106,6 +106,7 @@ def wheel_profile(
     origin: Optional[str] = ...,
     taping_line_distance: Optional[float] = ...,
     max_drop: Optional[float] = ...,
+    smoothing: Optional[float] = ...,
 ) -> Profile: ...
 def rail_profile(
     spec: PathLike = ...,
@@ -113,6 +114,7 @@ def rail_profile(
     inclination: Optional[Union[str, float]] = ...,
     gauge_side: Optional[str] = ...,
     max_drop: Optional[float] = ...,
+    smoothing: Optional[float] = ...,
 ) -> Profile: ...
 def contact(
     wheel: PathLike = ...,

@@ -197,6 +197,23 @@ TEST_F(RouteCommandTest, AWavyMeasuredWheelFittedSmootherBalancesInEveryConditio
   EXPECT_EQ(testing::json_number(r.out, "states"), 25.0 * 4.0);  // 4 wheelsets, 25 conditions
 }
 
+// What reading a scene's profile file notices is the scene's warning, which every command the
+// scene drives prints (it was dropped where the work read the profiles): here the wavy flank
+// of that record at the default 0.3 mm fit, and nothing at 2 mm.
+TEST_F(RouteCommandTest, AScenesProfileWarningsAreTheScenes) {
+  const auto warnings_with = [&](const std::string& smoothing) {
+    const std::string text = "[wheel]\nprofile = \"" +
+                             testing::test_data("measured/Car7216_0001r.whl") + "\"\n" + smoothing +
+                             "[rail]\nprofile = \"60E1\"\n";
+    int wavy = 0;
+    for (const std::string& w : parse_scene(text, dir_, {}, SceneUse::vehicle_solve).warnings)
+      wavy += w.find("the flank is wavy") != std::string::npos;
+    return wavy;
+  };
+  EXPECT_EQ(warnings_with(""), 1);
+  EXPECT_EQ(warnings_with("smoothing_length_m = 2e-3\n"), 0);
+}
+
 TEST_F(RouteCommandTest, CollectiveCsvKeepsEveryLabelOneCellThatReadsBack) {
   std::vector<WheelsetStateSpec> states(3);
   const char* labels[] = {"curve, R 500\nleft", "#2 S-curve, wheelset 1", "  padded  "};
