@@ -20,6 +20,7 @@
 #include "wheelwear/profiles/columns_format.hpp"
 #include "wheelwear/profiles/internal_face.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 #include "wheelwear/profiles/track.hpp"
@@ -347,7 +348,7 @@ void add_profile_command(CLI::App& app) {
   cmd->add_option("--smoothing", args->smoothing,
                   "files: smoothing length [m], 0 ... 0.005; wavelengths of 2*pi times it are\n"
                   "halved, 0 interpolates (generated profiles are never smoothed)")
-      ->check(CLI::Range(0.0, 5e-3))
+      ->check(CLI::Range(0.0, profiles::kMaxSmoothingLength))
       ->capture_default_str();
   cmd->add_option("--unit", args->unit,
                   "plain-text files: auto (from the header or the magnitudes), mm or m")

@@ -72,7 +72,7 @@ void add_profile_file_options(CLI::App* cmd, ProfileFileArgs& args) {
              "profile files: smoothing length of the fit [m], 0 ... 0.005; wavelengths of\n"
              "2 pi times it are halved. Longer for a record wavy on the scale of a\n"
              "millimetre (its slope swings along the flank), 0 to pass through the points")
-          ->check(CLI::Range(0.0, 5e-3))
+          ->check(CLI::Range(0.0, profiles::kMaxSmoothingLength))
           ->capture_default_str();
 }
 

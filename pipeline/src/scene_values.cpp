@@ -6,6 +6,7 @@
 #include "scene_keys.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/tangential/tangential.hpp"
 
 namespace wheelwear::pipeline::detail {
@@ -107,8 +108,7 @@ double max_drop(const toml::node& node, const std::string& key) {
 }
 
 double file_smoothing(const toml::node& node, const std::string& key) {
-  // 5 mm: longer would round the flange tip (radius 12 mm in EN 13715) and the gauge corner.
-  return number(node, key, 0.0, 5e-3,
+  return number(node, key, 0.0, profiles::kMaxSmoothingLength,
                 "the profile file's smoothing length in m (wavelengths of 2 pi times it are "
                 "halved; 0: the curve passes through the points)");
 }

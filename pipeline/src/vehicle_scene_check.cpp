@@ -1,5 +1,3 @@
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 
@@ -18,17 +16,11 @@ std::string millimetres(double metres) {
   return core::format_number(metres * 1e3) + " mm";
 }
 
-std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
 // A scene names a profile by a standard name (any case) or a resolved path, a vehicle file by a
 // name or a path of its own: the same profile where their file names agree, ignoring case.
 bool same_profile(const std::string& scene, const std::string& proposed) {
-  return lower(std::filesystem::path(scene).filename().string()) ==
-         lower(std::filesystem::path(proposed).filename().string());
+  return core::to_lower(std::filesystem::path(scene).filename().string()) ==
+         core::to_lower(std::filesystem::path(proposed).filename().string());
 }
 
 }  // namespace

@@ -338,13 +338,10 @@ std::string table_hash(const Scene& scene) {
 }
 
 // A run's vehicle file against its scene (vehicle_scene_differences), once as the run starts;
-// a resumed run, like its scene's warnings, says it no more.
-void warn_of_vehicle_differences(const Scene& scene, const RunOptions& options) {
+// a resumed run, like its scene's warnings, says it no more. `radius`: the nominal radius of the
+// run's new wheel profiles.
+void warn_of_vehicle_differences(const Scene& scene, double radius, const RunOptions& options) {
   if (!options.warning || !scene.vehicle_run || scene.vehicle_run->vehicle_file.empty()) return;
-  const double radius =
-      profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file)
-          .info()
-          .nominal_radius;
   for (const std::string& w : vehicle_scene_differences(
            scene.vehicle_run->vehicle, "vehicle file " + scene.vehicle_run->vehicle_file, scene,
            radius, std::nullopt))
@@ -381,9 +378,9 @@ RunSummary run_scene(const Scene& scene, std::string_view scene_text,
   // Everything that can fail on input fails before the file is created.
   detail::check_hook_allowed(scene, options);
   if (scene.vehicle_run) require_upright_route(*scene.vehicle_run, scene.lateral_arm);
-  warn_of_vehicle_differences(scene, options);
   const CollectiveEvaluator evaluator(scene);
   LoopStart start{0, 0.0, new_profiles(scene)};
+  warn_of_vehicle_differences(scene, start.worn.front().info.nominal_radius, options);
   start.initial = start.worn;
   start.hook_directory = hook_directory(output);
   for (const WornProfile& w : start.worn) evaluator.pair(w.build());

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <vector>
 
+#include "wheelwear/profiles/profile_source.hpp"
+
 namespace wheelwear::profiles::detail {
 
 namespace {
@@ -98,8 +100,8 @@ std::optional<std::string> wavy_flank_warning(const Profile& wheel, const std::s
     angles += text;
   }
   // Twice the present smoothing, at least 2 mm (which fits the record this was found on as
-  // one flank), at most the 5 mm a scene admits.
-  const double longer = std::clamp(2.0 * smoothing_length, 2e-3, 5e-3);
+  // one flank), at most what a fit admits.
+  const double longer = std::clamp(2.0 * smoothing_length, 2e-3, kMaxSmoothingLength);
   char present[16], suggested[16], metres[16], option[16];
   std::snprintf(present, sizeof present, "%.2g mm", smoothing_length * 1e3);
   std::snprintf(suggested, sizeof suggested, "%.2g mm", longer * 1e3);

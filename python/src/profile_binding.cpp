@@ -40,7 +40,7 @@ void refuse_for_standard(bool standard, const char* option, bool given, const ch
 
 // A file's smoothing length [m], in the command line's range (--smoothing).
 double checked_smoothing(double smoothing) {
-  if (!(smoothing >= 0.0 && smoothing <= 5e-3))
+  if (!(smoothing >= 0.0 && smoothing <= profiles::kMaxSmoothingLength))
     throw InputError("--smoothing = " + core::format_number(smoothing) +
                      ": the smoothing length of a profile file's fit must lie in 0 ... 0.005 m "
                      "(2 mm fits a record wavy on the scale of a millimetre)");

@@ -33,6 +33,10 @@ struct ProfileFileOptions {
   LoadOptions load_options(Body body) const;
 };
 
+/// The longest smoothing length a profile file's fit may be given [m]: longer would round the
+/// flange tip (radius 12 mm in EN 13715) and the rail's gauge corner.
+inline constexpr double kMaxSmoothingLength = 5e-3;
+
 /// Nominal rolling radius [m] when neither the user nor the file states one.
 inline constexpr double kDefaultWheelRadius = 0.46;
 
