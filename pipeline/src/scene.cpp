@@ -11,6 +11,7 @@
 
 #include "load_collective.hpp"
 #include "scene_keys.hpp"
+#include "scene_states_source.hpp"
 #include "scene_tables.hpp"
 #include "scene_values.hpp"
 #include "wheelwear/core/input_error.hpp"
@@ -448,55 +449,7 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                          " steps (more than 10000): every step evaluates the whole collective "
                          "and writes its group; a longer step_distance_m runs faster");
   }
-  if (s.hook) {
-    if (s.hook->command.empty())
-      throw InputError(
-          "scene: [hook] has no command; give command = [\"program\", \"args\", "
-          "..., \"{collective}\"]");
-    if (s.vehicle_run || collective_line)
-      throw InputError("scene line " + std::to_string(s.hook->line) + ": [hook] and " +
-                       (s.vehicle_run ? "[vehicle]" : "[load_collective]") +
-                       " both give the run's states; give one: the hook's program makes the "
-                       "collective of every step");
-    return s;
-  }
-  // A vehicle solve alone takes the built-in coach or route for the one a scene leaves out.
-  if (s.vehicle_run && use == SceneUse::vehicle_solve) {
-    if (!vehicle_line) s.vehicle_run->vehicle = vehicle::default_vehicle();
-    if (!route_line) s.vehicle_run->route = vehicle::default_route();
-  }
-  if (s.vehicle_run) {
-    if (use == SceneUse::wear_run && (!vehicle_line || !route_line)) {
-      throw InputError(std::string("scene: a vehicle run needs both [vehicle] file and [route] "
-                                   "file (\"default\" for the built-in ones); ") +
-                       (vehicle_line ? "[route] file" : "[vehicle] file") + " is missing");
-    }
-    if (collective_line) {
-      throw InputError("scene line " + std::to_string(*collective_line) +
-                       ": [load_collective] and [vehicle] both give the run's states; give one: "
-                       "the vehicle on its route makes the collective of every step itself");
-    }
-    // A route that cannot be run backwards is refused now, not at the first solve.
-    if (s.vehicle_run->direction != RunningDirection::forward)
-      (void)vehicle::reversed(s.vehicle_run->route);
-    // A cant deficiency above what EN 13803 admits is a warning (Route::validate).
-    for (const std::string& w : s.vehicle_run->route.validate()) s.warnings.push_back(w);
-    return s;
-  }
-  if (s.states.empty() && !collective_line && use == SceneUse::vehicle_solve) return s;
-  if (s.states.empty()) {
-    throw InputError(collective_line ? "scene line " + std::to_string(*collective_line) +
-                                           ": load_collective: no states"
-                                     : "scene: no [load_collective], no [vehicle] and no [hook]; "
-                                       "give [load_collective] file = \"states.csv\" (or "
-                                       "[[load_collective.state]] tables), or [vehicle] file and "
-                                       "[route] file (\"default\" for the built-in ones), or a "
-                                       "co-simulation [hook] command");
-  }
-  double total = 0.0;
-  for (const auto& state : s.states) total += state.weight;
-  if (!(total > 0.0))
-    throw InputError("scene: load_collective: the weights sum to 0; give some state a weight > 0");
+  detail::settle_states_source(s, {collective_line, vehicle_line, route_line}, use);
   return s;
 }
 
