@@ -131,6 +131,7 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
         .add("evaluations", static_cast<double>(s.evaluations))
         .add("states_steps_per_second", rate)
         .add("geometry_solves", static_cast<double>(s.geometry_solves))
+        .add("table_contacts", static_cast<double>(s.table_contacts))
         .add("patches", static_cast<double>(s.patches))
         .add("table_patches", static_cast<double>(s.table_patches))
         .add("processes", s.processes)
@@ -161,8 +162,11 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
   const double conicity_end = at(last, "equivalent_conicity");
   std::printf("  %-22s %10.4f %10.4f %+12.4f\n", "conicity (3 mm)", conicity_start, conicity_end,
               conicity_end - conicity_start);
-  std::printf("  %zu state evaluations in %.1f s (%.0f states/s, %zu contact geometries)\n",
+  std::printf("  %zu state evaluations in %.1f s (%.0f states/s, %zu contact geometries",
               s.evaluations, s.elapsed, rate, s.geometry_solves);
+  if (s.table_contacts > 0)
+    std::printf(", %zu of them from the vehicle's contact tables", s.table_contacts);
+  std::printf(")\n");
   if (s.processes > 1)
     std::printf(
         "  spread over %d processes: %.1f MB of outcomes gathered by process 0 (%.0f bytes per "

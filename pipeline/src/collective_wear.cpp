@@ -2,6 +2,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <tuple>
@@ -295,7 +296,8 @@ std::vector<int> CollectiveEvaluator::owners(const std::vector<WheelsetStateSpec
 
 StateOutcomes CollectiveEvaluator::outcomes(const std::vector<const profiles::Profile*>& wheels,
                                             const std::vector<WheelsetStateSpec>& specs,
-                                            const std::vector<std::size_t>& which) const {
+                                            const std::vector<std::size_t>& which,
+                                            const ContactTables* tables) const {
   check_wheels(wheels);
   const Scene& scene = kernel_.scene();
   const TrackIndex track_index = index_tracks(specs, profile_layout(scene));
@@ -313,14 +315,25 @@ StateOutcomes CollectiveEvaluator::outcomes(const std::vector<const profiles::Pr
   for (std::size_t i : which)
     if (slot_of.emplace(index.geometry_of[i], needed.size()).second)
       needed.push_back(index.geometry_of[i]);
+  std::vector<const contactgeom::WheelsetContactTable*> table_of(tracks.size(), nullptr);
+  if (tables)
+    for (std::size_t t = 0; t < tracks.size(); ++t)
+      if (const auto it = tables->find(track_index.profiles[t]); it != tables->end())
+        table_of[t] = it->second.get();
   std::vector<contactgeom::WheelsetContact> contacts(needed.size());
+  std::vector<char> from_table(needed.size(), 0);
   tbb::parallel_for(std::size_t{0}, contacts.size(), [&](std::size_t g) {
     const std::size_t first = index.first_state[needed[g]];
-    contacts[g] = kernel_.contact(tracks[track_of[first]], specs[first]);
+    const std::size_t track = track_of[first];
+    bool interpolated = false;
+    contacts[g] = kernel_.contact(tracks[track], specs[first], table_of[track], &interpolated);
+    from_table[g] = interpolated ? 1 : 0;
   });
 
   StateOutcomes out;
   out.geometry_solves = contacts.size();
+  out.table_contacts =
+      static_cast<std::size_t>(std::count(from_table.begin(), from_table.end(), 1));
   out.states.resize(which.size());
   // Wheel by wheel: a state's two wheels are independent work.
   tbb::parallel_for(std::size_t{0}, 2 * which.size(), [&](std::size_t k) {
@@ -344,6 +357,7 @@ CollectiveWear CollectiveEvaluator::reduce(const std::vector<const profiles::Pro
           static_cast<double>(all.states.size()), "one per state of the collective");
   CollectiveWear out;
   out.geometry_solves = all.geometry_solves;
+  out.table_contacts = all.table_contacts;
   for (const profiles::Profile* wheel : wheels) {
     const auto bins = static_cast<std::size_t>(std::ceil(wheel->length() / kWearBin)) + 1;
     out.rate.push_back(wear::WearDistribution::zeros(0.0, kWearBin, bins));
@@ -354,10 +368,11 @@ CollectiveWear CollectiveEvaluator::reduce(const std::vector<const profiles::Pro
 }
 
 CollectiveWear CollectiveEvaluator::evaluate(const std::vector<const profiles::Profile*>& wheels,
-                                             const std::vector<WheelsetStateSpec>& specs) const {
+                                             const std::vector<WheelsetStateSpec>& specs,
+                                             const ContactTables* tables) const {
   std::vector<std::size_t> every(specs.size());
   for (std::size_t i = 0; i < every.size(); ++i) every[i] = i;
-  return reduce(wheels, specs, outcomes(wheels, specs, every));
+  return reduce(wheels, specs, outcomes(wheels, specs, every, tables));
 }
 
 }  // namespace wheelwear::pipeline

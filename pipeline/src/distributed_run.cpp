@@ -118,12 +118,13 @@ StateOutcomes StepDistributor::outcomes(const CollectiveEvaluator& evaluator,
                                         const std::vector<profiles::PointList>& points,
                                         const std::vector<const profiles::Profile*>& wheels,
                                         const std::vector<WheelsetStateSpec>& specs,
-                                        bool scene_states) {
+                                        bool scene_states, const ContactTables* tables) {
   busy_ = true;
   detail::WireWriter w;
   w.u64(static_cast<std::uint64_t>(Message::step));
   detail::write(w, points);
   w.flag(scene_states);
+  w.flag(tables != nullptr);
   if (!scene_states) detail::write(w, specs);
   std::string message = w.take();
   group_.broadcast(message);
@@ -132,7 +133,7 @@ StateOutcomes StepDistributor::outcomes(const CollectiveEvaluator& evaluator,
       states_by_rank(evaluator.owners(specs, group_.size()), group_.size());
   const std::vector<std::size_t>& own = share[0];
   StateOutcomes mine;
-  tbb::this_task_arena::isolate([&] { mine = evaluator.outcomes(wheels, specs, own); });
+  tbb::this_task_arena::isolate([&] { mine = evaluator.outcomes(wheels, specs, own, tables); });
   const auto waiting = Clock::now();
   const std::vector<std::string> parts = group_.gather({});
   busy_ = false;  // the others are free again; what follows is this process's alone
@@ -140,6 +141,7 @@ StateOutcomes StepDistributor::outcomes(const CollectiveEvaluator& evaluator,
   StateOutcomes all;
   all.states.resize(specs.size());
   all.geometry_solves = mine.geometry_solves;
+  all.table_contacts = mine.table_contacts;
   for (std::size_t k = 0; k < own.size(); ++k) all.states[own[k]] = std::move(mine.states[k]);
   gathered_bytes_ = 0;
   gathered_states_ = specs.size() - own.size();
@@ -148,6 +150,7 @@ StateOutcomes StepDistributor::outcomes(const CollectiveEvaluator& evaluator,
     gathered_bytes_ += part.size();
     detail::WireReader r(part);
     all.geometry_solves += r.u64();
+    all.table_contacts += r.u64();
     std::vector<StateOutcome> theirs = detail::read_outcomes(r);
     const std::vector<std::size_t>& which = share[static_cast<std::size_t>(rank)];
     if (theirs.size() != which.size() || !r.done())
@@ -293,15 +296,23 @@ class StepServer {
   void step(detail::WireReader& r) {
     const std::vector<profiles::Profile> wheels = rebuilt(templates_, detail::read_point_lists(r));
     const bool scene_states = r.flag();
+    // The tables of this step's vehicle solve, on the same profiles (prepare_route).
+    const bool on_tables = r.flag();
+    if (on_tables && !solver_)
+      throw std::runtime_error(
+          "process 0 evaluates a step on the vehicle's contact tables, and "
+          "this process has built none");
     const std::vector<WheelsetStateSpec> sent =
         scene_states ? std::vector<WheelsetStateSpec>{} : detail::read_specs(r);
     const std::vector<WheelsetStateSpec>& specs = scene_states ? scene_->states : sent;
     const std::vector<std::size_t> mine =
         states_by_rank(evaluator_->owners(specs, group_.size()),
                        group_.size())[static_cast<std::size_t>(group_.rank())];
-    const StateOutcomes outcomes = evaluator_->outcomes(detail::pointers_to(wheels), specs, mine);
+    const StateOutcomes outcomes = evaluator_->outcomes(
+        detail::pointers_to(wheels), specs, mine, on_tables ? &solver_->contact_tables() : nullptr);
     detail::WireWriter w;
     w.u64(outcomes.geometry_solves);
+    w.u64(outcomes.table_contacts);
     detail::write(w, outcomes.states);
     group_.gather(w.bytes());
   }

@@ -343,6 +343,10 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
                  [&](const auto& n, const auto& k) {
                    vehicle_run().contact_table = boolean(n, k);
                  }},
+                {"wear_from_table",
+                 [&](const auto& n, const auto& k) {
+                   vehicle_run().wear_from_table = boolean(n, k);
+                 }},
                 {"critical_speed",
                  [&](const auto& n, const auto& k) {
                    vehicle_run().critical_speed = boolean(n, k);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <utility>
 
 #include "wheelwear/contactgeom/kinematics.hpp"
 #include "wheelwear/core/input_error.hpp"
@@ -150,7 +152,9 @@ contactgeom::WheelRailPair StateKernel::pair(const profiles::Profile& wheel) con
 }
 
 contactgeom::WheelsetContact StateKernel::contact(const contactgeom::WheelsetOnTrack& track,
-                                                  const WheelsetStateSpec& s) const {
+                                                  const WheelsetStateSpec& s,
+                                                  const contactgeom::WheelsetContactTable* table,
+                                                  bool* interpolated) const {
   contactgeom::WheelsetState state;
   state.dy = s.dy;
   state.yaw = s.yaw;
@@ -158,6 +162,13 @@ contactgeom::WheelsetContact StateKernel::contact(const contactgeom::WheelsetOnT
   state.vertical_force_right = s.load_right;
   state.lateral_force_left = s.lateral_force_left;
   state.lateral_force_right = s.lateral_force_right;
+  if (interpolated) *interpolated = false;
+  if (table && scene_.model != tangential::ContactModel::hertz) {
+    if (std::optional<contactgeom::WheelsetContact> found = table->contact(state)) {
+      if (interpolated) *interpolated = true;
+      return std::move(*found);
+    }
+  }
   return contactgeom::solve_wheelset(track, state, options_);
 }
 

@@ -47,13 +47,19 @@ void find_critical_speed(const RunningWay& way, const Models& models,
   }
 }
 
-// The profile of physical wheelset j's wheel on `side` (0 left, 1 right) among `wheels`
-// (ProfileLayout's order).
-const profiles::Profile& profile_of(const std::vector<const profiles::Profile*>& wheels,
-                                    std::size_t j, std::size_t side) {
-  if (wheels.size() == 1) return *wheels[0];
-  if (wheels.size() == 2) return *wheels[side];
-  return *wheels[2 * j + side];
+// The index of physical wheelset j's wheel on `side` (0 left, 1 right) among `count` worn
+// profiles (ProfileLayout's order).
+std::size_t profile_index(std::size_t count, std::size_t j, std::size_t side) {
+  if (count == 1) return 0;
+  if (count == 2) return side;
+  return 2 * j + side;
+}
+
+// The profiles (left, right in travel) of the wheelset k in order of travel, running forwards
+// or backwards (the physical wheelset 3 - k, its sides swapped).
+std::array<std::size_t, 2> travel_profiles(std::size_t count, std::size_t k, bool reversed) {
+  const std::size_t j = reversed ? vehicle::kWheelsets - 1 - k : k;
+  return {profile_index(count, j, reversed ? 1 : 0), profile_index(count, j, reversed ? 0 : 1)};
 }
 
 // The models of both directions (a direction the run does not take gets the other's); each
@@ -61,24 +67,23 @@ const profiles::Profile& profile_of(const std::vector<const profiles::Profile*>&
 std::array<Models, 2> direction_models(const VehicleRun& run, const StateKernel& kernel,
                                        const std::vector<const profiles::Profile*>& wheels) {
   constexpr auto kSets = static_cast<std::size_t>(vehicle::kWheelsets);
-  std::vector<std::pair<const profiles::Profile*, const profiles::Profile*>> pairs;
+  std::vector<std::array<std::size_t, 2>> pairs;
   std::array<std::array<std::size_t, kSets>, 2> pair_of{};
   const std::array<bool, 2> taken{run.direction != RunningDirection::reverse,
                                   run.direction != RunningDirection::forward};
   for (std::size_t d = 0; d < 2; ++d) {
     if (!taken[d]) continue;
     for (std::size_t k = 0; k < kSets; ++k) {
-      const std::size_t j = d == 0 ? k : kSets - 1 - k;
-      const profiles::Profile* left = &profile_of(wheels, j, d == 0 ? 0 : 1);
-      const profiles::Profile* right = &profile_of(wheels, j, d == 0 ? 1 : 0);
-      const auto it = std::find(pairs.begin(), pairs.end(), std::pair{left, right});
+      const std::array<std::size_t, 2> pair = travel_profiles(wheels.size(), k, d == 1);
+      const auto it = std::find(pairs.begin(), pairs.end(), pair);
       pair_of[d][k] = static_cast<std::size_t>(it - pairs.begin());
-      if (it == pairs.end()) pairs.emplace_back(left, right);
+      if (it == pairs.end()) pairs.push_back(pair);
     }
   }
   std::vector<std::optional<vehicle::WheelsetModel>> distinct(pairs.size());
   tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t i) {
-    vehicle::WheelsetModel model = wheelset_model(kernel, *pairs[i].first, *pairs[i].second);
+    vehicle::WheelsetModel model =
+        wheelset_model(kernel, *wheels[pairs[i][0]], *wheels[pairs[i][1]]);
     if (run.contact_table) model.table = contact_table(model, run.vehicle);
     distinct[i] = std::move(model);
   });
@@ -233,6 +238,10 @@ RouteSolver::RouteSolver(const VehicleRun& run, const StateKernel& kernel,
   if (run.time_domain.redraw) redraw_pieces(plan_.pieces, run, draw);
   ways_[0] = running_way(run, false);
   if (run.direction != RunningDirection::forward) ways_[1] = running_way(run, true);
+  for (std::size_t d = 0; d < 2; ++d)
+    for (std::size_t k = 0; k < models_[d].size(); ++k)
+      if (models_[d][k].table)
+        tables_.emplace(travel_profiles(wheels.size(), k, d == 1), models_[d][k].table);
 }
 
 const RunningWay& RouteSolver::way(bool reversed) const {
@@ -320,6 +329,7 @@ VehicleCollective solve_vehicle_collective(const VehicleRun& run, const StateKer
     throw;
   }
   critical_speed.wait();
+  out.contact_tables = solver.contact_tables();
   return out;
 }
 

@@ -116,11 +116,11 @@ CollectiveWear evaluate_step(const CollectiveEvaluator& evaluator,
                              const std::vector<WornProfile>& worn,
                              const std::vector<const profiles::Profile*>& wheels,
                              const std::vector<WheelsetStateSpec>& specs, bool scene_states,
-                             StepDistributor* distributor) {
-  if (!distributor) return evaluator.evaluate(wheels, specs);
-  return evaluator.reduce(
-      wheels, specs,
-      distributor->outcomes(evaluator, detail::points_of(worn), wheels, specs, scene_states));
+                             const ContactTables* tables, StepDistributor* distributor) {
+  if (!distributor) return evaluator.evaluate(wheels, specs, tables);
+  return evaluator.reduce(wheels, specs,
+                          distributor->outcomes(evaluator, detail::points_of(worn), wheels, specs,
+                                                scene_states, tables));
 }
 
 RunSummary loop(const Scene& scene, std::string_view scene_text,
@@ -175,14 +175,20 @@ RunSummary loop(const Scene& scene, std::string_view scene_text,
     const std::vector<WheelsetStateSpec>& specs = scene.vehicle_run ? carry.last.states
                                                   : scene.hook      ? hook.states
                                                                     : scene.states;
-    const CollectiveWear cw = evaluate_step(evaluator, worn, pointers, specs,
-                                            !scene.vehicle_run && !scene.hook, options.distributor);
+    // The vehicle's tables hold this step's profiles only where it was solved at this step.
+    const ContactTables* tables =
+        vehicle_solved && scene.vehicle_run->wear_from_table ? &carry.last.contact_tables : nullptr;
+    const CollectiveWear cw =
+        evaluate_step(evaluator, worn, pointers, specs, !scene.vehicle_run && !scene.hook, tables,
+                      options.distributor);
+    carry.last.contact_tables.clear();  // the profiles change at the end of the step
     if (options.distributor) {
       summary.gathered_bytes += options.distributor->gathered_bytes();
       summary.gathered_states += options.distributor->gathered_states();
     }
     summary.evaluations += specs.size();
     summary.geometry_solves += cw.geometry_solves;
+    summary.table_contacts += cw.table_contacts;
 
     std::vector<wear::WearDistribution> smooth_rate;
     for (const auto& r : cw.rate)
@@ -215,6 +221,10 @@ RunSummary loop(const Scene& scene, std::string_view scene_text,
                           "1 when the run ends here because a profile reached a limit")));
     g.arrays.push_back(as_integer(
         scalar("patches", static_cast<double>(cw.patches), "1", "contact patches solved")));
+    g.arrays.push_back(as_integer(
+        scalar("table_contacts", static_cast<double>(cw.table_contacts), "1",
+               "wheelset contacts interpolated in the vehicle's contact tables of this step "
+               "([vehicle] wear_from_table) instead of solved")));
     g.arrays.push_back(
         as_integer(scalar("table_patches", static_cast<double>(cw.table_patches), "1",
                           "of them, with totals from the book of tables "

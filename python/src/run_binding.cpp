@@ -25,6 +25,7 @@ py::dict summary_dict(const pipeline::RunSummary& s) {
   o["elapsed"] = s.elapsed;
   o["evaluations"] = s.evaluations;
   o["geometry_solves"] = s.geometry_solves;
+  o["table_contacts"] = s.table_contacts;
   o["patches"] = s.patches;
   o["table_patches"] = s.table_patches;
   o["vehicle_solves"] = s.vehicle_solves;

@@ -5,10 +5,13 @@
 
 #include <array>
 #include <cstddef>
+#include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "wheelwear/contactgeom/wheelset_table.hpp"
 #include "wheelwear/pipeline/scene.hpp"
 #include "wheelwear/pipeline/state_kernel.hpp"
 #include "wheelwear/profiles/profile.hpp"
@@ -49,6 +52,7 @@ struct CollectiveWear {
   std::vector<StateOutcome> states;
   DroppedStates dropped;            ///< states not worn, by reason
   std::size_t geometry_solves = 0;  ///< distinct wheel/rail contacts solved (after reuse)
+  std::size_t table_contacts = 0;   ///< of them, interpolated in a contact table
   std::size_t patches = 0;          ///< patches solved and worn
   std::size_t table_patches = 0;    ///< of them, with totals from the book of tables ("best")
   /// Exact solves ("exact") that stopped at their iteration cap; their last iterate is used.
@@ -105,10 +109,18 @@ void reduce_states(const Scene& scene, const std::vector<WheelsetStateSpec>& spe
 void reduce_states(const Scene& scene, const std::vector<StateOutcome>& states,
                    CollectiveWear& out);
 
+/// Contact tables of the evaluated wheels, per pair of profiles: the key is the indices (left,
+/// right) into the wheels of the evaluation (worn_profiles' numbering). A table must have been
+/// built on exactly those profiles, in the kernel's track and with its contact options.
+using ContactTables =
+    std::map<std::array<std::size_t, 2>, std::shared_ptr<const contactgeom::WheelsetContactTable>>;
+
 /// Outcomes of some of a collective's states, in the order they were asked for.
 struct StateOutcomes {
   std::vector<StateOutcome> states;
   std::size_t geometry_solves = 0;  ///< distinct wheel/rail contacts solved for them
+  /// Of them, interpolated in a contact table instead of solved (`tables` of outcomes()).
+  std::size_t table_contacts = 0;
 };
 
 /// The fixed part of a run: the kernel (rail, track, models, law) and the collective.
@@ -127,8 +139,11 @@ class CollectiveEvaluator {
   /// profiles::wheel_profile do). TBB-parallel over contacts and states.
   CollectiveWear evaluate(const std::vector<const profiles::Profile*>& wheels) const;
   /// Evaluates `specs` instead of the scene's collective (a vehicle run's states of the step).
+  /// With `tables`, each state's contact is interpolated in its pair of profiles' table where
+  /// StateKernel::contact answers from it, and solved elsewhere.
   CollectiveWear evaluate(const std::vector<const profiles::Profile*>& wheels,
-                          const std::vector<WheelsetStateSpec>& specs) const;
+                          const std::vector<WheelsetStateSpec>& specs,
+                          const ContactTables* tables = nullptr) const;
 
   /// Which of `ranks` processes evaluates each state of `specs` when a step is spread over
   /// processes (distributed_run.hpp): whole contact geometries dealt out in turn, so that states
@@ -137,9 +152,11 @@ class CollectiveEvaluator {
   std::vector<int> owners(const std::vector<WheelsetStateSpec>& specs, int ranks) const;
   /// The outcomes of states `which` (indices into `specs`) on `wheels`, TBB-parallel; each is
   /// bit-identical to its outcome in evaluate(), whatever else is asked with it.
+  /// `tables` as for evaluate().
   StateOutcomes outcomes(const std::vector<const profiles::Profile*>& wheels,
                          const std::vector<WheelsetStateSpec>& specs,
-                         const std::vector<std::size_t>& which) const;
+                         const std::vector<std::size_t>& which,
+                         const ContactTables* tables = nullptr) const;
   /// The evaluation from the outcomes of every state of `specs`, in order (reduce_states).
   CollectiveWear reduce(const std::vector<const profiles::Profile*>& wheels,
                         const std::vector<WheelsetStateSpec>& specs, StateOutcomes all) const;

@@ -47,11 +47,14 @@ class StepDistributor final : public RouteExecutor {
   void start(const SceneSource& source, const Scene& scene);
   /// The outcomes of every state of `specs` on the profiles `wheels` (built from `points`, as the
   /// other processes rebuild them), each process evaluating its share. `scene_states`: `specs`
-  /// are the scene's own collective, which the other processes hold already.
+  /// are the scene's own collective, which the other processes hold already. `tables`: process
+  /// 0's tables of the vehicle solved on these profiles (prepare_route); the others evaluate on
+  /// the tables they built there.
   StateOutcomes outcomes(const CollectiveEvaluator& evaluator,
                          const std::vector<profiles::PointList>& points,
                          const std::vector<const profiles::Profile*>& wheels,
-                         const std::vector<WheelsetStateSpec>& specs, bool scene_states);
+                         const std::vector<WheelsetStateSpec>& specs, bool scene_states,
+                         const ContactTables* tables = nullptr);
   /// Before a vehicle solve: the other processes build the same RouteSolver on the profiles of
   /// `points` for `draw` (their contact tables) while process 0 builds its own.
   void prepare_route(const std::vector<profiles::PointList>& points, std::uint64_t draw);

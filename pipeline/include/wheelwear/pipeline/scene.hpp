@@ -138,6 +138,11 @@ struct VehicleRun {
   /// Interpolate the wheels' contacts from a look-up table built on each solve's profiles
   /// (contactgeom::WheelsetContactTable) rather than solve every one directly.
   bool contact_table = true;
+  /// At a step where the vehicle was solved, its states' wear is evaluated on the same tables
+  /// (with contact_table): each state's contact is the one its motion was computed with, at a
+  /// fraction of a direct solve's cost. Direct solves elsewhere, and where a table does not
+  /// answer.
+  bool wear_from_table = true;
   /// Tangents and transitions simulated in time with the track's irregularities.
   TimeDomainKeys time_domain;
   /// The vehicle's linear critical speed on tangent track at each solve, on its profiles

@@ -13,6 +13,7 @@
 #include "wheelwear/contactgeom/rail_friction.hpp"
 #include "wheelwear/contactgeom/sdec.hpp"
 #include "wheelwear/contactgeom/wheelset.hpp"
+#include "wheelwear/contactgeom/wheelset_table.hpp"
 #include "wheelwear/pipeline/scene.hpp"
 #include "wheelwear/tangential/solution.hpp"
 #include "wheelwear/tangential/tangential.hpp"
@@ -99,9 +100,15 @@ class StateKernel {
   contactgeom::WheelRailPair pair(const profiles::Profile& wheel) const;
 
   /// The contact of the wheelset at the state's position, loads and prescribed lateral forces
-  /// (the yaw enters only the creepages: states that differ only in yaw share it).
+  /// (the yaw enters only the creepages: states that differ only in yaw share it). With `table`
+  /// (built on `track`'s profiles with contact_options()) it is interpolated there where the
+  /// table answers (no prescribed lateral force, every node around it usable) and the scene's
+  /// contact model is not hertz (a table keeps no Hertz ellipse); solved elsewhere.
+  /// `interpolated`, where given, says which.
   contactgeom::WheelsetContact contact(const contactgeom::WheelsetOnTrack& track,
-                                       const WheelsetStateSpec& state) const;
+                                       const WheelsetStateSpec& state,
+                                       const contactgeom::WheelsetContactTable* table = nullptr,
+                                       bool* interpolated = nullptr) const;
 
   /// Solves and wears the patches of wheel `side` (0 left, 1 right) of `state` in `contact`
   /// (from contact()) on `wheel_profile`, whose length fixes the wear grid. With `keep_fields`

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/scene.hpp"
 #include "wheelwear/pipeline/state_kernel.hpp"
 #include "wheelwear/vehicle/quasi_static_curving.hpp"
@@ -157,6 +158,10 @@ struct VehicleCollective {
   /// critical_speed); NaN where not computed or not found (critical_speed_note says which).
   double critical_speed = std::numeric_limits<double>::quiet_NaN();
   std::string critical_speed_note = "not computed";
+  /// The contact tables the vehicle ran on (VehicleRun::contact_table), per pair of the solve's
+  /// wheel profiles: the step's states are evaluated on them while those profiles are current
+  /// (VehicleRun::wear_from_table). Neither stored nor sent between processes.
+  ContactTables contact_tables;
 };
 
 /// The states of the four wheelsets (in order of travel) in a solved case, each weighted 1
@@ -218,12 +223,16 @@ class RouteSolver {
   vehicle::VehicleCurving solve(const CaseTask& task) const;
   /// Simulates the piece of `task` from its start.
   PieceOutcome simulate(const PieceTask& task) const;
+  /// The models' contact tables (VehicleRun::contact_table), per pair of profiles, keyed as
+  /// the evaluation of the states on the same wheels numbers them (ContactTables).
+  const ContactTables& contact_tables() const { return tables_; }
 
  private:
   RoutePlan plan_;
   std::vector<int> worn_;
   std::array<Models, 2> models_;
   std::array<std::optional<RunningWay>, 2> ways_;
+  ContactTables tables_;
 };
 
 /// Where a vehicle solve's cases and pieces are worked out, results in the tasks' order: in

@@ -56,6 +56,7 @@ struct RunSummary {
   double elapsed = 0.0;             ///< wall time of this process [s]
   std::size_t evaluations = 0;      ///< wheelset states evaluated by this process
   std::size_t geometry_solves = 0;  ///< distinct wheel/rail contacts solved by this process
+  std::size_t table_contacts = 0;   ///< of them, interpolated in the vehicle's contact tables
   std::size_t patches = 0;          ///< contact patches solved by this process
   std::size_t table_patches = 0;    ///< of them, with totals from the book of tables ("best")
   int vehicle_solves = 0;           ///< a vehicle run's solves of its vehicle by this process
