@@ -13,6 +13,7 @@
 #include "choices.hpp"
 #include "contact_inputs.hpp"
 #include "contact_wear.hpp"
+#include "profile_file_kwargs.hpp"
 #include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
@@ -54,6 +55,13 @@ cli::ContactInputs contact_inputs(const py::dict& kw) {
   get("phi", in.creepages.phi);
   get("mu", in.mu);
   get("V", in.motion.speed);
+  ProfileFileKwargs files;
+  get("origin", files.origin);
+  get("taping_line_distance", files.taping_line_distance);
+  get("max_drop", files.max_drop);
+  get("gauge_side", files.gauge_side);
+  get("smoothing", files.smoothing);
+  in.files = profile_file_args(files, in.wheel != "S1002", in.rail != "60E1" && in.rail != "UIC60");
   cli::require_choice("--normal-method", in.normal_method,
                       core::all_names(contactgeom::kNormalMethodNames));
   return in;

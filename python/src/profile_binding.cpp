@@ -10,7 +10,7 @@
 
 #include "bindings.hpp"
 #include "choices.hpp"
-#include "profile_file_options.hpp"
+#include "profile_file_kwargs.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
@@ -30,21 +30,6 @@ py::array_t<double> points_array(const profiles::PointList& points) {
     v(static_cast<py::ssize_t>(i), 1) = points[i][1];
   }
   return out;
-}
-
-void refuse_for_standard(bool standard, const char* option, bool given, const char* what) {
-  if (standard && given)
-    throw InputError(std::string(option) + " applies to " + what +
-                     " files only; the standard profile is generated, not read");
-}
-
-// A file's smoothing length [m], in the command line's range (--smoothing).
-double checked_smoothing(double smoothing) {
-  if (!(smoothing >= 0.0 && smoothing <= profiles::kMaxSmoothingLength))
-    throw InputError("--smoothing = " + core::format_number(smoothing) +
-                     ": the smoothing length of a profile file's fit must lie in 0 ... 0.005 m "
-                     "(2 mm fits a record wavy on the scale of a millimetre)");
-  return smoothing;
 }
 
 }  // namespace
@@ -117,19 +102,9 @@ void bind_profiles(py::module_& m) {
       [](const std::string& spec, std::optional<double> radius, std::optional<std::string> origin,
          std::optional<double> taping_line_distance, std::optional<double> max_drop,
          std::optional<double> smoothing) {
-        const bool standard = spec == "S1002";
-        refuse_for_standard(standard, "--smoothing", smoothing.has_value(), "profile");
-        refuse_for_standard(standard, "--origin", origin.has_value(), "wheel");
-        refuse_for_standard(standard, "--taping-line-distance", taping_line_distance.has_value(),
-                            "wheel");
-        refuse_for_standard(standard, "--max-drop", max_drop.has_value(), "profile");
-        if (origin)
-          cli::require_choice("--origin", *origin, {"auto", "taping-line", "internal-face"});
-        cli::ProfileFileArgs files;
-        files.origin = origin.value_or("auto");
-        files.taping_line_distance = taping_line_distance;
-        if (max_drop) files.max_drop = *max_drop;
-        if (smoothing) files.smoothing = checked_smoothing(*smoothing);
+        const cli::ProfileFileArgs files =
+            profile_file_args({origin, taping_line_distance, max_drop, std::nullopt, smoothing},
+                              spec != "S1002", false);
         std::vector<std::string> warnings;
         Profile p = profiles::wheel_profile(spec, radius, files.options(), &warnings);
         return std::pair(std::move(p), warnings);
@@ -141,15 +116,9 @@ void bind_profiles(py::module_& m) {
       [](const std::string& spec, std::optional<std::string> inclination,
          std::optional<std::string> gauge_side, std::optional<double> max_drop,
          std::optional<double> smoothing) {
-        const bool standard = spec == "60E1" || spec == "UIC60";
-        refuse_for_standard(standard, "--smoothing", smoothing.has_value(), "profile");
-        refuse_for_standard(standard, "--gauge-side", gauge_side.has_value(), "rail");
-        refuse_for_standard(standard, "--max-drop", max_drop.has_value(), "profile");
-        if (gauge_side) cli::require_choice("--gauge-side", *gauge_side, {"auto", "left", "right"});
-        cli::ProfileFileArgs files;
-        files.gauge_side = gauge_side.value_or("auto");
-        if (max_drop) files.max_drop = *max_drop;
-        if (smoothing) files.smoothing = checked_smoothing(*smoothing);
+        const cli::ProfileFileArgs files =
+            profile_file_args({std::nullopt, std::nullopt, max_drop, gauge_side, smoothing}, false,
+                              spec != "60E1" && spec != "UIC60");
         const std::optional<double> incl =
             inclination ? std::optional(core::parse_inclination(*inclination, "--incl"))
                         : std::nullopt;

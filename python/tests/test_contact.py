@@ -162,6 +162,34 @@ def test_a_wavy_record_warns_and_a_longer_smoothing_fits_one_flank(source_dir):
         wheelwear.wheel_profile("S1002", smoothing=2e-3)
 
 
+def test_contact_and_wear_read_profile_files_as_the_command_line(cli, source_dir):
+    # The wavy record fitted over 2 mm: contact() and wear() take the file keywords of
+    # wheel_profile() and give what `contact --smoothing` and `wear --smoothing` give; the
+    # default fit differs from it, so the keyword is not ignored.
+    path = os.path.join(source_dir, "tests", "data", "measured", "Car7216_0001r.whl")
+    args = ("--wheel", path, "--dy", 0.004, "--load", 55000, "--smoothing", 0.002)
+    expected = cli("contact", *args)
+    got = wheelwear.contact(path, dy=0.004, load=55000.0, smoothing=2e-3)
+    assert len(got.patches) == len(expected["patches"]) > 0
+    for mine, theirs in zip(got.patches, expected["patches"]):
+        for key in ("area", "a", "b", "psi", "y_wheel", "contact_angle", "N", "pmax"):
+            assert mine[key] == theirs[key], key
+    with pytest.warns(RuntimeWarning, match="the flank is wavy"):
+        default_fit = wheelwear.contact(path, dy=0.004, load=55000.0)
+    assert default_fit.patches[0].y_wheel != got.patches[0].y_wheel
+    worn = wheelwear.wear(path, dy=0.004, load=55000.0, vx=1e-3, smoothing=2e-3)
+    expected_wear = cli("wear", *args, "--vx", 1e-3)
+    assert worn.patches[0].wear.worn_volume_per_metre == expected_wear["patches"][0][
+        "worn_volume_per_metre"] > 0.0
+    # Refused for a standard profile as the command line refuses the option.
+    with pytest.raises(ValueError) as error:
+        wheelwear.contact(dy=0.0, load=55000.0, origin="taping-line")
+    assert str(error.value) == cli.error("contact", "--dy", "0", "--load", "55000",
+                                         "--origin", "taping-line")
+    with pytest.raises(ValueError, match="--gauge-side applies to rail files only"):
+        wheelwear.contact(path, dy=0.0, load=55000.0, gauge_side="left")
+
+
 @pytest.mark.parametrize("name", ["s1002_flange_back.whl", "s1002_worn_33200km.csv"])
 def test_a_measured_wheel_reads_as_the_command_line_reads_it(cli, source_dir, name):
     # The same reader, cleaning and fit: the curve's extent and EN 15313's Sh, Sd, qR equal the

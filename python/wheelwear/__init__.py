@@ -287,6 +287,11 @@ def contact(
     strip_width: float = 0.1e-3,
     normal_method: str = "hertz-calibrated",
     epsilon: float = 0.55,
+    origin: Optional[str] = None,
+    taping_line_distance: Optional[float] = None,
+    max_drop: Optional[float] = None,
+    gauge_side: Optional[str] = None,
+    smoothing: Optional[float] = None,
 ) -> Any:
     """The contact patches of one wheel (the left one) of a wheelset on its rail, as
     ``wheelwear contact``: lateral shift ``dy`` [m] (+ towards this wheel's flange contact),
@@ -294,7 +299,10 @@ def contact(
     ``back_to_back`` [m], Young's modulus ``E`` [Pa], ``nu``, the gap's lateral sampling
     ``strip_width`` [m], and the normal problem: ``normal_method`` "hertz-calibrated" (each
     patch's virtual penetration from Hertz's ellipse for its curvature ratio; the default) or
-    "kik-piotrowski" (one factor ``epsilon``).
+    "kik-piotrowski" (one factor ``epsilon``). Profile files are read as :func:`wheel_profile`
+    and :func:`rail_profile` read them: ``origin``, ``taping_line_distance`` (wheel files),
+    ``gauge_side`` (rail files), ``max_drop`` and ``smoothing`` (either), refused for the
+    standard profiles.
 
     Returns a record with ``status`` ("ok", or why not: a status, not an exception), ``message``,
     ``vertical_force``, ``lateral_force`` [N], ``approach`` [m] and ``patches``: each with
@@ -335,12 +343,17 @@ def wear(
     strip_width: float = 0.1e-3,
     normal_method: str = "hertz-calibrated",
     epsilon: float = 0.55,
+    origin: Optional[str] = None,
+    taping_line_distance: Optional[float] = None,
+    max_drop: Optional[float] = None,
+    gauge_side: Optional[str] = None,
+    smoothing: Optional[float] = None,
 ) -> Any:
     """One wheel position's wear, as ``wheelwear wear``: the contact of :func:`contact`, each
     patch's tangential problem with the contact ``model`` (sdec, eql, eqe, eqe-shifted, hertz)
     on ``cells`` x ``cells`` FASTSIM cells at the creepages ``vx``, ``vy`` [-], ``phi`` [1/m]
     and friction ``mu``, the wear ``law`` (usfd: T gamma; archard: the KTH map) at speed ``V``
-    [m/s].
+    [m/s]. Profile files are read as for :func:`contact`.
 
     A contact that carries no load (a flange climb, say) has no wear: its ``status`` and
     ``message`` say why and each patch's ``wear`` is None. Otherwise each patch has ``wear``

@@ -133,6 +133,11 @@ def contact(
     strip_width: float = ...,
     normal_method: str = ...,
     epsilon: float = ...,
+    origin: Optional[str] = ...,
+    taping_line_distance: Optional[float] = ...,
+    max_drop: Optional[float] = ...,
+    gauge_side: Optional[str] = ...,
+    smoothing: Optional[float] = ...,
 ) -> Record: ...
 def wear(
     wheel: PathLike = ...,
@@ -159,6 +164,11 @@ def wear(
     strip_width: float = ...,
     normal_method: str = ...,
     epsilon: float = ...,
+    origin: Optional[str] = ...,
+    taping_line_distance: Optional[float] = ...,
+    max_drop: Optional[float] = ...,
+    gauge_side: Optional[str] = ...,
+    smoothing: Optional[float] = ...,
 ) -> Record: ...
 def curving(
     scene: Optional[PathLike] = ...,
