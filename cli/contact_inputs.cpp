@@ -63,12 +63,21 @@ void add_contact_options(CLI::App* cmd, ContactInputs& in) {
   cmd->add_option("--omega", in.motion.angular_velocity,
                   "wheel spin about the axle [rad/s]; 0: free rolling on the nominal radius")
       ->capture_default_str();
+  cmd->add_option("--slip-point", in.slip_point,
+                  "with --kinematic: where the lateral creepage is the wheel's rigid slip:\n"
+                  "axle-plane (projected onto the contact plane at O, the multibody codes'\n"
+                  "convention) or contact-point (along the contact plane where a yawed wheel\n"
+                  "touches, ahead of its axle: 1/cos^2 of the contact angle times the former)")
+      ->check(CLI::IsMember(core::all_names(contactgeom::kSlipPointNames)))
+      ->capture_default_str();
 }
 
 tangential::Creepages ContactInputs::creepages_at(const contactgeom::WheelRailPair& pair,
                                                   const contactgeom::WheelRailPatch& patch) const {
   if (!kinematic) return creepages;
-  return contactgeom::kinematic_creepages(patch, pose, motion, pair.wheel_radius);
+  contactgeom::WheelsetMotion at = motion;
+  at.slip_point = *core::value_named(contactgeom::kSlipPointNames, slip_point);
+  return contactgeom::kinematic_creepages(patch, pose, at, pair.wheel_radius);
 }
 
 namespace {

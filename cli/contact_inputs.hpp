@@ -34,7 +34,8 @@ struct ContactInputs {
   std::string normal_method = "hertz-calibrated";  // a contactgeom::kNormalMethodNames name
   double epsilon = 0.55;
   tangential::Creepages creepages;
-  bool kinematic = false;  // creepages from the motion below instead
+  bool kinematic = false;                 // creepages from the motion below instead
+  std::string slip_point = "axle-plane";  // a contactgeom::kSlipPointNames name
   contactgeom::WheelsetMotion motion{20.0, 0.0, 0.0, 0.0, 0.75};
   double mu = 0.3;
 

@@ -31,9 +31,13 @@ Creepages kinematic_creepages(const WheelRailPatch& patch, const WheelsetPose& p
   Creepages c;
   c.vx = (wheel_speed - surface_speed) / rolling;
   // Moving towards its flange the wheel moves towards the rail's field side, -y of the patch;
-  // a yaw towards the flange makes the rolling material move the other way.
-  c.vy =
-      (pose.yaw * wheel_speed - motion.lateral_velocity) * std::cos(patch.contact_angle) / rolling;
+  // a yaw towards the flange makes the rolling material move the other way. At the contact point
+  // the horizontal slip turns along the contact plane with the vertical slip that keeps the
+  // wheel on its rail; at the axle plane it is projected onto it (header).
+  const double horizontal = pose.yaw * wheel_speed - motion.lateral_velocity;
+  const double c_angle = std::cos(patch.contact_angle);
+  c.vy = motion.slip_point == SlipPoint::contact_point ? horizontal / c_angle / rolling
+                                                       : horizontal * c_angle / rolling;
   c.phi = omega * std::sin(patch.contact_angle) / rolling;
   return c;
 }

@@ -359,40 +359,24 @@ constexpr double kMarginReserve = 0.1e-3;
 WheelRailContact solve_wheel_rail_at(const WheelRailPair& pair, const WheelsetPose& pose,
                                      double vertical_force, const WheelRailOptions& options,
                                      double gauge_y) {
-  return std::move(solve_wheel_rail_at_loads(pair, pose, {vertical_force}, options, gauge_y)[0]);
-}
-
-std::vector<WheelRailContact> solve_wheel_rail_at_loads(const WheelRailPair& pair,
-                                                        const WheelsetPose& pose,
-                                                        const std::vector<double>& vertical_forces,
-                                                        const WheelRailOptions& options,
-                                                        double gauge_y) {
   const WheelRailGap geometry(pair, pose, options, gauge_y);
   thread_local CoarseScan coarse;
-  thread_local GapSamples near, wide;
+  thread_local GapSamples g;
   geometry.scan(coarse);
-  // The gap near its minimum first; sampled wide as well once a load reaches beyond it.
   const double first_margin = std::min(options.scan_margin, kFirstMargin);
-  geometry.sample(coarse, first_margin, near);
-  bool wide_sampled = false;
-  std::vector<WheelRailContact> out;
-  out.reserve(vertical_forces.size());
-  for (const double vertical_force : vertical_forces) {
-    WheelRailContact result = solve_on_samples(geometry, near, pose, vertical_force, options);
-    const bool settled = result.status == WheelRailStatus::ok ||
-                         result.status == WheelRailStatus::load_jump ||
-                         result.status == WheelRailStatus::flange_climb ||
-                         result.status == WheelRailStatus::past_flange ||
-                         result.status == WheelRailStatus::profile_end;
-    if (first_margin < options.scan_margin &&
-        (!settled || result.approach + kMarginReserve > first_margin)) {
-      if (!wide_sampled) geometry.sample(coarse, options.scan_margin, wide);
-      wide_sampled = true;
-      result = solve_on_samples(geometry, wide, pose, vertical_force, options);
-    }
-    out.push_back(std::move(result));
+  geometry.sample(coarse, first_margin, g);
+  WheelRailContact result = solve_on_samples(geometry, g, pose, vertical_force, options);
+  const bool settled = result.status == WheelRailStatus::ok ||
+                       result.status == WheelRailStatus::load_jump ||
+                       result.status == WheelRailStatus::flange_climb ||
+                       result.status == WheelRailStatus::past_flange ||
+                       result.status == WheelRailStatus::profile_end;
+  if (first_margin < options.scan_margin &&
+      (!settled || result.approach + kMarginReserve > first_margin)) {
+    geometry.sample(coarse, options.scan_margin, g);
+    result = solve_on_samples(geometry, g, pose, vertical_force, options);
   }
-  return out;
+  return result;
 }
 
 }  // namespace wheelwear::contactgeom::detail

@@ -3,7 +3,6 @@
 // validated: for callers that evaluate many poses of one pair (wheelset.cpp).
 
 #include <limits>
-#include <vector>
 
 #include "wheelwear/contactgeom/wheel_rail.hpp"
 
@@ -13,15 +12,6 @@ namespace wheelwear::contactgeom::detail {
 WheelRailContact solve_wheel_rail_at(const WheelRailPair& pair, const WheelsetPose& pose,
                                      double vertical_force, const WheelRailOptions& options,
                                      double gauge_y);
-
-// solve_wheel_rail_at at each of `vertical_forces` in turn, the same answers: the gap of the
-// pose is sampled once for all of them (a contact table's load levels at one shift), where
-// each call would sample it again.
-std::vector<WheelRailContact> solve_wheel_rail_at_loads(const WheelRailPair& pair,
-                                                        const WheelsetPose& pose,
-                                                        const std::vector<double>& vertical_forces,
-                                                        const WheelRailOptions& options,
-                                                        double gauge_y);
 
 // first_touch with gauge_y = rail_gauge_y(pair) [m]; the input is not validated again.
 // `steepest`: the touch is the lowest local minimum of the gap whose contact angle is below

@@ -9,8 +9,6 @@
 #include <map>
 #include <utility>
 
-#include "wheel_rail_gap.hpp"
-#include "wheel_rail_solve.hpp"
 #include "wheelwear/core/input_error.hpp"
 
 namespace wheelwear::contactgeom {
@@ -150,55 +148,28 @@ WheelRailContact scaled(const std::vector<TablePatch>& patches, WheelRailStatus 
 
 // Every load level of one shift. The roll depends on dy alone: it is solved at the first level
 // and taken as found at the others.
-TableNode node_of(const WheelsetContact& c) {
-  TableNode n;
-  n.roll = c.roll;
-  n.centre_height = c.centre_height;
-  n.left_dy = c.left_pose.dy;
-  n.right_dy = c.right_pose.dy;
-  n.left = tabulate(c.left);
-  n.right = tabulate(c.right);
-  // The pairing of patches between nodes enumerates subsets: a wheel with more patches
-  // than kMaxPatches (none of the profiles seen has more than 3) is solved directly.
-  n.usable = c.roll_converged && c.known_roll.has_value() && answers(n.left.status) &&
-             answers(n.right.status) && n.left.patches.size() <= kMaxPatches &&
-             n.right.patches.size() <= kMaxPatches;
-  return n;
-}
-
-// The nodes of shift `dy` at every load level. The roll puts the undeformed wheels on their
-// rails whatever the load: solved at the first level, it fixes both wheels' poses, and each
-// wheel's gap is sampled once for the other levels (as solve_wheelset with that known roll
-// would solve them one by one).
 std::vector<TableNode> solve_shift(const WheelsetOnTrack& track, const WheelRailOptions& options,
                                    double dy, const std::vector<double>& loads, int& solves) {
+  std::vector<TableNode> nodes(loads.size());
   WheelsetState state;
   state.dy = dy;
-  state.vertical_force_left = state.vertical_force_right = loads.front();
-  const WheelsetContact first = solve_wheelset(track, state, options);
-  solves += first.contact_solves + first.touch_evaluations;
-  std::vector<TableNode> nodes{node_of(first)};
-  if (!first.known_roll) {
-    // No rigid position (a wheel off its rail): every level on its own, as it stands.
-    for (std::size_t j = 1; j < loads.size(); ++j) {
-      state.vertical_force_left = state.vertical_force_right = loads[j];
-      const WheelsetContact c = solve_wheelset(track, state, options);
-      solves += c.contact_solves + c.touch_evaluations;
-      nodes.push_back(node_of(c));
-    }
-    return nodes;
-  }
-  const std::vector<double> rest(loads.begin() + 1, loads.end());
-  const std::vector<WheelRailContact> left = detail::solve_wheel_rail_at_loads(
-      track.left, first.left_pose, rest, options, detail::rail_gauge_y(track.left));
-  const std::vector<WheelRailContact> right = detail::solve_wheel_rail_at_loads(
-      track.right, first.right_pose, rest, options, detail::rail_gauge_y(track.right));
-  solves += 2 * static_cast<int>(rest.size());
-  for (std::size_t j = 0; j < rest.size(); ++j) {
-    WheelsetContact c = first;
-    c.left = left[j];
-    c.right = right[j];
-    nodes.push_back(node_of(c));
+  for (std::size_t j = 0; j < loads.size(); ++j) {
+    state.vertical_force_left = state.vertical_force_right = loads[j];
+    const WheelsetContact c = solve_wheelset(track, state, options);
+    state.known_roll = c.known_roll;
+    solves += c.contact_solves + c.touch_evaluations;
+    TableNode& n = nodes[j];
+    n.roll = c.roll;
+    n.centre_height = c.centre_height;
+    n.left_dy = c.left_pose.dy;
+    n.right_dy = c.right_pose.dy;
+    n.left = tabulate(c.left);
+    n.right = tabulate(c.right);
+    // The pairing of patches between nodes enumerates subsets: a wheel with more patches
+    // than kMaxPatches (none of the profiles seen has more than 3) is solved directly.
+    n.usable = c.roll_converged && c.known_roll.has_value() && answers(n.left.status) &&
+               answers(n.right.status) && n.left.patches.size() <= kMaxPatches &&
+               n.right.patches.size() <= kMaxPatches;
   }
   return nodes;
 }

@@ -239,6 +239,10 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
              [&](const auto& n, const auto& k) {
                s.strip_width = number(n, k, 1e-5, 2e-3, "the strip width in m");
              }},
+            {"slip_point",
+             [&](const auto& n, const auto& k) {
+               s.slip_point = named(n, k, contactgeom::kSlipPointNames, "slip point");
+             }},
             {"normal_method",
              [&](const auto& n, const auto& k) {
                s.normal_method = named(n, k, contactgeom::kNormalMethodNames, "normal method");

@@ -18,7 +18,8 @@ namespace {
 
 // The motion of wheel `side` in its own frame: the right wheel is the mirror image of a left
 // one, so lateral quantities and the yaw change sign.
-contactgeom::WheelsetMotion wheel_motion(const WheelsetStateSpec& s, int side, double lateral_arm) {
+contactgeom::WheelsetMotion wheel_motion(const WheelsetStateSpec& s, int side, double lateral_arm,
+                                         contactgeom::SlipPoint slip_point) {
   const double sign = side == 0 ? 1.0 : -1.0;
   contactgeom::WheelsetMotion motion;
   motion.speed = s.speed;
@@ -28,6 +29,7 @@ contactgeom::WheelsetMotion wheel_motion(const WheelsetStateSpec& s, int side, d
   motion.yaw_rate = sign * ((s.curve_radius == 0.0 ? 0.0 : s.speed / s.curve_radius) - s.yaw_rate);
   motion.angular_velocity = s.angular_velocity.value_or(0.0);  // 0: on the nominal radius
   motion.lateral_arm = lateral_arm;
+  motion.slip_point = slip_point;
   return motion;
 }
 
@@ -187,7 +189,8 @@ WheelOutcome StateKernel::wheel(const contactgeom::WheelsetContact& both, int si
   out.contact_patches = contact.patches.size();
   if (!out.usable()) return out;
 
-  const contactgeom::WheelsetMotion motion = wheel_motion(s, side, scene_.lateral_arm);
+  const contactgeom::WheelsetMotion motion =
+      wheel_motion(s, side, scene_.lateral_arm, scene_.slip_point);
   const std::optional<tangential::Creepages>& given =
       side == 0 ? s.creepages_left : s.creepages_right;
   const tangential::Material material = this->material();

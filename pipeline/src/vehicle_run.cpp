@@ -181,6 +181,7 @@ vehicle::WheelsetModel wheelset_model(const StateKernel& kernel, const profiles:
   model.solve.fastsim.cell_fields = false;  // the vehicle needs the forces only
   model.material = kernel.material();
   model.lateral_arm = kernel.scene().lateral_arm;
+  model.slip_point = kernel.scene().slip_point;
   return model;
 }
 

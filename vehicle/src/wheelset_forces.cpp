@@ -183,9 +183,10 @@ WheelsetForces wheelset_forces(const WheelsetModel& model, const WheelsetMotionS
       const contactgeom::WheelsetPose& pose =
           side == 0 ? out.contact.left_pose : out.contact.right_pose;
       const contactgeom::WheelRailPair& pair = side == 0 ? model.track.left : model.track.right;
+      contactgeom::WheelsetMotion motion = wheel_motion(state, running, side, model.lateral_arm);
+      motion.slip_point = model.slip_point;
       out.wheels[k] =
-          wheel_forces(model, c, pose, wheel_motion(state, running, side, model.lateral_arm),
-                       pair.wheel_radius, running.rail_friction());
+          wheel_forces(model, c, pose, motion, pair.wheel_radius, running.rail_friction());
       if (!contactgeom::carries_load(c.status)) continue;
       const double Q = out.wheels[k].Q;
       const double miss = loads[k] - Q;

@@ -3,8 +3,25 @@
 
 #include "wheelwear/contactgeom/creepages.hpp"
 #include "wheelwear/contactgeom/wheel_rail.hpp"
+#include "wheelwear/core/enum_names.hpp"
 
 namespace wheelwear::contactgeom {
+
+/// Where the lateral creepage is the wheel's rigid slip (kinematic_creepages).
+enum class SlipPoint {
+  /// In the vertical plane through the axle, projected onto the contact plane: the convention of
+  /// multibody codes (and of CONTACT for a prescribed lateral velocity).
+  axle_plane,
+  /// Where the wheel touches its rail, ahead of (or behind) the axle when it is yawed: the slip
+  /// along the contact plane.
+  contact_point,
+};
+
+/// The names scenes and the command line give them.
+inline constexpr core::NameTable<SlipPoint, 2> kSlipPointNames = {{
+    {SlipPoint::axle_plane, "axle-plane"},
+    {SlipPoint::contact_point, "contact-point"},
+}};
 
 /// The wheelset's motion along the track, for the wheel whose contact is evaluated.
 struct WheelsetMotion {
@@ -17,6 +34,7 @@ struct WheelsetMotion {
   double angular_velocity = 0.0;  ///< wheel spin about the axle [rad/s]; 0: free rolling on
                                   ///< the nominal radius, V / r0
   double lateral_arm = 0.75;      ///< distance from the wheelset centre to the contact [m]
+  SlipPoint slip_point = SlipPoint::axle_plane;  ///< where the lateral creepage is taken
 
   void validate() const;  ///< throws InputError naming a bad field
 };
@@ -26,10 +44,22 @@ struct WheelsetMotion {
 /// speeds, as CONTACT defines it):
 ///   V_w = V + yaw_rate * arm (this wheel's forward speed), r = rolling radius at O,
 ///   V_roll = (V_w + omega r)/2, vx = (V_w - omega r)/V_roll,
-///   vy = (yaw - (dy/dt)/V_w) V_w cos(angle)/V_roll (+y: the gauge side),
+///   vy = (yaw V_w - dy/dt) cos(angle)/V_roll (+y: the gauge side) at the axle plane,
+///   vy = (yaw V_w - dy/dt)/(cos(angle) V_roll) at the contact point,
 ///   phi = omega sin(angle)/V_roll.
-/// The rigid lateral slip is projected onto the contact plane, as CONTACT does for prescribed
-/// velocities; the wheelset's roll rate and the yaw rate's share of the spin (below 1e-3 of
+/// At the axle plane (SlipPoint::axle_plane, the default) the horizontal lateral slip is
+/// projected onto the contact plane, as multibody codes take it at O in the vertical plane
+/// through the axle, and as CONTACT projects a prescribed VY. At the contact point
+/// (SlipPoint::contact_point) the wheel's material slides along the contact plane, not through
+/// it: a wheel that stays on its rail has no slip along the contact normal, so the slip's
+/// vertical part is tan(angle) times its horizontal lateral part, and in the plane the two add
+/// to the horizontal part over cos(angle). For the yaw that vertical slip is the spin's at the
+/// contact point ahead of (or behind) the axle, X* = -r yaw dz/dy along the rolling direction
+/// (undeformed_distance.hpp): omega X* = -yaw omega r tan(angle) (tested against the lead
+/// undeformed_distance finds); for the lateral velocity it is the wheel's rise as the
+/// wheelset's roll and height follow its shift. The two agree on the tread to within angle^2;
+/// on a flange flank at 1.22 rad the contact point's is 8.6 times the axle plane's. The
+/// wheelset's roll rate's own lateral slip and the yaw rate's share of the spin (below 1e-3 of
 /// omega sin(angle) in curves) are not included.
 Creepages kinematic_creepages(const WheelRailPatch& patch, const WheelsetPose& pose,
                               const WheelsetMotion& motion, double nominal_radius);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "wheelwear/contactgeom/kik_piotrowski.hpp"
+#include "wheelwear/contactgeom/kinematics.hpp"
 #include "wheelwear/pipeline/cosimulation_hook.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/profiles/wheel_parameters.hpp"
@@ -210,6 +211,9 @@ struct Scene {
   /// How the normal problem chooses its virtual penetration: Kik-Piotrowski's fixed epsilon
   /// (virtual_penetration), or Hertz-calibrated per patch.
   contactgeom::KpPenetration normal_method = contactgeom::KpPenetration::hertz_calibrated;
+  /// Where a patch's lateral creepage is the wheel's rigid slip: in the axle's vertical plane
+  /// (projected) or at the contact point ahead of a yawed axle (contactgeom::SlipPoint).
+  contactgeom::SlipPoint slip_point = contactgeom::SlipPoint::axle_plane;
   double virtual_penetration = 0.55;  ///< Kik-Piotrowski epsilon [-], with kik-piotrowski
   /// A contact steeper than this is flange climb, its state not worn [rad]
   /// (contactgeom::WheelRailOptions::max_contact_angle).

@@ -62,6 +62,8 @@ struct WheelsetModel {
   /// Distance from the wheelset centre to each wheel's contact [m]: the arm of the yaw rate in
   /// each wheel's forward speed and of the longitudinal forces in the yaw moment.
   double lateral_arm = 0.75;
+  /// Where each patch's lateral creepage is the wheel's rigid slip (contactgeom::SlipPoint).
+  contactgeom::SlipPoint slip_point = contactgeom::SlipPoint::axle_plane;
   /// A contact look-up table of `track` with `contact` (contactgeom::WheelsetContactTable): the
   /// wheels' contacts are interpolated from it where it answers and solved directly elsewhere.
   /// Unset: always solved directly (the reference).
