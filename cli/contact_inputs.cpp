@@ -52,9 +52,10 @@ void add_contact_options(CLI::App* cmd, ContactInputs& in) {
   cmd->add_option("--mu", in.mu, "friction coefficient [-]")->capture_default_str();
   cmd->add_option("--V", in.motion.speed, "forward speed of the wheelset [m/s]")
       ->capture_default_str();
-  cmd->add_flag("--kinematic", in.kinematic,
-                "creepages at each O from the wheelset's motion (--V, --lateral-velocity,\n"
-                "--yaw-rate, --omega and --yaw) instead of --vx --vy --phi");
+  CLI::Option* kinematic =
+      cmd->add_flag("--kinematic", in.kinematic,
+                    "creepages at each O from the wheelset's motion (--V, --lateral-velocity,\n"
+                    "--yaw-rate, --omega and --yaw) instead of --vx --vy --phi");
   cmd->add_option("--lateral-velocity", in.motion.lateral_velocity,
                   "lateral velocity [m/s], + towards this wheel's flange")
       ->capture_default_str();
@@ -69,6 +70,7 @@ void add_contact_options(CLI::App* cmd, ContactInputs& in) {
                   "convention) or contact-point (along the contact plane where a yawed wheel\n"
                   "touches, ahead of its axle: 1/cos^2 of the contact angle times the former)")
       ->check(CLI::IsMember(core::all_names(contactgeom::kSlipPointNames)))
+      ->needs(kinematic)
       ->capture_default_str();
 }
 

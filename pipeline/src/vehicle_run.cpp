@@ -239,8 +239,11 @@ RouteSolver::RouteSolver(const VehicleRun& run, const StateKernel& kernel,
   if (run.time_domain.redraw) redraw_pieces(plan_.pieces, run, draw);
   ways_[0] = running_way(run, false);
   if (run.direction != RunningDirection::forward) ways_[1] = running_way(run, true);
+  // A direction the run does not take holds the other's models: no tables of its own.
+  const std::array<bool, 2> taken{run.direction != RunningDirection::reverse,
+                                  run.direction != RunningDirection::forward};
   for (std::size_t d = 0; d < 2; ++d)
-    for (std::size_t k = 0; k < models_[d].size(); ++k)
+    for (std::size_t k = 0; taken[d] && k < models_[d].size(); ++k)
       if (models_[d][k].table)
         tables_.emplace(travel_profiles(wheels.size(), k, d == 1), models_[d][k].table);
 }

@@ -14,11 +14,13 @@
 #include <string>
 
 #include "short_route.hpp"
+#include "support/csv_table.hpp"
 #include "vehicle_record.hpp"
 #include "wear_run_support.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/pipeline/collective_wear.hpp"
 #include "wheelwear/pipeline/results_file.hpp"
+#include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/vehicle/vehicle_file.hpp"
 
@@ -144,6 +146,49 @@ TEST(VehicleCollective, KernelMeetsTheTabulatedVehiclesForces) {
 // with: its forces meet the vehicle's to the direct solve's tolerances, without the table's miss.
 TEST(VehicleCollective, KernelOnTheVehiclesTablesMeetsItsForces) {
   expect_kernel_meets_vehicle(true, 0.0, 0.0, true);
+}
+
+// Each table of a vehicle solve is keyed by the profiles (left, right in travel) it was built on,
+// as the evaluation numbers a state's track (worn_profiles): a new left wheel and a worn right
+// one, run both ways, give the forward pair (0, 1) and the reversed (1, 0), and each table
+// answers as the direct solve on its own pair (a wheel's lateral force within the table's
+// refinement tolerance, 1e-3 of its load, plus its load-level interpolation), where the swapped
+// pair's direct solve lies more than ten times that away.
+TEST(VehicleCollective, ContactTablesAreKeyedByTheProfilesTheyWereBuiltOn) {
+  const Scene scene = parse_scene(
+      "[load_collective]\n[[load_collective.state]]\naxle_load_N = 1e5\nspeed_m_s = 40\n", {});
+  const StateKernel kernel(scene);
+  const profiles::Profile fresh = profiles::wheel_profile("S1002", 0.46, {});
+  profiles::LoadOptions options;
+  options.read.body = profiles::Body::wheel;
+  options.nominal_radius = 0.46;
+  const profiles::Profile worn =
+      profiles::load_profile(testing::test_data("profiles/s1002_worn_33200km.csv"), options)
+          .profile;
+  VehicleRun run = short_route_run();
+  run.direction = RunningDirection::both;
+  const std::vector<const profiles::Profile*> wheels{&fresh, &worn};
+  const RouteSolver solver(run, kernel, wheels, 0);
+  const ContactTables& tables = solver.contact_tables();
+  ASSERT_EQ(tables.size(), 2u);
+  WheelsetStateSpec spec;
+  spec.dy = 3e-3;
+  spec.load_left = spec.load_right = 55e3;
+  for (const std::array<std::size_t, 2> key : {std::array<std::size_t, 2>{0, 1}, {1, 0}}) {
+    ASSERT_EQ(tables.count(key), 1u);
+    const contactgeom::WheelsetOnTrack own{kernel.pair(*wheels[key[0]]),
+                                           kernel.pair(*wheels[key[1]])};
+    const contactgeom::WheelsetOnTrack swapped{own.right, own.left};
+    bool interpolated = false;
+    const contactgeom::WheelsetContact table =
+        kernel.contact(own, spec, tables.at(key).get(), &interpolated);
+    ASSERT_TRUE(interpolated);
+    const contactgeom::WheelsetContact direct = kernel.contact(own, spec);
+    const contactgeom::WheelsetContact other = kernel.contact(swapped, spec);
+    const double tolerance = 2e-3 * spec.load_left;
+    EXPECT_NEAR(table.left.lateral_force, direct.left.lateral_force, tolerance);
+    EXPECT_GT(std::abs(other.left.lateral_force - direct.left.lateral_force), 10.0 * tolerance);
+  }
 }
 
 // A step's wear from the vehicle's tables against direct solves of the same states (the

@@ -58,9 +58,11 @@ struct WheelsetMotion {
 /// (undeformed_distance.hpp): omega X* = -yaw omega r tan(angle) (tested against the lead
 /// undeformed_distance finds); for the lateral velocity it is the wheel's rise as the
 /// wheelset's roll and height follow its shift. The two agree on the tread to within angle^2;
-/// on a flange flank at 1.22 rad the contact point's is 8.6 times the axle plane's. The
-/// wheelset's roll rate's own lateral slip and the yaw rate's share of the spin (below 1e-3 of
-/// omega sin(angle) in curves) are not included.
+/// on a flange flank at 1.22 rad the contact point's is 8.5 times the axle plane's. The
+/// yaw rate's share of the spin (below 1e-3 of omega sin(angle) in curves) is not included, nor
+/// the roll rate's own lateral slip at the contact, r times the roll rate: small against the
+/// yaw's in a curve, but on a flank of the same order as dy/dt itself, so that the contact
+/// point's dy/dt part is incomplete there (its yaw part is not).
 Creepages kinematic_creepages(const WheelRailPatch& patch, const WheelsetPose& pose,
                               const WheelsetMotion& motion, double nominal_radius);
 

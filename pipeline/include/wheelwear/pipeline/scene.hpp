@@ -140,9 +140,10 @@ struct VehicleRun {
   /// (contactgeom::WheelsetContactTable) rather than solve every one directly.
   bool contact_table = true;
   /// At a step where the vehicle was solved, its states' wear is evaluated on the same tables
-  /// (with contact_table): each state's contact is the one its motion was computed with, at a
-  /// fraction of a direct solve's cost. Direct solves elsewhere, and where a table does not
-  /// answer.
+  /// (with contact_table): each state's contact is the one its balance or motion was computed
+  /// with where that was on the tables (not where a balance was finished on direct contacts or
+  /// kept from earlier profiles), at a fraction of a direct solve's cost. Direct solves
+  /// elsewhere, where a table does not answer, and with the hertz contact model.
   bool wear_from_table = true;
   /// Tangents and transitions simulated in time with the track's irregularities.
   TimeDomainKeys time_domain;
