@@ -56,13 +56,17 @@ void add_contact_options(CLI::App* cmd, ContactInputs& in) {
       cmd->add_flag("--kinematic", in.kinematic,
                     "creepages at each O from the wheelset's motion (--V, --lateral-velocity,\n"
                     "--yaw-rate, --omega and --yaw) instead of --vx --vy --phi");
+  // The motion enters only the kinematic creepages: given without them it would be ignored.
   cmd->add_option("--lateral-velocity", in.motion.lateral_velocity,
                   "lateral velocity [m/s], + towards this wheel's flange")
+      ->needs(kinematic)
       ->capture_default_str();
   cmd->add_option("--yaw-rate", in.motion.yaw_rate, "yaw rate [rad/s], + when this wheel leads")
+      ->needs(kinematic)
       ->capture_default_str();
   cmd->add_option("--omega", in.motion.angular_velocity,
                   "wheel spin about the axle [rad/s]; 0: free rolling on the nominal radius")
+      ->needs(kinematic)
       ->capture_default_str();
   cmd->add_option("--slip-point", in.slip_point,
                   "with --kinematic: where the lateral creepage is the wheel's rigid slip:\n"

@@ -76,6 +76,31 @@ TEST(ContactStatusCommand, NormalMethodChoosesThePatch) {
   EXPECT_NE(bad.err.find("hertz-calibrated"), std::string::npos) << bad.err;
 }
 
+// --slip-point takes the lateral creepage at the contact point ahead of a yawed axle: on the
+// flank (1.21 rad) 1/cos^2 of the contact angle times the axle plane's (kinematics.hpp), within
+// the printed digits. The motion's options without --kinematic would be ignored: refused, naming
+// what they need.
+TEST(ContactStatusCommand, SlipPointTakesTheLateralCreepageAtTheContactPoint) {
+  const std::string yawed = pair_args(0.008) + " --yaw 0.005";
+  const auto axle = run_wheelwear(yawed);
+  const auto point = run_wheelwear(yawed + " --slip-point contact-point");
+  ASSERT_EQ(axle.exit_code, 0) << axle.err;
+  ASSERT_EQ(point.exit_code, 0) << point.err;
+  const double angle = *json_number(axle.out, "contact_angle");
+  const double c = std::cos(angle);
+  EXPECT_GT(angle, 1.1);
+  EXPECT_NEAR(*json_number(point.out, "vy"), *json_number(axle.out, "vy") / (c * c),
+              1e-9 * std::abs(*json_number(point.out, "vy")));
+  const std::string plain =
+      "contact --dy 0.004 --load 55000 --creep --vx 1e-3 --lateral-velocity 0.01";
+  const auto refused = run_wheelwear(plain);
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_NE(refused.err.find("--kinematic"), std::string::npos) << refused.err;
+  const auto slip = run_wheelwear("contact --dy 0.004 --load 55000 --slip-point contact-point");
+  EXPECT_NE(slip.exit_code, 0);
+  EXPECT_NE(slip.err.find("--kinematic"), std::string::npos) << slip.err;
+}
+
 TEST(ContactStatusCommand, TreadAndRootContactAreNotFlagged) {
   int compared = 0;
   for (double dy : {-0.004, 0.0, 0.004, 0.006}) {
