@@ -17,8 +17,12 @@ namespace {
 
 constexpr std::size_t kMaxPatches = 8;
 
+// A wheel that carries its load: normally, in a load jump (the nearer side), or with its
+// contact reported as climbing or past the flange (the contact is solved all the same, and the
+// status travels with the interpolated contact).
 bool answers(WheelRailStatus status) {
-  return status == WheelRailStatus::ok || status == WheelRailStatus::load_jump;
+  return status == WheelRailStatus::ok || status == WheelRailStatus::load_jump ||
+         status == WheelRailStatus::flange_climb || status == WheelRailStatus::past_flange;
 }
 
 // The patch with its forces multiplied by `forces` and its sizes (SDEC a and b, and pmax) by
@@ -116,8 +120,22 @@ std::vector<TablePatch> blend(const std::vector<TablePatch>& p, double wp,
   return out;
 }
 
+// The status the direct solve would report first (solve_wheel_rail's order of checks).
+int precedence(WheelRailStatus s) {
+  switch (s) {
+    case WheelRailStatus::load_jump:
+      return 3;
+    case WheelRailStatus::flange_climb:
+      return 2;
+    case WheelRailStatus::past_flange:
+      return 1;
+    default:
+      return 0;
+  }
+}
+
 WheelRailStatus worse(WheelRailStatus a, WheelRailStatus b) {
-  return a == WheelRailStatus::ok ? b : a;
+  return precedence(b) > precedence(a) ? b : a;
 }
 
 // The wheel's contact at vertical force Fz from its interpolated shares.
@@ -210,7 +228,29 @@ bool misses(const std::vector<TableNode>& lo, const std::vector<TableNode>& hi,
   return false;
 }
 
+bool same_pair(const WheelRailPair& a, const WheelRailPair& b) {
+  return a.gauge == b.gauge && a.gauge_depth == b.gauge_depth && a.back_to_back == b.back_to_back &&
+         a.wheel_radius == b.wheel_radius && a.flange_back_y == b.flange_back_y &&
+         a.youngs_modulus == b.youngs_modulus && a.poisson == b.poisson &&
+         a.wheel.knot_points() == b.wheel.knot_points() &&
+         a.rail.knot_points() == b.rail.knot_points();
+}
+
+// The node at -dy of a wheelset whose wheels and rails are alike: the one at dy with the wheels
+// swapped (each wheel's patches and pose are in its own frame) and the roll turned over.
+TableNode mirrored(const TableNode& n) {
+  TableNode m = n;
+  m.roll = -n.roll;
+  std::swap(m.left_dy, m.right_dy);
+  std::swap(m.left, m.right);
+  return m;
+}
+
 }  // namespace
+
+bool mirror_symmetric(const WheelsetOnTrack& track) {
+  return same_pair(track.left, track.right);
+}
 
 void WheelsetTableOptions::validate() const {
   require(std::isfinite(dy_max) && dy_max > 0.0 && dy_max < 0.1, "dy_max", dy_max,
@@ -265,11 +305,16 @@ WheelsetContactTable::WheelsetContactTable(const WheelsetOnTrack& track,
     }
   };
 
-  const auto initial = std::max<long long>(1, std::llround(2.0 * grid.dy_max / grid.dy_step));
+  // A wheelset whose wheels and rails are alike is tabulated over dy >= 0 and mirrored: half
+  // the solves, and the table then mirrors exactly (the direct solves do to rounding).
+  const bool mirror = mirror_symmetric(track);
+  auto initial = std::max<long long>(1, std::llround(2.0 * grid.dy_max / grid.dy_step));
+  if (mirror) initial += initial % 2;  // a node at dy = 0
   std::vector<double> dys;
-  for (long long k = 0; k <= initial; ++k)
+  for (long long k = mirror ? initial / 2 : 0; k <= initial; ++k)
     dys.push_back(-grid.dy_max +
                   2.0 * grid.dy_max * static_cast<double>(k) / static_cast<double>(initial));
+  if (mirror) dys.front() = 0.0;
   solve_all(dys);
   // Every initial interval has its midpoint checked; an interval whose midpoint misses has both
   // halves checked in the next pass.
@@ -296,6 +341,15 @@ WheelsetContactTable::WheelsetContactTable(const WheelsetOnTrack& track,
       next.emplace_back(mid, hi);
     }
     pending = std::move(next);
+  }
+  if (mirror) {
+    for (auto it = solved.rbegin(); it != solved.rend(); ++it) {
+      if (it->first == 0.0) continue;
+      shifts_.push_back(-it->first);
+      std::vector<TableNode> levels;
+      for (const TableNode& n : it->second) levels.push_back(mirrored(n));
+      nodes_.push_back(std::move(levels));
+    }
   }
   for (auto& [dy, nodes] : solved) {
     shifts_.push_back(dy);

@@ -88,7 +88,12 @@ struct TableNode {
   TableWheel left, right;
 };
 
-/// Both wheels' contacts of one wheelset, tabulated over dy and Fz.
+/// Whether the wheelset's two wheels and rails are alike (profiles, radii, track geometry,
+/// material), so that its contact at -dy is the one at dy with the wheels swapped.
+bool mirror_symmetric(const WheelsetOnTrack& track);
+
+/// Both wheels' contacts of one wheelset, tabulated over dy and Fz. A mirror-symmetric
+/// wheelset is solved over dy >= 0 only and mirrored.
 class WheelsetContactTable {
  public:
   /// Solves every node (in parallel; the table does not depend on the number of threads).
