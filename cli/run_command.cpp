@@ -203,15 +203,19 @@ void run(const RunArgs& args) {
     make_output_folder(dir, "--export-default-scene");
     for (const auto& [name, text] :
          {std::pair{"default.toml", pipeline::default_scene_text()},
-          std::pair{"default_states.csv", pipeline::default_states_text()}}) {
+          std::pair{"frozen_collective.toml", pipeline::frozen_collective_text()},
+          std::pair{"frozen_collective.csv", pipeline::frozen_collective_states_text()}}) {
       if (std::filesystem::exists(dir / name) && !args.overwrite) {
         throw InputError("--export-default-scene: " + (dir / name).string() +
                          " exists; pass --overwrite to replace it");
       }
       core::write_file_atomically(dir / name, text);
     }
-    std::cout << "wrote " << (dir / "default.toml").string() << " and its load collective; run it "
-              << "with: wheelwear run " << (dir / "default.toml").string() << " -o run.h5\n";
+    std::cout << "wrote " << (dir / "default.toml").string()
+              << " (the built-in vehicle on the built-in route) and frozen_collective.toml with "
+                 "its load collective (the earlier built-in scene, for comparison); run it with: "
+                 "wheelwear run "
+              << (dir / "default.toml").string() << " -o run.h5\n";
     return;
   }
   const auto threads = thread_limit(args.threads);
@@ -301,8 +305,8 @@ void add_run_command(CLI::App& app) {
   cmd->add_flag("-q,--quiet", args->quiet, "no progress on stderr");
   cmd->add_flag("--json", args->json, "print the summary as JSON");
   cmd->add_option("--export-default-scene", args->export_default,
-                  "write the built-in scene (default.toml, default_states.csv) into this "
-                  "directory and exit");
+                  "write the built-in scene (default.toml) and the frozen-collective scene "
+                  "(frozen_collective.toml, frozen_collective.csv) into this directory and exit");
   cmd->callback([args] { run(*args); });
 }
 

@@ -1,4 +1,4 @@
-// The whole-run benchmark: the built-in default scene (1000 wheelset states, 20 wear steps of
+// The whole-run benchmark: the frozen-collective scene (1000 wheelset states, 20 wear steps of
 // 5 km) run with 1 and with 2 threads; writes bench/results/run_study.csv (or the file given as
 // the first argument) and prints states x steps per second and the speed-up.
 //
@@ -45,7 +45,8 @@ Measurement measure(const pipeline::Scene& scene, int threads) {
       fs::temp_directory_path() / ("wheelwear_run_study_" + std::to_string(::getpid()) + ".h5");
   Measurement m;
   m.threads = threads;
-  m.summary = pipeline::run_scene(scene, pipeline::default_scene_text(), {}, true, out, {true, {}});
+  m.summary =
+      pipeline::run_scene(scene, pipeline::frozen_collective_text(), {}, false, out, {true, {}});
   const auto file = pipeline::ResultsFile::read(out);
   m.last_profile = file.read_step_array(file.completed_steps() - 1, "wheel/z");
   fs::remove(out);
@@ -108,8 +109,8 @@ void savings(const pipeline::Scene& base, const std::string& csv) {
   const double maps = run_seconds(two_steps);
   std::printf("T gamma maps in the results file (2-step run): %.2f s without, %.2f s with\n", plain,
               maps);
-  out << "tgamma_maps,off," << plain << ",2-step run of the default scene\n";
-  out << "tgamma_maps,on," << maps << ",2-step run of the default scene\n";
+  out << "tgamma_maps,off," << plain << ",2-step run of the frozen-collective scene\n";
+  out << "tgamma_maps,on," << maps << ",2-step run of the frozen-collective scene\n";
 }
 
 }  // namespace
@@ -125,10 +126,10 @@ int main(int argc, char** argv) {
       csv = arg;
     }
   }
-  pipeline::Scene scene = pipeline::default_scene();
+  pipeline::Scene scene = pipeline::frozen_collective_scene();
   scene.distance = scene.step_distance * steps;
-  std::printf("default scene: %zu states, %d steps of %.0f m\n", scene.states.size(), steps,
-              scene.step_distance);
+  std::printf("frozen-collective scene: %zu states, %d steps of %.0f m\n", scene.states.size(),
+              steps, scene.step_distance);
   std::vector<Measurement> runs;
   for (int threads : {1, 2}) {
     runs.push_back(measure(scene, threads));
@@ -153,6 +154,6 @@ int main(int argc, char** argv) {
   std::string savings_csv = csv;
   const auto dot = savings_csv.rfind(".csv");
   savings_csv.insert(dot == std::string::npos ? savings_csv.size() : dot, "_savings");
-  savings(pipeline::default_scene(), savings_csv);
+  savings(pipeline::frozen_collective_scene(), savings_csv);
   return identical ? 0 : 1;
 }

@@ -1,5 +1,5 @@
 // Where the wear lands and how much there is, by tangential method: one evaluation of the
-// built-in default scene's collective (1000 states, S1002 on 60E1) on the new wheel with
+// frozen-collective scene's collective (1000 states, S1002 on 60E1) on the new wheel with
 // FASTSIM-SDEC, with "best" (FASTSIM-SDEC's distribution carried to the exact theory's totals
 // by the book of tables) and with Kalker's exact theory on every patch, all on the scene's
 // 30 x 30 grid. Writes bench/results/tangential_methods.csv (or the file given) with, per
@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
     }
   }
   const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
-  const pipeline::Scene scene = pipeline::default_scene();
+  const pipeline::Scene scene = pipeline::frozen_collective_scene();
   std::vector<Outcome> outcomes;
   for (const auto& [method, name] : {std::pair{pipeline::TangentialMethod::fastsim, "fastsim"},
                                      {pipeline::TangentialMethod::best, "best"},

@@ -464,6 +464,10 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
                      "; one run's steps come from one program: continue it with that program, "
                      "or start a new run with -o");
   const bool builtin = file.read_array("/run_info/builtin_scene").at(0) != 0.0;
+  if (builtin && file.scene_text() != default_scene_text())
+    throw InputError("results file " + output.string() +
+                     ": it was run with another built-in scene than this program's; start a new "
+                     "run with -o, or run the scene stored in the file (/scene) as a file");
   const Scene scene = builtin ? default_scene()
                               : parse_scene(file.scene_text(), *directory,
                                             detail::stored_reader(file, options.resume_stored));

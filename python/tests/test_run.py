@@ -13,14 +13,21 @@ import wheelwear
 
 
 @pytest.fixture(scope="module")
-def short_scene(tmp_path_factory):
-    """The built-in scene over 10 km in 5 km steps (two wear steps, a few seconds)."""
+def exported(tmp_path_factory):
+    """The folder --export-default-scene writes: the built-in scene and the frozen-collective
+    scene with its collective."""
     folder = tmp_path_factory.mktemp("scene")
     program = os.environ.get("WHEELWEAR_CLI", "build/wheelwear")
     subprocess.run([program, "run", "--export-default-scene", str(folder)], check=True,
                    capture_output=True)
-    scene = folder / "default.toml"
-    text = scene.read_text()
+    return folder
+
+
+@pytest.fixture(scope="module")
+def short_scene(exported):
+    """The frozen-collective scene over 10 km in 5 km steps (two wear steps, a few seconds)."""
+    scene = exported / "frozen_short.toml"
+    text = (exported / "frozen_collective.toml").read_text()
     text = text.replace("distance_m = 100e3", "distance_m = 10e3")
     assert "distance_m = 10e3" in text
     scene.write_text(text)
@@ -67,17 +74,18 @@ def test_run_writes_the_command_lines_file(tmp_path, short_scene):
     assert results.steps[-1].y.shape == results.steps[-1].z.shape
 
 
-def test_ctrl_c_stops_after_a_step_and_resume_finishes_the_same_file(tmp_path):
-    # The built-in scene (20 steps, about 4 s): Ctrl-C one second in, with no progress callback,
-    # so that only the module's own check after each step can stop it.
+def test_ctrl_c_stops_after_a_step_and_resume_finishes_the_same_file(tmp_path, exported):
+    # The frozen-collective scene (20 steps, about 4 s): Ctrl-C one second in, with no progress
+    # callback, so that only the module's own check after each step can stop it.
+    scene = exported / "frozen_collective.toml"
     whole = tmp_path / "whole.h5"
-    wheelwear.run(output=whole)
+    wheelwear.run(scene, output=whole)
     stopped = tmp_path / "stopped.h5"
     timer = threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()
     try:
         with pytest.raises(KeyboardInterrupt, match="resume="):
-            wheelwear.run(output=stopped)
+            wheelwear.run(scene, output=stopped)
     finally:
         timer.cancel()
     kept = len(wheelwear.read_results(stopped).steps)
@@ -90,8 +98,8 @@ def test_read_results_of_separate_wheels(tmp_path, short_scene):
     scene = tmp_path / "separate.toml"
     text = short_scene.read_text().replace('wheels = "shared"', 'wheels = "separate"')
     assert 'wheels = "separate"' in text
-    text = text.replace('file = "default_states.csv"',
-                        f'file = "{short_scene.parent / "default_states.csv"}"')
+    text = text.replace('file = "frozen_collective.csv"',
+                        f'file = "{short_scene.parent / "frozen_collective.csv"}"')
     scene.write_text(text)
     wheelwear.run(scene, tmp_path / "separate.h5")
     r = wheelwear.read_results(tmp_path / "separate.h5")

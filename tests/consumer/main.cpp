@@ -92,12 +92,15 @@ void table_checks() {
 }
 
 void scene_checks() {
-  // The built-in scene is compiled into the pipeline library; parsing it goes through toml++.
+  // The built-in scenes are compiled into the pipeline library; parsing them goes through
+  // toml++.
   const auto scene = wheelwear::pipeline::default_scene();
   check(scene.wheel_profile == "S1002" && scene.rail_profile == "60E1",
         "default scene: S1002 on 60E1");
-  check(scene.states.size() == 1000,
-        "default scene: 1000 wheelset states (" + std::to_string(scene.states.size()) + ")");
+  check(scene.vehicle_run.has_value(), "default scene: the vehicle on its route");
+  const auto frozen = wheelwear::pipeline::frozen_collective_scene();
+  check(frozen.states.size() == 1000, "frozen-collective scene: 1000 wheelset states (" +
+                                          std::to_string(frozen.states.size()) + ")");
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Fuzz target: the scene parser (pipeline/scene.hpp). Files the scene names are not read from
-// disk: the collective file reads as the built-in one (data/scenes/default_states.csv), any
+// disk: the collective file reads as the built-in one (data/scenes/frozen_collective.csv), any
 // other name fails as a missing file would, and relative names resolve against a directory
 // that does not exist.
 

@@ -17,6 +17,7 @@
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/core/text.hpp"
 #include "wheelwear/pipeline/state_kernel.hpp"
+#include "wheelwear/vehicle/vehicle_file.hpp"
 
 namespace wheelwear::pipeline {
 namespace {
@@ -195,8 +196,28 @@ TEST_F(SceneTest, EveryFileNamedIsReadOnceThroughTheReaderAndKept) {
   EXPECT_EQ(s.vehicle_run->route.sections.size(), vehicle::default_route().sections.size());
 }
 
-TEST(DefaultScene, HasAThousandStatesOfTangentAndCurves) {
+// The built-in scene is the built-in coach on the built-in route, worn over 10^5 km with the
+// per-step work data/scenes/default.toml states (docs/vehicle.md, "The default scene").
+TEST(DefaultScene, IsTheVehicleOnTheDefaultRouteOverAHundredThousandKilometres) {
   const Scene s = default_scene();
+  ASSERT_TRUE(s.vehicle_run.has_value());
+  EXPECT_TRUE(s.states.empty());
+  const VehicleRun& v = *s.vehicle_run;
+  EXPECT_EQ(v.route.sections.size(), vehicle::default_route().sections.size());
+  EXPECT_EQ(v.vehicle.mass(), vehicle::default_vehicle().mass());
+  EXPECT_EQ(s.distance, 100e6);
+  EXPECT_EQ(s.max_depth_step, 0.3e-3);
+  EXPECT_EQ(v.resolve_depth, s.max_depth_step);  // the vehicle solved at every step
+  EXPECT_TRUE(v.time_domain.enabled);
+  EXPECT_EQ(v.time_domain.tangent_length, 100.0);
+  EXPECT_EQ(v.time_domain.sample_distance, 2.0);
+  EXPECT_TRUE(s.limits.stop);
+  EXPECT_EQ(s.wheel_profile, "S1002");
+  EXPECT_EQ(s.rail_profile, "60E1");
+}
+
+TEST(FrozenCollectiveScene, HasAThousandStatesOfTangentAndCurves) {
+  const Scene s = frozen_collective_scene();
   EXPECT_GE(s.states.size(), 1000u);
   int tangent = 0, curves = 0, flange = 0;
   for (const auto& state : s.states) {

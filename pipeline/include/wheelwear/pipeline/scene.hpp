@@ -267,11 +267,18 @@ Scene parse_scene(std::string_view toml_text, const std::filesystem::path& base_
 /// Reads and parses the scene file `path`.
 Scene load_scene(const std::filesystem::path& path, SceneUse use = SceneUse::wear_run);
 
-/// The built-in default scene's text (data/scenes/default.toml).
+/// The built-in default scene's text (data/scenes/default.toml): the built-in vehicle on the
+/// built-in route.
 std::string_view default_scene_text();
-/// The built-in default scene's load collective (data/scenes/default_states.csv).
-std::string_view default_states_text();
-/// The built-in default scene, with its collective (data/scenes/default_states.csv).
+/// The built-in default scene.
 Scene default_scene();
+
+/// The frozen-collective scene's text (data/scenes/frozen_collective.toml): 1000 hand-set
+/// wheelset states, the built-in scene before the vehicle's own states replaced it.
+std::string_view frozen_collective_text();
+/// Its load collective (data/scenes/frozen_collective.csv).
+std::string_view frozen_collective_states_text();
+/// The frozen-collective scene, with its collective.
+Scene frozen_collective_scene();
 
 }  // namespace wheelwear::pipeline

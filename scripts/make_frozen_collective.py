@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""Writes the load collective of the built-in default scene (data/scenes/default_states.csv).
+"""Writes the load collective of the frozen-collective scene (data/scenes/frozen_collective.csv).
 
-A quasi-static description of a passenger coach's leading wheelset on a mixed line; the
-assumptions are listed in data/scenes/default.toml. The collective is reproducible: a fixed seed,
+A quasi-static description of a passenger coach's leading wheelset on a mixed line, set by hand
+rather than solved; the assumptions are listed in data/scenes/frozen_collective.toml. The collective is reproducible: a fixed seed,
 plain Python (no third-party modules).
 
-    scripts/make_default_collective.py > data/scenes/default_states.csv
+    scripts/make_frozen_collective.py > data/scenes/frozen_collective.csv
 """
 
 import math
