@@ -47,7 +47,8 @@ run_case() {
   tail -1 "$out"
 }
 
-for scene in "" data/scenes/vehicle_route.toml bench/scenes/vehicle_1e5km.toml; do
+for scene in data/scenes/frozen_collective.toml data/scenes/vehicle_route.toml \
+  bench/scenes/vehicle_1e5km.toml; do
   label=${scene:-built-in}
   label=${label##*/}
   run_case run "$scene" 1 1 "$label"
@@ -56,20 +57,21 @@ for scene in "" data/scenes/vehicle_route.toml bench/scenes/vehicle_1e5km.toml; 
   run_case run "$scene" 4 1 "$label"
 done
 
-# Weak scaling: a sweep of 2 runs per process (the built-in scene over 20 km, friction varied).
+# Weak scaling: a sweep of 2 runs per process (the frozen-collective scene over 20 km, friction
+# varied).
 "$wheelwear" run --export-default-scene "$work/base" >/dev/null
-sed -i 's/^distance_m = [^ ]*/distance_m = 20e3/' "$work/base/default.toml"
+sed -i 's/^distance_m = [^ ]*/distance_m = 20e3/' "$work/base/frozen_collective.toml"
 for n in 1 2 4; do
   runs=$((2 * n))
   values=$(python3 -c "print(', '.join(str(round(0.2 + 0.02 * i, 2)) for i in range($runs)))")
-  printf 'scene = "base/default.toml"\noutput_dir = "sweep_%d"\n[vary]\n"contact.friction" = [%s]\n' \
+  printf 'scene = "base/frozen_collective.toml"\noutput_dir = "sweep_%d"\n[vary]\n"contact.friction" = [%s]\n' \
     "$n" "$values" >"$work/sweep_$n.toml"
   command=("$wheelwear" sweep "$work/sweep_$n.toml" -q --threads 1)
   ((n == 1)) || command=("${mpi[@]}" -np "$n" "${command[@]}")
   start=$(date +%s.%N)
   "${command[@]}" >/dev/null
   end=$(date +%s.%N)
-  printf 'sweep,built-in 20 km,%d,1,%s,%d,,,%.2f,,,\n' "$n" "$( ((n > cores)) && echo yes || echo no)" \
+  printf 'sweep,frozen_collective.toml 20 km,%d,1,%s,%d,,,%.2f,,,\n' "$n" "$( ((n > cores)) && echo yes || echo no)" \
     "$runs" "$(python3 -c "print($end - $start)")" >>"$out"
   tail -1 "$out"
 done

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job: install what is missing, build, run the wear evolution of the built-in default
-# scene (S1002 on 60E1 1:40, 1000 wheelset states, 100 km) and plot it.
+# scene (the built-in coach on the built-in 100 km route, S1002 on 60E1 1:40, 10^5 km) and plot
+# it.
 #   results: build/default-run/run.h5, plots: build/default-run/*.png
 set -euo pipefail
 cd "$(dirname "$0")/.."

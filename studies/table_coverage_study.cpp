@@ -2,7 +2,7 @@
 // and the shapes it would have to cover to answer for nearly all of a run's frictional work:
 // every state of three collectives evaluated once on new profiles with "best", each patch's SDEC
 // shape (a/b, psi) and its frictional work recorded.
-//   - "default": the frozen-collective scene's states (data/scenes/frozen_collective.csv);
+//   - "frozen": the frozen-collective scene's states (data/scenes/frozen_collective.csv);
 //   - "vehicle": the example scene's vehicle on its route (data/scenes/vehicle_route.toml, new
 //     S1002/60E1 1:40, time-domain pieces included);
 //   - "flange sweep": one wheelset at shifts 6 ... 8 mm in 0.05 mm (flange root to flank),
@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
     const pipeline::CollectiveEvaluator evaluator(scene);
     const profiles::Profile wheel =
         profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
-    emit("default", patches_of(evaluator, wheel, scene.states));
+    emit("frozen", patches_of(evaluator, wheel, scene.states));
   }
   {
     pipeline::Scene scene = with_best(pipeline::load_scene(WHEELWEAR_EXAMPLE_SCENE));

@@ -42,11 +42,12 @@ same() {  # same A B: identical results files, and h5diff does tell different on
   echo "identical: $1 $2"
 }
 
-# The built-in scene (1000 states) over DISTANCE in steps of STEP.
+# The frozen-collective scene (1000 states, exported beside the built-in one) over DISTANCE in
+# steps of STEP.
 scene() {
   "$wheelwear" run --export-default-scene base --overwrite >/dev/null
   sed -e "s/^distance_m = [^ ]*/distance_m = $1/" -e "s/^step_distance_m = [^ ]*/step_distance_m = $2/" \
-    base/default.toml >"base/$3"
+    base/frozen_collective.toml >"base/$3"
   [[ $(grep -c "^distance_m = $1" "base/$3") == 1 ]] || fail "scene distance not set"
 }
 

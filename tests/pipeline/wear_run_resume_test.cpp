@@ -133,6 +133,25 @@ TEST_F(WearRunTest, ResumeRefusesAnotherLayoutVersion) {
   }
 }
 
+// A run of the built-in scene records no scene file: it is continued only by a program whose
+// built-in scene is the one it ran (the built-in scene changed once, from a hand-set collective
+// to the vehicle on its route).
+TEST_F(WearRunTest, ResumeRefusesAnotherBuiltInScene) {
+  const fs::path out = dir_ / "builtin.h5";
+  const std::string text = small_scene(30e3, 10e3, 1e-3);
+  RunOptions stop_after_a_step;
+  stop_after_a_step.progress = [](const RunProgress&) { throw std::runtime_error("stopped"); };
+  EXPECT_THROW(run_scene(parse_scene(text, dir_), text, {}, true, out, stop_after_a_step),
+               std::runtime_error);
+  try {
+    resume_run(out, {});
+    FAIL() << "a run of another built-in scene was resumed";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("another built-in scene"), std::string::npos)
+        << error.what();
+  }
+}
+
 TEST_F(WearRunTest, KilledRunResumesToIdenticalResults) {
   // Enough steps that the run is still going when it is killed after its second step.
   const fs::path scene = write("s.toml", small_scene(400e3, 10e3, 1e-3));
