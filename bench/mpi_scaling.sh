@@ -49,8 +49,7 @@ run_case() {
 
 for scene in data/scenes/frozen_collective.toml data/scenes/vehicle_route.toml \
   bench/scenes/vehicle_1e5km.toml; do
-  label=${scene:-built-in}
-  label=${label##*/}
+  label=${scene##*/}
   run_case run "$scene" 1 1 "$label"
   run_case run "$scene" 1 "$cores" "$label"
   run_case run "$scene" 2 1 "$label"

@@ -1,4 +1,4 @@
-// The per-state kernel (pipeline::StateKernel): one wheelset state of the built-in default
+// The per-state kernel (pipeline::StateKernel): one wheelset state of the frozen-collective
 // scene's kind on S1002/60E1 1:40, from its position to both wheels' contacts, tangential
 // solutions and wear (30 x 30 FASTSIM-SDEC, USFD law). BM_StateKernel's arguments: the wheelset
 // shift in 0.1 mm (0: tread on both wheels; 50: the left wheel in two-point contact; 72: on its

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -201,16 +202,18 @@ void run(const RunArgs& args) {
     if (!job.leader()) return;
     const std::filesystem::path dir(args.export_default);
     make_output_folder(dir, "--export-default-scene");
-    for (const auto& [name, text] :
-         {std::pair{"default.toml", pipeline::default_scene_text()},
-          std::pair{"frozen_collective.toml", pipeline::frozen_collective_text()},
-          std::pair{"frozen_collective.csv", pipeline::frozen_collective_states_text()}}) {
+    const std::array files{
+        std::pair{"default.toml", pipeline::default_scene_text()},
+        std::pair{"frozen_collective.toml", pipeline::frozen_collective_text()},
+        std::pair{"frozen_collective.csv", pipeline::frozen_collective_states_text()}};
+    // Every name checked before any is written: a refusal leaves the folder as it was.
+    for (const auto& [name, text] : files) {
       if (std::filesystem::exists(dir / name) && !args.overwrite) {
         throw InputError("--export-default-scene: " + (dir / name).string() +
                          " exists; pass --overwrite to replace it");
       }
-      core::write_file_atomically(dir / name, text);
     }
+    for (const auto& [name, text] : files) core::write_file_atomically(dir / name, text);
     std::cout << "wrote " << (dir / "default.toml").string()
               << " (the built-in vehicle on the built-in route) and frozen_collective.toml with "
                  "its load collective (the earlier built-in scene, for comparison); run it with: "

@@ -120,7 +120,12 @@ std::vector<TablePatch> blend(const std::vector<TablePatch>& p, double wp,
   return out;
 }
 
-// The status the direct solve would report first (solve_wheel_rail's order of checks).
+// A contact reported as climbing its rail or past its flange.
+bool climbs(WheelRailStatus s) {
+  return s == WheelRailStatus::flange_climb || s == WheelRailStatus::past_flange;
+}
+
+// The status the direct solve would report first (solve_on_samples' order of checks).
 int precedence(WheelRailStatus s) {
   switch (s) {
     case WheelRailStatus::load_jump:
@@ -208,7 +213,8 @@ double weighted_radius(const std::vector<TablePatch>& patches) {
 }
 
 // Whether the contact interpolated halfway between two shifts misses the one solved there, at
-// any load level, for either wheel (a change of usability always misses).
+// any load level, for either wheel (a change of usability, or of whether a wheel climbs, always
+// misses: the boundary is refined to the finest spacing, as the direct solve places it).
 bool misses(const std::vector<TableNode>& lo, const std::vector<TableNode>& hi,
             const std::vector<TableNode>& mid, const WheelsetTableOptions& grid) {
   for (std::size_t j = 0; j < mid.size(); ++j) {
@@ -218,6 +224,7 @@ bool misses(const std::vector<TableNode>& lo, const std::vector<TableNode>& hi,
       const TableWheel& a = left ? lo[j].left : lo[j].right;
       const TableWheel& b = left ? hi[j].left : hi[j].right;
       const TableWheel& m = left ? mid[j].left : mid[j].right;
+      if (climbs(a.status) != climbs(m.status) || climbs(b.status) != climbs(m.status)) return true;
       const std::vector<TablePatch> guess = blend(a.patches, 0.5, b.patches, 0.5);
       if (std::abs(lateral_share(guess) - lateral_share(m.patches)) > grid.lateral_tolerance)
         return true;
@@ -394,13 +401,23 @@ std::optional<WheelsetContact> WheelsetContactTable::contact(const WheelsetState
     return std::nullopt;
   const Level left = level(Fz_left), right = level(Fz_right);
 
-  // The four nodes around each wheel must answer (a node of zero weight need not).
-  for (std::size_t di = 0; di < 2; ++di) {
-    if ((di == 0 ? 1.0 - t : t) == 0.0) continue;
-    for (const Level& l : {left, right})
-      for (std::size_t dj = 0; dj < 2; ++dj)
-        if ((dj == 0 ? 1.0 - l.s : l.s) != 0.0 && !node(i + di, l.j + dj).usable)
-          return std::nullopt;
+  // The four nodes around each wheel must answer (a node of zero weight need not), and agree
+  // on whether the wheel climbs: where they do not, the cell holds the onset of the climb,
+  // which the direct solve places (the interpolation would report the whole cell climbing).
+  for (const bool is_left : {true, false}) {
+    const Level& l = is_left ? left : right;
+    int climbing = 0, weighted = 0;
+    for (std::size_t di = 0; di < 2; ++di) {
+      if ((di == 0 ? 1.0 - t : t) == 0.0) continue;
+      for (std::size_t dj = 0; dj < 2; ++dj) {
+        if ((dj == 0 ? 1.0 - l.s : l.s) == 0.0) continue;
+        const TableNode& n = node(i + di, l.j + dj);
+        if (!n.usable) return std::nullopt;
+        ++weighted;
+        climbing += climbs(is_left ? n.left.status : n.right.status) ? 1 : 0;
+      }
+    }
+    if (climbing != 0 && climbing != weighted) return std::nullopt;
   }
 
   auto wheel_at = [&](std::size_t shift, const Level& l, bool is_left) {

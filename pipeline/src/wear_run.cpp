@@ -467,7 +467,9 @@ RunSummary resume_run(const fs::path& output, const RunOptions& options) {
   if (builtin && file.scene_text() != default_scene_text())
     throw InputError("results file " + output.string() +
                      ": it was run with another built-in scene than this program's; start a new "
-                     "run with -o, or run the scene stored in the file (/scene) as a file");
+                     "run with -o. Its scene is stored in the file (/scene); a run of the "
+                     "built-in scene before the vehicle became it is the frozen-collective scene "
+                     "that `wheelwear run --export-default-scene DIR` writes");
   const Scene scene = builtin ? default_scene()
                               : parse_scene(file.scene_text(), *directory,
                                             detail::stored_reader(file, options.resume_stored));

@@ -1,7 +1,7 @@
 // Fuzz target: the scene parser (pipeline/scene.hpp). Files the scene names are not read from
-// disk: the collective file reads as the built-in one (data/scenes/frozen_collective.csv), any
-// other name fails as a missing file would, and relative names resolve against a directory
-// that does not exist.
+// disk: the collective file reads as the frozen-collective scene's
+// (data/scenes/frozen_collective.csv), any other name fails as a missing file would, and
+// relative names resolve against a directory that does not exist.
 
 #include <fstream>
 #include <sstream>

@@ -207,7 +207,7 @@ TEST(DefaultScene, IsTheVehicleOnTheDefaultRouteOverAHundredThousandKilometres) 
   EXPECT_EQ(v.vehicle.mass(), vehicle::default_vehicle().mass());
   EXPECT_EQ(s.distance, 100e6);
   EXPECT_EQ(s.max_depth_step, 0.3e-3);
-  EXPECT_EQ(v.resolve_depth, s.max_depth_step);  // the vehicle solved at every step
+  EXPECT_EQ(v.resolve_depth, 0.0);  // the vehicle solved at every step
   EXPECT_TRUE(v.time_domain.enabled);
   EXPECT_EQ(v.time_domain.tangent_length, 100.0);
   EXPECT_EQ(v.time_domain.sample_distance, 2.0);

@@ -292,7 +292,7 @@ TEST(Route, DefaultRouteKeepsItsRules) {
       compared += 4;
     }
   }
-  // The collective's shares of the distance (scripts/make_default_collective.py): tangent 55 %,
+  // The collective's shares of the distance (scripts/make_frozen_collective.py): tangent 55 %,
   // R 3000 ... 500: 12, 10, 9, 8, 6 %, as much right- as left-hand. Whole metres: exact.
   const std::map<double, double> shares = {
       {3000.0, 0.12}, {1500.0, 0.10}, {1000.0, 0.09}, {700.0, 0.08}, {500.0, 0.06}};

@@ -20,10 +20,15 @@
 /// vertical shares sum to 1, so the interpolated patches carry exactly the requested Fz.
 /// Outside the loads tabulated, the end level's shares and shapes are scaled.
 ///
-/// Where the table does not answer. A shift outside the table, or a surrounding node at which a
-/// wheel does not carry its load normally (no contact, flange climb, past the flange, the
-/// profile's end, a roll or load that did not converge), returns nothing: the caller evaluates
-/// the contact directly there, with its own statuses.
+/// Contacts past the flange or climbing (WheelRailStatus::past_flange, flange_climb) are
+/// tabulated with their status, which the interpolated contact carries where all its weighted
+/// nodes climb (the one the direct solve would report first of theirs).
+///
+/// Where the table does not answer. A shift outside the table, a surrounding node at which a
+/// wheel does not carry its load (no contact, the profile's end, a roll or load that did not
+/// converge), or a cell whose nodes disagree on whether a wheel climbs (the onset of the climb,
+/// refined to the finest spacing along dy) returns nothing: the caller evaluates the contact
+/// directly there, with its own statuses.
 ///
 /// The interpolated patches carry the quantities a vehicle model needs (normal, vertical and
 /// lateral force, contact angle, rolling radius, SDEC, contact points, pmax); their strips,

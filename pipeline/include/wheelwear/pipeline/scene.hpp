@@ -183,7 +183,8 @@ struct SceneInput {
   std::string content;  ///< its bytes
 };
 
-/// Everything a run needs. Defaults are those of the built-in scene.
+/// Everything a run needs. Defaults are those of a scene file that leaves a key out
+/// (docs/scenes.md), not the built-in scene's (data/scenes/default.toml).
 struct Scene {
   std::string title;
   std::string wheel_profile = "S1002";  ///< standard name or resolved file path
