@@ -1,6 +1,7 @@
 """The evolution of a wear run: the built-in scene (the built-in coach on the built-in route,
-10^5 km in about 25 steps, about a minute on two cores) run from Python and read back into arrays; the worn depth across the wheel and Sd, Sh, qR against distance.
-Writes run_evolution.png into the folder given (default .).
+10^5 km in about 25 steps, about a minute on two cores) run from Python and read back into
+arrays; the worn depth across the wheel and Sd, Sh, qR against distance. Writes
+run_evolution.png into the folder given (default .).
 
     PYTHONPATH=build/python python3 examples/run_evolution.py docs/
 """

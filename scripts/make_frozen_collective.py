@@ -2,8 +2,8 @@
 """Writes the load collective of the frozen-collective scene (data/scenes/frozen_collective.csv).
 
 A quasi-static description of a passenger coach's leading wheelset on a mixed line, set by hand
-rather than solved; the assumptions are listed in data/scenes/frozen_collective.toml. The collective is reproducible: a fixed seed,
-plain Python (no third-party modules).
+rather than solved; the assumptions are listed in data/scenes/frozen_collective.toml. The
+collective is reproducible: a fixed seed, plain Python (no third-party modules).
 
     scripts/make_frozen_collective.py > data/scenes/frozen_collective.csv
 """
