@@ -17,12 +17,16 @@ namespace {
 
 constexpr std::size_t kMaxPatches = 8;
 
+// A contact reported as climbing its rail or past its flange.
+bool climbs(WheelRailStatus s) {
+  return s == WheelRailStatus::flange_climb || s == WheelRailStatus::past_flange;
+}
+
 // A wheel that carries its load: normally, in a load jump (the nearer side), or with its
 // contact reported as climbing or past the flange (the contact is solved all the same, and the
 // status travels with the interpolated contact).
 bool answers(WheelRailStatus status) {
-  return status == WheelRailStatus::ok || status == WheelRailStatus::load_jump ||
-         status == WheelRailStatus::flange_climb || status == WheelRailStatus::past_flange;
+  return status == WheelRailStatus::ok || status == WheelRailStatus::load_jump || climbs(status);
 }
 
 // The patch with its forces multiplied by `forces` and its sizes (SDEC a and b, and pmax) by
@@ -118,11 +122,6 @@ std::vector<TablePatch> blend(const std::vector<TablePatch>& p, double wp,
       out.push_back(fade(many[j], w_many));
   }
   return out;
-}
-
-// A contact reported as climbing its rail or past its flange.
-bool climbs(WheelRailStatus s) {
-  return s == WheelRailStatus::flange_climb || s == WheelRailStatus::past_flange;
 }
 
 // The status the direct solve would report first (solve_on_samples' order of checks).
