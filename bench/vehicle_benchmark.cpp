@@ -38,15 +38,17 @@ vehicle::WheelsetModel tabulated(vehicle::WheelsetModel m) {
 
 void BM_ContactTableBuild(benchmark::State& state) {
   const vehicle::WheelsetModel m = standard_wheelset();
-  std::size_t shifts = 0;
+  std::size_t shifts = 0, nodes = 0;
   int solves = 0;
   for (auto _ : state) {
     const contactgeom::WheelsetContactTable table(m.track, m.contact);
     shifts = table.shifts().size();
+    nodes = shifts * table.loads().size();
     solves = table.contact_solves();
     benchmark::DoNotOptimize(shifts);
   }
   state.counters["shifts"] = static_cast<double>(shifts);
+  state.counters["nodes"] = static_cast<double>(nodes);
   state.counters["contact_solves"] = solves;
 }
 BENCHMARK(BM_ContactTableBuild)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -211,11 +211,30 @@ double weighted_radius(const std::vector<TablePatch>& patches) {
   return weight > 0.0 ? sum / weight : 0.0;
 }
 
+// Whether one wheel has passed its flange (WheelRailStatus::past_flange) at both ends of an
+// interval and halfway, at every load level: a derailed wheelset, which the vehicle's solvers
+// reject, so the contact there is not refined. Past the flange the contact runs over the flange
+// tip and back, whose curvature would otherwise draw a third of a new S1002 table's nodes.
+bool past_flange_throughout(const std::vector<TableNode>& lo, const std::vector<TableNode>& hi,
+                            const std::vector<TableNode>& mid) {
+  const auto passed = [](const TableNode& n, bool left) {
+    return (left ? n.left : n.right).status == WheelRailStatus::past_flange;
+  };
+  for (bool left : {true, false}) {
+    bool all = true;
+    for (std::size_t j = 0; j < mid.size() && all; ++j)
+      all = passed(lo[j], left) && passed(mid[j], left) && passed(hi[j], left);
+    if (all) return true;
+  }
+  return false;
+}
+
 // Whether the contact interpolated halfway between two shifts misses the one solved there, at
 // any load level, for either wheel (a change of usability, or of whether a wheel climbs, always
 // misses: the boundary is refined to the finest spacing, as the direct solve places it).
 bool misses(const std::vector<TableNode>& lo, const std::vector<TableNode>& hi,
             const std::vector<TableNode>& mid, const WheelsetTableOptions& grid) {
+  if (past_flange_throughout(lo, hi, mid)) return false;
   for (std::size_t j = 0; j < mid.size(); ++j) {
     if (lo[j].usable != mid[j].usable || hi[j].usable != mid[j].usable) return true;
     if (!mid[j].usable) continue;

@@ -22,7 +22,10 @@
 ///
 /// Contacts past the flange or climbing (WheelRailStatus::past_flange, flange_climb) are
 /// tabulated with their status, which the interpolated contact carries where all its weighted
-/// nodes climb (the one the direct solve would report first of theirs).
+/// nodes climb (the one the direct solve would report first of theirs). Where a wheel has
+/// passed its flange throughout an interval the table is not refined (the vehicle's solvers
+/// reject a derailed wheelset): its forces there are those of the initial spacing, within 1 %
+/// of the load on new S1002.
 ///
 /// Where the table does not answer. A shift outside the table, a surrounding node at which a
 /// wheel does not carry its load (no contact, the profile's end, a roll or load that did not
@@ -46,8 +49,8 @@ namespace wheelwear::contactgeom {
 /// interpolation misses: an interval's midpoint is solved, and where its interpolated contact
 /// differs from the solved one at any load level by more than a tolerance, both halves are
 /// refined in turn, as long as the halves are at least dy_step_min wide (12.5 um with the
-/// defaults). An interval between two nodes that do not answer is
-/// not checked: the table does not answer there, and the caller's direct evaluation does.
+/// defaults). An interval between two nodes that do not answer is not checked: the table does
+/// not answer there, and the caller's direct evaluation does. Nor is one past the flange (above).
 struct WheelsetTableOptions {
   double dy_max = 16e-3;       ///< the table covers shifts in [-dy_max, dy_max] [m]
   double dy_step = 0.2e-3;     ///< spacing of the initial shifts [m]
