@@ -11,6 +11,20 @@
 namespace wheelwear::contactgeom::detail {
 
 namespace {
+
+// Where the tangents of the gap at two coarse points `spacing` apart cross, if their slopes
+// point into a dip between them (falling at the first, rising at the second); +inf otherwise.
+// Below the gap wherever it is convex between them. A vertical tangent crosses at its own point.
+double dip_floor(double h0, double s0, double h1, double s1, double spacing) {
+  if (!(s0 < 0.0 && s1 > 0.0) || !std::isfinite(h0) || !std::isfinite(h1))
+    return std::numeric_limits<double>::infinity();
+  if (std::isinf(s0) && std::isinf(s1)) return std::min(h0, h1);
+  if (std::isinf(s0)) return h1 - s1 * spacing;
+  if (std::isinf(s1)) return h0 + s0 * spacing;
+  const double t = std::clamp((h1 - h0 - s1 * spacing) / (s0 - s1), 0.0, spacing);
+  return h0 + s0 * t;
+}
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
@@ -238,27 +252,35 @@ std::optional<WheelPoint> WheelRailGap::wheel_at(double y) const {
   return WheelPoint{z_rolled, w->z, u, w->s};
 }
 
-std::optional<double> WheelRailGap::coarse_gap(double y) const {
+std::optional<CoarseGap> WheelRailGap::coarse_gap(double y) const {
   const auto r = pair_.rail.surface_at(y);
   if (!r) return std::nullopt;
-  if (sin_roll_ != 0.0) {
-    // One lookup and the first Newton step of wheel_at(), its z to first order: off by
-    // z''(u) du^2 / 2, below 4e-7 m for du <= 20 um on any profile (|z''| < 2000 1/m on a
-    // 70 deg flank of 13 mm radius); a longer step takes the full iteration.
-    const double y_rolled = y - shift_;
-    const auto w = pair_.wheel.surface_at(y_rolled);
-    if (!w) return std::nullopt;
-    const double g = cos_roll_ * y_rolled - sin_roll_ * (w->z - z_tape_) - y_rolled;
-    const double dg = cos_roll_ - sin_roll_ * w->dz_dy;
-    const double du = -g / dg;
-    if (std::isfinite(du) && dg >= 0.1 && std::abs(du) <= 20e-6) {
-      const double u = y_rolled + du, z = w->z + w->dz_dy * du;
-      return r->z - (sin_roll_ * u + cos_roll_ * (z - z_tape_) + z_tape_);
-    }
-  }
-  const auto w = wheel_at(y);
+  const double y_rolled = y - shift_;
+  const auto w = pair_.wheel.surface_at(y_rolled);
   if (!w) return std::nullopt;
-  return r->z - w->z_rolled;
+  // The rolled wheel surface's slope: (sin + cos z') / (cos - sin z') of the unrolled one's z'
+  // (taken at y_rolled, which the roll moves by less than 0.1 mm along the profile).
+  const auto gap_slope = [&](double wheel_slope) {
+    const double rolled = sin_roll_ == 0.0 ? wheel_slope
+                                           : (sin_roll_ + cos_roll_ * wheel_slope) /
+                                                 (cos_roll_ - sin_roll_ * wheel_slope);
+    return r->dz_dy - rolled;
+  };
+  if (sin_roll_ == 0.0) return CoarseGap{r->z - w->z, gap_slope(w->dz_dy)};
+  // One lookup and the first Newton step of wheel_at(), its z to first order: off by
+  // z''(u) du^2 / 2, below 4e-7 m for du <= 20 um on any profile (|z''| < 2000 1/m on a
+  // 70 deg flank of 13 mm radius); a longer step takes the full iteration.
+  const double g = cos_roll_ * y_rolled - sin_roll_ * (w->z - z_tape_) - y_rolled;
+  const double dg = cos_roll_ - sin_roll_ * w->dz_dy;
+  const double du = -g / dg;
+  if (std::isfinite(du) && dg >= 0.1 && std::abs(du) <= 20e-6) {
+    const double u = y_rolled + du, z = w->z + w->dz_dy * du;
+    return CoarseGap{r->z - (sin_roll_ * u + cos_roll_ * (z - z_tape_) + z_tape_),
+                     gap_slope(w->dz_dy)};
+  }
+  const auto full = wheel_at(y);
+  if (!full) return std::nullopt;
+  return CoarseGap{r->z - full->z_rolled, gap_slope(w->dz_dy)};
 }
 
 std::optional<GapPoint> WheelRailGap::gap(double y) const {
@@ -279,11 +301,20 @@ void WheelRailGap::scan(CoarseScan& coarse) const {
   if (!(coarse.hi > coarse.lo)) return;
   const int n = static_cast<int>(std::floor((coarse.hi - coarse.lo) / options_.scan_spacing)) + 1;
   coarse.h.assign(static_cast<std::size_t>(n), kInf);
+  coarse.dip.assign(static_cast<std::size_t>(n), kInf);
+  thread_local std::vector<double> slope;
+  slope.assign(static_cast<std::size_t>(n), 0.0);
   // Lookups: a walk would pass every knot interval of both curves at this spacing.
   for (int i = 0; i < n; ++i) {
-    if (const auto v = coarse_gap(coarse.lo + i * options_.scan_spacing)) coarse.h[i] = *v;
+    if (const auto v = coarse_gap(coarse.lo + i * options_.scan_spacing)) {
+      coarse.h[i] = v->h;
+      slope[i] = v->slope;
+    }
     coarse.h_min = std::min(coarse.h_min, coarse.h[i]);
   }
+  for (int i = 0; i + 1 < n; ++i)
+    coarse.dip[i] =
+        dip_floor(coarse.h[i], slope[i], coarse.h[i + 1], slope[i + 1], options_.scan_spacing);
 }
 
 void WheelRailGap::sample(const CoarseScan& coarse, double margin, GapSamples& g,
@@ -308,6 +339,10 @@ void WheelRailGap::sample(const CoarseScan& coarse, double margin, GapSamples& g
       keep[i] = (i == 0 || coarse.h[i] <= coarse.h[i - 1]) &&
                 (i == n - 1 || coarse.h[i] <= coarse.h[i + 1]);
   }
+  // A dip below the level that neither of its interval's points shows (CoarseScan::dip).
+  for (int i = 0; i + 1 < n; ++i)
+    if (coarse.dip[i] < level && !(coarse.h[i] < level) && !(coarse.h[i + 1] < level))
+      keep[i] = keep[i + 1] = 1;
   int window = -1;
   for (int i = 0; i < n;) {
     if (!keep[i]) {

@@ -181,6 +181,35 @@ TEST(QuasiStaticCurving, AWornWheelWithBandsAndASteepFlankFindsItsBalance) {
   EXPECT_EQ(compared, 5 * 19);
 }
 
+// The default scene's wheel after 67 900 km (tests/data/profiles/s1002_worn_67900km.csv): its
+// flange root worn to a 10 deg shelf below a 79 deg flank, steeper than the contact angle limit.
+// The leading wheelsets of the curves R 700-1500 m rest where the flank starts to take load, and
+// their balances converge. Before the coarse scan followed the gap's slopes into the flank's dip
+// (contactgeom's wheelset_test), the flank took 19 kN at once there and none of these four found
+// a balance, neither from tangent track nor by continuation.
+TEST(QuasiStaticCurving, AWornWheelWithAShelfBelowASteepFlankFindsItsBalance) {
+  const Vehicle v = default_vehicle();
+  profiles::LoadOptions options;
+  options.read.body = profiles::Body::wheel;
+  const profiles::Profile worn =
+      profiles::load_profile(test_data("profiles/s1002_worn_67900km.csv"), options).profile;
+  const auto models = four(standard_wheelset(worn));
+  int compared = 0;
+  struct Case {
+    double radius, cant, speed;
+  };
+  for (const Case& k : {Case{700.0, 0.1, 27.78}, Case{1000.0, 0.1, 33.33},
+                        Case{1200.0, 0.09, 33.33}, Case{1500.0, 0.08, 38.89}}) {
+    const SteadyCurve curve = curve_of(k.radius, k.cant, k.speed);
+    const VehicleCurving c = solve_vehicle_curving(v, models, curve);
+    ASSERT_TRUE(c.converged) << "R " << k.radius << ": " << c.message;
+    expect_equilibrium(v, models, curve, c, compared);
+    // The leading wheelset's outer wheel at its flank's foot (6.4-6.6 mm of shift).
+    EXPECT_NEAR(c.wheelsets[0].state.dy, 6.5e-3, 0.1e-3) << "R " << k.radius;
+  }
+  EXPECT_EQ(compared, 4 * 19);
+}
+
 // A measured wheel whose record is wavy on the scale of a millimetre (Car7216_0001r.whl,
 // MiniProf): fitted with the default 0.3 mm smoothing its flank's slope peaks at 61, 62, 71 and
 // 80 degrees within 5 mm, and a light flange contact beyond the steepest wave counts as
