@@ -233,9 +233,9 @@ std::optional<WheelPoint> WheelRailGap::wheel_at(double y) const {
   if (!w) return std::nullopt;
   if (sin_roll_ == 0.0) return WheelPoint{w->z, w->z, y_rolled, w->s};
   // Newton on g(u) = cos u - sin (z(u) - z_tape) - y_rolled from u = y_rolled. The first step
-  // moves u by about roll (z - z_tape), 0.1 mm at most for |roll| < 0.1 on a 30 mm flange; the
-  // next ones converge quadratically. A vertical tangent (the flange back, never in contact)
-  // keeps the first point.
+  // moves u by about roll (z - z_tape): 0.2 mm at a wheelset's 7 mrad on a 28 mm flange, 3 mm at
+  // the largest roll allowed (0.1 rad); the next ones converge quadratically. A vertical tangent
+  // (the flange back, never in contact) keeps the first point.
   double u = y_rolled;
   for (int iteration = 0; iteration < 6; ++iteration) {
     const double g = cos_roll_ * u - sin_roll_ * (w->z - z_tape_) - y_rolled;
@@ -258,12 +258,15 @@ std::optional<CoarseGap> WheelRailGap::coarse_gap(double y) const {
   const double y_rolled = y - shift_;
   const auto w = pair_.wheel.surface_at(y_rolled);
   if (!w) return std::nullopt;
-  // The rolled wheel surface's slope: (sin + cos z') / (cos - sin z') of the unrolled one's z'
-  // (taken at y_rolled, which the roll moves by less than 0.1 mm along the profile).
+  // The rolled wheel surface's slope, (sin + cos z') / (cos - sin z') of the unrolled one's z' at
+  // the material point (-cot(roll) on a vertical tangent). A vertical rail tangent gives no
+  // finite slope (NaN or infinite): no dip is found next to it.
   const auto gap_slope = [&](double wheel_slope) {
-    const double rolled = sin_roll_ == 0.0 ? wheel_slope
-                                           : (sin_roll_ + cos_roll_ * wheel_slope) /
-                                                 (cos_roll_ - sin_roll_ * wheel_slope);
+    double rolled = wheel_slope;
+    if (sin_roll_ != 0.0)
+      rolled = std::isinf(wheel_slope)
+                   ? -cos_roll_ / sin_roll_
+                   : (sin_roll_ + cos_roll_ * wheel_slope) / (cos_roll_ - sin_roll_ * wheel_slope);
     return r->dz_dy - rolled;
   };
   if (sin_roll_ == 0.0) return CoarseGap{r->z - w->z, gap_slope(w->dz_dy)};
@@ -275,12 +278,14 @@ std::optional<CoarseGap> WheelRailGap::coarse_gap(double y) const {
   const double du = -g / dg;
   if (std::isfinite(du) && dg >= 0.1 && std::abs(du) <= 20e-6) {
     const double u = y_rolled + du, z = w->z + w->dz_dy * du;
+    // The slope at y_rolled, 20 um from the material point at most.
     return CoarseGap{r->z - (sin_roll_ * u + cos_roll_ * (z - z_tape_) + z_tape_),
                      gap_slope(w->dz_dy)};
   }
   const auto full = wheel_at(y);
   if (!full) return std::nullopt;
-  return CoarseGap{r->z - full->z_rolled, gap_slope(w->dz_dy)};
+  const auto at_point = pair_.wheel.surface_at(full->y);
+  return CoarseGap{r->z - full->z_rolled, gap_slope(at_point ? at_point->dz_dy : w->dz_dy)};
 }
 
 std::optional<GapPoint> WheelRailGap::gap(double y) const {
@@ -297,6 +302,7 @@ void WheelRailGap::scan(CoarseScan& coarse) const {
   coarse.lo = std::max(pair_.rail.y_min(), pair_.wheel.y_min() + shift_);
   coarse.hi = std::min(pair_.rail.y_max(), pair_.wheel.y_max() + shift_);
   coarse.h.clear();
+  coarse.dip.clear();
   coarse.h_min = kInf;
   if (!(coarse.hi > coarse.lo)) return;
   const int n = static_cast<int>(std::floor((coarse.hi - coarse.lo) / options_.scan_spacing)) + 1;
@@ -339,10 +345,10 @@ void WheelRailGap::sample(const CoarseScan& coarse, double margin, GapSamples& g
       keep[i] = (i == 0 || coarse.h[i] <= coarse.h[i - 1]) &&
                 (i == n - 1 || coarse.h[i] <= coarse.h[i + 1]);
   }
-  // A dip below the level that neither of its interval's points shows (CoarseScan::dip).
+  // A dip below the level between two points neither of which is kept (CoarseScan::dip): with
+  // minima_only also one whose lower point is not the coarse scan's local minimum.
   for (int i = 0; i + 1 < n; ++i)
-    if (coarse.dip[i] < level && !(coarse.h[i] < level) && !(coarse.h[i + 1] < level))
-      keep[i] = keep[i + 1] = 1;
+    if (coarse.dip[i] < level && !keep[i] && !keep[i + 1]) keep[i] = keep[i + 1] = 1;
   int window = -1;
   for (int i = 0; i < n;) {
     if (!keep[i]) {

@@ -212,9 +212,11 @@ double weighted_radius(const std::vector<TablePatch>& patches) {
 }
 
 // Whether one wheel has passed its flange (WheelRailStatus::past_flange) at both ends of an
-// interval and halfway, at every load level: a derailed wheelset, which the vehicle's solvers
-// reject, so the contact there is not refined. Past the flange the contact runs over the flange
-// tip and back, whose curvature would otherwise draw a third of a new S1002 table's nodes.
+// interval and halfway, at every load level: a derailed wheelset, whose balance the curving does
+// not accept and whose contact the wear does not wear, so the contact there is not refined
+// (the time domain, passing through, gets it 0.1 mm apart). Past the flange the contact runs
+// over the flange tip and back, whose curvature would otherwise draw a third of a new S1002
+// table's nodes.
 bool past_flange_throughout(const std::vector<TableNode>& lo, const std::vector<TableNode>& hi,
                             const std::vector<TableNode>& mid) {
   const auto passed = [](const TableNode& n, bool left) {

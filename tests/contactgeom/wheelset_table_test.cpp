@@ -225,36 +225,43 @@ TEST(WheelsetTable, AnswersPastTheFlangeWithTheDirectSolvesStatus) {
   // from dy = 6.44 mm: the contact is solved all the same and tabulated with its status, which
   // the curving reads as derailed and the wear as climbing.
   const WheelsetOnTrack track = s1002_on_60e1();
-  for (double dy : {7.0e-3, 8.0e-3, -7.5e-3}) {
-    const WheelsetContact direct = solve_wheelset(track, at(dy, 50e3, 50e3), WheelRailOptions{});
-    const std::optional<WheelsetContact> tab = table().contact(at(dy, 50e3, 50e3));
-    ASSERT_TRUE(tab) << dy;
-    const bool left_flange = dy > 0.0;
+  // At nodes (7, 8, -7.5 mm) only the load levels are interpolated: within the refinement's
+  // tolerance on the lateral force per unit load, with the margin
+  // MeetsItsToleranceBetweenShifts allows (measured: 12-64 N of 50 kN). Between nodes past the
+  // flange, which is not refined (0.1 mm apart), within 1 % of the load (measured in 13 um steps
+  // from 6.5 to 15 mm: 0.72 % at worst, at 6.63 mm).
+  struct Shift {
+    double dy, tolerance;
+  };
+  const double at_node = 1.5 * table().grid().lateral_tolerance * 50e3;
+  for (const Shift& k : {Shift{7.0e-3, at_node}, Shift{8.0e-3, at_node}, Shift{-7.5e-3, at_node},
+                         Shift{6.63e-3, 500.0}, Shift{7.05e-3, 500.0}, Shift{-8.25e-3, 500.0}}) {
+    const WheelsetContact direct = solve_wheelset(track, at(k.dy, 50e3, 50e3), WheelRailOptions{});
+    const std::optional<WheelsetContact> tab = table().contact(at(k.dy, 50e3, 50e3));
+    ASSERT_TRUE(tab) << k.dy;
+    const bool left_flange = k.dy > 0.0;
     const WheelRailContact& d = left_flange ? direct.left : direct.right;
     const WheelRailContact& t = left_flange ? tab->left : tab->right;
-    ASSERT_EQ(d.status, WheelRailStatus::past_flange) << dy;
-    EXPECT_EQ(t.status, d.status) << dy;
-    // Past the flange the contact is interpolated at the initial spacing, unrefined: within 1 %
-    // of the load (measured in 13 um steps from 6.5 to 15 mm: 0.72 % at worst, 6.63 mm).
-    EXPECT_NEAR(t.lateral_force, d.lateral_force, 0.01 * 50e3) << dy;
+    ASSERT_EQ(d.status, WheelRailStatus::past_flange) << k.dy;
+    EXPECT_EQ(t.status, d.status) << k.dy;
+    EXPECT_NEAR(t.lateral_force, d.lateral_force, k.tolerance) << k.dy;
   }
 }
 
 TEST(WheelsetTable, DoesNotRefinePastTheFlange) {
   // Shifts at which a wheel has passed its flange at every load level: beyond the onset (6.44 mm
   // on new S1002) on each side, the initial grid with every interval's midpoint (the first
-  // check), and the halvings that place the onset (at most 4 from 0.1 mm to 12.5 um, each
-  // adding a node on either side of it). Refined there like the tread, past the flange drew
-  // 462 shifts, a third of the table; measured now: 200.
+  // check, 0.1 mm apart), and the halvings that place the onset (3 from 0.1 mm to 12.5 um, each
+  // adding at most two nodes; 4 allowed). Refined there like the tread, past the flange drew
+  // 496 shifts; measured now: 200.
   const WheelsetTableOptions& grid = table().grid();
   int past = 0;
   for (double dy : table().shifts()) {
     bool passed_left = true, passed_right = true;
     for (double load : table().loads()) {
       const std::optional<WheelsetContact> c = table().contact(at(dy, load, load));
-      ASSERT_TRUE(c) << dy;
-      passed_left = passed_left && c->left.status == WheelRailStatus::past_flange;
-      passed_right = passed_right && c->right.status == WheelRailStatus::past_flange;
+      passed_left = passed_left && c && c->left.status == WheelRailStatus::past_flange;
+      passed_right = passed_right && c && c->right.status == WheelRailStatus::past_flange;
     }
     past += passed_left || passed_right ? 1 : 0;
   }
