@@ -49,7 +49,10 @@ struct WheelsetPose {
 struct WheelRailOptions {
   double strip_width = 0.1e-3;  ///< lateral sampling of the gap [m] (patch strips are this wide
                                 ///< divided by cos(contact angle))
-  double scan_spacing = 1e-3;   ///< coarse scan that finds where contact is possible [m]
+  /// Coarse scan that finds where contact is possible [m]; between two of its points the gap is
+  /// sampled also where their slopes lead into a dip whose tangents cross within the margin (a
+  /// steep flank's dip, narrower than the spacing).
+  double scan_spacing = 1e-3;
   /// Gaps more than this above the minimum cannot touch [m]. The gap is sampled first where it
   /// lies within min(0.3 mm, this) of its minimum and again to this margin when the approach
   /// comes within 0.1 mm of that.
