@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "support/csv_table.hpp"
 #include "wheelwear/core/input_error.hpp"
@@ -32,6 +33,16 @@ WheelsetState loaded(double dy) {
   s.vertical_force_left = 55e3;
   s.vertical_force_right = 55e3;
   return s;
+}
+
+// Both wheels of a wheelset worn as in tests/data/profiles/`file`, on 60E1 1:40.
+WheelsetOnTrack worn_on_60e1(const std::string& file) {
+  profiles::LoadOptions options;
+  options.read.body = profiles::Body::wheel;
+  const profiles::Profile worn =
+      profiles::load_profile(testing::test_data("profiles/" + file), options).profile;
+  const WheelRailPair pair(worn, profiles::rail_60e1({.inclination = std::atan(1.0 / 40.0)}));
+  return {pair, pair};
 }
 
 // The patch whose O is where the undeformed surfaces touch first: the lowest vertical gap at O
@@ -189,13 +200,7 @@ TEST(Wheelset, InitialContactPointMovesContinuouslyWhereTwoMinimaCross) {
 // by the approach, the wheel's lateral force rises continuously onto the flank: at most a
 // tenth of that jump per um, while it more than triples over the sweep.
 TEST(Wheelset, ASteepWornFlankTakesItsLoadContinuously) {
-  profiles::LoadOptions options;
-  options.read.body = profiles::Body::wheel;
-  const profiles::Profile worn =
-      profiles::load_profile(testing::test_data("profiles/s1002_worn_33200km.csv"), options)
-          .profile;
-  const WheelRailPair pair(worn, profiles::rail_60e1({.inclination = std::atan(1.0 / 40.0)}));
-  const WheelsetOnTrack t{pair, pair};
+  const WheelsetOnTrack t = worn_on_60e1("s1002_worn_33200km.csv");
   double previous_roll = std::nan(""), previous_Y = 0.0, first_Y = 0.0, last_Y = 0.0;
   double largest_roll = 0.0, largest_Y = 0.0;
   int compared = 0;
@@ -227,13 +232,7 @@ TEST(Wheelset, ASteepWornFlankTakesItsLoadContinuously) {
 // this wheel. The scan now follows the gap's slopes into such a dip: the flank loads from zero,
 // as a scan fine enough to see the dip at every shift (0.2 mm) has it.
 TEST(Wheelset, AFlankDipBetweenTheCoarseScansPointsLoadsContinuously) {
-  profiles::LoadOptions options;
-  options.read.body = profiles::Body::wheel;
-  const profiles::Profile worn =
-      profiles::load_profile(testing::test_data("profiles/s1002_worn_67900km.csv"), options)
-          .profile;
-  const WheelRailPair pair(worn, profiles::rail_60e1({.inclination = std::atan(1.0 / 40.0)}));
-  const WheelsetOnTrack t{pair, pair};
+  const WheelsetOnTrack t = worn_on_60e1("s1002_worn_67900km.csv");
   WheelRailOptions fine;
   fine.scan_spacing = 0.2e-3;
   double previous_Y = std::nan(""), largest_step = 0.0, largest_miss = 0.0;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "standard_wheelset.hpp"
 #include "support/csv_table.hpp"
@@ -152,6 +153,13 @@ TEST(QuasiStaticCurving, AtTheBalanceSpeedBothWheelsCarryTheSameLoad) {
   EXPECT_EQ(compared, 3 * 4);
 }
 
+// A wheel worn by this program (tests/data/profiles/`file`).
+profiles::Profile worn_wheel(const std::string& file) {
+  profiles::LoadOptions options;
+  options.read.body = profiles::Body::wheel;
+  return profiles::load_profile(test_data("profiles/" + file), options).profile;
+}
+
 // A worn wheel (tests/data/profiles/s1002_worn_33200km.csv: its tread worn into bands, its flank
 // to 1.46 rad, steeper than a rigid wheelset can roll onto): from R 500 m to R 5000 m the
 // curving converges to the same balances, with the leading wheelsets on their steep flanks
@@ -159,10 +167,7 @@ TEST(QuasiStaticCurving, AtTheBalanceSpeedBothWheelsCarryTheSameLoad) {
 // the steep flank, the first four did not converge (measured: Newton stalled 0.1-2 kN short).
 TEST(QuasiStaticCurving, AWornWheelWithBandsAndASteepFlankFindsItsBalance) {
   const Vehicle v = default_vehicle();
-  profiles::LoadOptions options;
-  options.read.body = profiles::Body::wheel;
-  const profiles::Profile worn =
-      profiles::load_profile(test_data("profiles/s1002_worn_33200km.csv"), options).profile;
+  const profiles::Profile worn = worn_wheel("s1002_worn_33200km.csv");
   const auto models = four(standard_wheelset(worn));
   int compared = 0;
   struct Case {
@@ -189,10 +194,7 @@ TEST(QuasiStaticCurving, AWornWheelWithBandsAndASteepFlankFindsItsBalance) {
 // a balance, neither from tangent track nor by continuation.
 TEST(QuasiStaticCurving, AWornWheelWithAShelfBelowASteepFlankFindsItsBalance) {
   const Vehicle v = default_vehicle();
-  profiles::LoadOptions options;
-  options.read.body = profiles::Body::wheel;
-  const profiles::Profile worn =
-      profiles::load_profile(test_data("profiles/s1002_worn_67900km.csv"), options).profile;
+  const profiles::Profile worn = worn_wheel("s1002_worn_67900km.csv");
   const auto direct = four(standard_wheelset(worn));
   // And on the wheel's contact table, as a run solves it (the table built once, 0.5 s).
   WheelsetModel tabulated = standard_wheelset(worn);
