@@ -11,6 +11,7 @@
 
 #include "commands.hpp"
 #include "contact_inputs.hpp"
+#include "contact_wear.hpp"
 #include "creep_request.hpp"
 #include "json_writer.hpp"
 #include "wheelwear/contactgeom/nadal.hpp"
@@ -27,42 +28,13 @@ struct ContactArgs {
   ContactInputs in;
   bool creep = false;
   bool json = false;
-  std::string tangential = "fastsim-sdec";         // or "exact": also Kalker's exact theory
-  int exact_grid = 40;                             // --tangential exact: elements per side
-  double exact_margin = 1.3;                       // --tangential exact: grid over the patch
-  const CLI::Option* exact_grid_option = nullptr;  // to refuse them without --tangential exact
+  std::string tangential = "fastsim-sdec";  // or "exact": also Kalker's exact theory
+  ExactPatchOptions exact;                  // --tangential exact: its grid
+  // To refuse them without --tangential exact.
+  const CLI::Option* exact_grid_option = nullptr;
   const CLI::Option* exact_margin_option = nullptr;
+  const CLI::Option* exact_radius_option = nullptr;
 };
-
-// Kalker's exact theory on `p`, from the wheel/rail undeformed distance (wheel_rail_exact.hpp).
-// A patch of a blend is its description's problem, at its whole load, with the load and forces
-// weighted by its share as the other methods' are.
-tangential::WheelRailExactSolution exact_patch(const contactgeom::WheelRailPair& pair,
-                                               const contactgeom::WheelRailPatch& p,
-                                               const ContactArgs& args) {
-  tangential::WheelRailExactOptions options;
-  options.nx = options.ny = args.exact_grid;
-  options.margin = args.exact_margin;
-  contactgeom::WheelRailPatch whole = p;
-  whole.normal_force = contactgeom::description_load(p);
-  tangential::WheelRailExactSolution s = tangential::wheel_rail_exact(
-      pair, args.in.pose, whole, args.in.creepages_at(pair, p), args.in.mu, options);
-  s.rolling.normal_force *= p.share;
-  s.rolling.forces = tangential::weighted(s.rolling.forces, p.share);
-  return s;
-}
-
-void check_exact_options(const ContactArgs& args) {
-  if (args.exact_grid < kMinExactGrid || args.exact_grid > kMaxExactGrid) {
-    throw InputError("--exact-grid " + std::to_string(args.exact_grid) + ": needs " +
-                     std::to_string(kMinExactGrid) + " ... " + std::to_string(kMaxExactGrid) +
-                     " elements per side");
-  }
-  if (!(args.exact_margin >= 1.0 && args.exact_margin <= 5.0)) {
-    throw InputError("--exact-margin " + std::to_string(args.exact_margin) +
-                     ": the grid must cover the patch, 1 ... 5 times its extent");
-  }
-}
 
 // One patch's creepages at O and its FASTSIM-SDEC creep forces (--creep).
 struct PatchCreep {
@@ -118,7 +90,8 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
     o.add("vx", c.vx).add("vy", c.vy).add("phi", c.phi);
     o.add("Fx", f.Fx).add("Fy", f.Fy).add("Mz", f.Mz.value_or(0.0));
     if (args.tangential == "exact") {
-      const tangential::WheelRailExactSolution e = exact_patch(pair, p, args);
+      const tangential::WheelRailExactSolution e =
+          exact_patch(args.in, pair, p, args.in.creepages_at(pair, p), args.exact);
       const tangential::ExactSolution& r = e.rolling;
       o.add("exact_status", tangential::status_name(r.status))
           .add("exact_N", r.normal_force)
@@ -151,9 +124,10 @@ contactgeom::NadalCheck nadal_of(const SolvedContact& solved, const std::vector<
 
 void run_contact(const ContactArgs& args) {
   if (args.tangential == "exact") {
-    check_exact_options(args);
+    check_exact_patch_options(args.exact);
   } else {
-    for (const CLI::Option* given : {args.exact_grid_option, args.exact_margin_option})
+    for (const CLI::Option* given :
+         {args.exact_grid_option, args.exact_margin_option, args.exact_radius_option})
       if (given && given->count() > 0)
         throw InputError(given->get_name() + ": applies only with --tangential exact");
   }
@@ -218,7 +192,8 @@ void run_contact(const ContactArgs& args) {
         std::printf("  creepages vx %.4g, vy %.4g, phi %.4g 1/m: Fx %.6g N, Fy %.6g N\n", c.vx,
                     c.vy, c.phi, f.Fx, f.Fy);
         if (args.tangential == "exact") {
-          const tangential::WheelRailExactSolution e = exact_patch(solved.pair, p, args);
+          const tangential::WheelRailExactSolution e = exact_patch(
+              args.in, solved.pair, p, args.in.creepages_at(solved.pair, p), args.exact);
           const tangential::ExactSolution& r = e.rolling;
           std::printf(
               "  exact theory (%d x %d elements, %s after %d iterations): N %.6g N, Fx %.6g N, "
@@ -272,14 +247,16 @@ void add_contact_command(CLI::App& app) {
       ->check(CLI::IsMember({"fastsim-sdec", "exact"}))
       ->needs(creep)
       ->capture_default_str();
-  args->exact_grid_option = cmd->add_option("--exact-grid", args->exact_grid,
+  args->exact_grid_option = cmd->add_option("--exact-grid", args->exact.grid,
                                             "--tangential exact: elements per side, 8 ... 400")
                                 ->capture_default_str();
   args->exact_margin_option =
-      cmd->add_option("--exact-margin", args->exact_margin,
+      cmd->add_option("--exact-margin", args->exact.margin,
                       "--tangential exact: the grid covers the Kik-Piotrowski patch times this,\n"
                       "1 ... 5; raise it when the exact contact area reaches the grid's border")
           ->capture_default_str();
+  args->exact_radius_option =
+      cmd->add_flag("--exact-radius-variation", args->exact.radius_variation, kRadiusVariationHelp);
   cmd->add_flag("--json", args->json, "print one JSON object with a list of patches");
   cmd->callback([args] { run_contact(*args); });
 }

@@ -123,7 +123,7 @@ py::dict contact_dict(const cli::SolvedContact& solved) {
 
 py::dict wear_dict(const cli::ModelWear& w, const profiles::Profile& wheel) {
   py::dict o;
-  o["model"] = std::string(tangential::model_name(w.model));
+  o["model"] = w.model;
   o["Fx"] = w.solution.forces.Fx;
   o["Fy"] = w.solution.forces.Fy;
   o["frictional_work"] = w.solution.frictional_work;

@@ -1,6 +1,6 @@
-// Kalker's exact theory from the command line: `wheelwear creep --method exact` and
-// `wheelwear contact --creep --tangential exact` print the library's solutions, agree with
-// CONTACT's, and refuse what does not apply to them.
+// Kalker's exact theory from the command line: `wheelwear creep --method exact`,
+// `wheelwear contact --creep --tangential exact` and `wheelwear wear --exact` print the
+// library's solutions, agree with CONTACT's, and refuse what does not apply to them.
 
 #include <gtest/gtest.h>
 
@@ -10,6 +10,8 @@
 #include "support/contact_cases.hpp"
 #include "support/reference_profiles.hpp"
 #include "support/run_command.hpp"
+#include "wheelwear/profiles/rail_60e1.hpp"
+#include "wheelwear/profiles/s1002.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 #include "wheelwear/tangential/exact/wheel_rail_exact.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
@@ -150,6 +152,55 @@ TEST(ContactExact, RefusesBadExactOptions) {
   const auto snug = run_wheelwear(args + " --tangential exact --exact-margin 1");
   EXPECT_NE(snug.exit_code, 0);
   EXPECT_NE(snug.err.find("--exact-margin"), std::string::npos) << snug.err;
+}
+
+// `wear --exact` on new S1002/60E1 1:40 at dy 4 mm: the exact chain comes last, as model
+// "exact", with wheel_rail_exact's forces for the printed patch and the rigid slip's work of
+// them (exact_fields.hpp); the chosen model's keys are unchanged. Where it puts the work is
+// tested against CONTACT in tests/wear/wear_contact_reference_test.cpp.
+TEST(WearExact, AddsTheExactChainAfterTheModels) {
+  const std::string args =
+      "wear --dy 0.004 --load 55000 --vx 1e-3 --phi 0.1 --V 20 --mu 0.3 --json";
+  const auto sdec = run_wheelwear(args);
+  const auto both = run_wheelwear(args + " --exact --exact-grid 30");
+  ASSERT_EQ(sdec.exit_code, 0) << sdec.err;
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  const std::size_t at = both.out.find("\"model\": \"exact\"");
+  ASSERT_NE(at, std::string::npos) << both.out;
+  const std::string exact = both.out.substr(at);
+  for (const char* key : {"worn_volume_per_metre", "centroid_y_wheel", "frictional_work", "Fx"})
+    EXPECT_EQ(json_number(both.out, key), json_number(sdec.out, key)) << key;
+
+  contactgeom::WheelsetPose pose;
+  pose.dy = 0.004;
+  const contactgeom::WheelRailPair pair(profiles::s1002(), profiles::rail_60e1());
+  contactgeom::WheelRailOptions calibrated;  // the command's default normal method
+  calibrated.kp.penetration = contactgeom::KpPenetration::hertz_calibrated;
+  const auto contact = contactgeom::solve_wheel_rail(pair, pose, 55000, calibrated);
+  ASSERT_EQ(contact.patches.size(), 1u);
+  tangential::WheelRailExactOptions options;
+  options.nx = options.ny = 30;
+  const tangential::Creepages creepages{1e-3, 0.0, 0.1};
+  const tangential::ExactSolution s =
+      tangential::wheel_rail_exact(pair, pose, contact.patches[0], creepages, 0.3, options).rolling;
+  // The same solve, its forces summed again over the cells: equal to rounding.
+  EXPECT_NEAR(*json_number(exact, "Fx"), s.forces.Fx, 1e-9 * std::abs(s.forces.Fx));
+  EXPECT_NEAR(*json_number(exact, "Fy"), s.forces.Fy, 1e-9 * std::abs(s.forces.Fy));
+  const double rigid_slip_work = -(s.forces.Fx * creepages.vx + *s.forces.Mz * creepages.phi);
+  EXPECT_NEAR(*json_number(exact, "frictional_work"), rigid_slip_work, 1e-9 * rigid_slip_work);
+  EXPECT_GT(*json_number(exact, "worn_volume_per_metre"), 0.0);
+}
+
+TEST(WearExact, RefusesItsOptionsWithoutIt) {
+  const std::string args = "wear --dy 0.004 --load 55000 --vx 1e-3 --json";
+  for (const char* option : {"--exact-grid 40", "--exact-margin 1.5", "--exact-radius-variation"}) {
+    const auto r = run_wheelwear(args + " " + option);
+    EXPECT_NE(r.exit_code, 0) << option;
+    EXPECT_NE(r.err.find("applies only with --exact"), std::string::npos) << r.err;
+  }
+  const auto bad = run_wheelwear(args + " --exact --exact-grid 2");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.err.find("--exact-grid"), std::string::npos) << bad.err;
 }
 
 }  // namespace

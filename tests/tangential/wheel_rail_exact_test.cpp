@@ -17,6 +17,8 @@
 #include "support/contact_cases.hpp"
 #include "support/reference_profiles.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/profiles/rail_60e1.hpp"
+#include "wheelwear/profiles/s1002.hpp"
 
 namespace wheelwear::tangential {
 namespace {
@@ -232,6 +234,51 @@ TEST(WheelRailExact, HertzCalibratedPatchesFollowTheExactSolveOntoTheFlank) {
   RecordProperty("worst_area", std::to_string(worst_area));
   RecordProperty("worst_pmax", std::to_string(worst_pmax));
   EXPECT_EQ(compared, 2 * 33);
+}
+
+// With radius_variation each row's longitudinal creepage is the wheel's rolling radius departing
+// from its tangent at O, over the rolling radius: against EN 13715's S1002 itself
+// (s1002_nominal_z, the standard's sections, not the profile's spline) across the 23 mm wide
+// tread patch of new S1002 on 60E1 1:40, centred, 100 kN, and the grid 1.3 times as wide. The
+// profile's spline through the standard's points follows its sections to about 1 nm, so 2e-9
+// of creepage (1 nm of radius) is the bound (measured 2e-11); the departure reaches 1.1e-3
+// (0.5 mm of radius) at the grid's edges.
+TEST(WheelRailExact, RadiusVariationIsTheTreadsDepartureFromItsTangentAtO) {
+  const contactgeom::WheelRailPair pair(profiles::s1002(), profiles::rail_60e1());
+  const contactgeom::WheelsetPose centred;
+  const auto c = contactgeom::solve_wheel_rail(pair, centred, 100e3);
+  ASSERT_EQ(c.patches.size(), 1u);
+  const contactgeom::WheelRailPatch& p = c.patches[0];
+  WheelRailExactOptions options;
+  options.nx = 20;
+  options.ny = 80;
+  options.radius_variation = true;
+  const WheelRailExactSolution s =
+      wheel_rail_exact(pair, centred, p, {1e-3, 0.0, 0.0}, 0.3, options);
+  ASSERT_EQ(s.row_vx.size(), static_cast<std::size_t>(s.rolling.grid.ny));
+
+  const double y_O = -p.y_wheel;
+  const double z_O = profiles::s1002_nominal_z(y_O);
+  constexpr double kStep = 1e-6;  // [m] central difference of a polynomial section: exact to 1e-10
+  const double slope =
+      (profiles::s1002_nominal_z(y_O + kStep) - profiles::s1002_nominal_z(y_O - kStep)) /
+      (2.0 * kStep);
+  double largest = 0.0;
+  int compared = 0;
+  for (int j = 0; j < s.rolling.grid.ny; ++j) {
+    const double t = -s.rolling.grid.y(j) * std::cos(p.contact_angle);
+    const double departure = profiles::s1002_nominal_z(y_O + t) - z_O - slope * t;
+    const double expected = -departure / p.rolling_radius;
+    EXPECT_NEAR(s.row_vx[static_cast<std::size_t>(j)], expected, 2e-9) << "row " << j;
+    largest = std::max(largest, std::abs(expected));
+    ++compared;
+  }
+  EXPECT_GT(largest, 1e-3);  // the comparison spans a real departure
+  EXPECT_EQ(compared, 80);
+
+  // Off, the rows add nothing and the solution is the planar one.
+  options.radius_variation = false;
+  EXPECT_TRUE(wheel_rail_exact(pair, centred, p, {1e-3, 0.0, 0.0}, 0.3, options).row_vx.empty());
 }
 
 // Bad input is refused with a message that names it.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <span>
 
 #include "influence_operator.hpp"
 #include "tangential_solver.hpp"
@@ -13,8 +14,10 @@ namespace wheelwear::tangential {
 namespace {
 
 // Solves the tangential problem of `solution` (grid and pn set) and sums its forces.
-void solve_and_sum(const Creepages& v, double mu, const Material& material,
-                   const ExactSolverOptions& options, ExactSolution& solution) {
+// row_vx, where not empty, adds a longitudinal creepage to each row j.
+void solve_and_sum(const Creepages& v, std::span<const double> row_vx, double mu,
+                   const Material& material, const ExactSolverOptions& options,
+                   ExactSolution& solution) {
   const ElementGrid& grid = solution.grid;
   const auto n = static_cast<std::size_t>(grid.size());
   std::vector<double> bound(n), wx(n), wy(n);
@@ -27,7 +30,8 @@ void solve_and_sum(const Creepages& v, double mu, const Material& material,
     for (int i = 0; i < grid.nx; ++i) {
       const std::size_t e = static_cast<std::size_t>(j * grid.nx + i);
       bound[e] = mu * solution.pn[e];
-      wx[e] = v.vx - v.phi * grid.y(j);
+      wx[e] =
+          v.vx - v.phi * grid.y(j) + (row_vx.empty() ? 0.0 : row_vx[static_cast<std::size_t>(j)]);
       wy[e] = v.vy + v.phi * (grid.x(i) + x_offset);
     }
   const detail::InfluenceOperator op(grid, material, true, false);
@@ -76,8 +80,7 @@ ElementGrid sdec_grid(const contactgeom::Sdec& sdec, const SdecGridOptions& opti
 
 ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepages,
                          const ContactLoad& load, const Material& material,
-                         const SdecGridOptions& grid_options,
-                         const ExactSolverOptions& options) {
+                         const SdecGridOptions& grid_options, const ExactSolverOptions& options) {
   creepages.validate();
   load.validate();
   material.validate();
@@ -90,20 +93,24 @@ ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepag
     for (int i = 0; i < grid.nx; ++i)
       solution.pn[static_cast<std::size_t>(j * grid.nx + i)] =
           sdec.pressure(grid.x(i), grid.y(j), load.N);
-  solve_and_sum(creepages, load.mu, material, options, solution);
+  solve_and_sum(creepages, {}, load.mu, material, options, solution);
   return solution;
 }
 
 ExactSolution exact_rolling(const ElementGrid& grid, const std::vector<double>& h,
                             const Creepages& creepages, const ContactLoad& load,
-                            const Material& material, const ExactSolverOptions& options) {
+                            const Material& material, const ExactSolverOptions& options,
+                            std::span<const double> row_vx) {
   creepages.validate();
   load.validate();
+  require(row_vx.empty() || row_vx.size() == static_cast<std::size_t>(grid.ny), "row_vx.size()",
+          static_cast<double>(row_vx.size()), "must be 0 or the grid's rows (ny)");
+  for (double v : row_vx) require_finite("row_vx", v);
   NormalSolution normal = exact_normal(grid, h, load.N, material, options);
   ExactSolution solution;
   solution.grid = grid;
   solution.pn = std::move(normal.pn);
-  solve_and_sum(creepages, load.mu, material, options, solution);
+  solve_and_sum(creepages, row_vx, load.mu, material, options, solution);
   if (normal.status == ExactStatus::not_converged) {
     solution.status = ExactStatus::not_converged;
     solution.message = "normal problem: " + normal.message;

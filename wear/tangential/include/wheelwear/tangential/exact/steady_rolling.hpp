@@ -3,6 +3,7 @@
 /// Ch. 5; as solved by Vollebregt's CONTACT): piecewise-constant tractions on a rectangular
 /// grid, analytical influence coefficients, Coulomb friction with adhesion and slip areas.
 
+#include <span>
 #include <vector>
 
 #include "wheelwear/contactgeom/sdec.hpp"
@@ -26,16 +27,19 @@ ElementGrid sdec_grid(const contactgeom::Sdec& sdec, const SdecGridOptions& opti
 /// Throws InputError on invalid input.
 ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepages,
                          const ContactLoad& load, const Material& material,
-                         const SdecGridOptions& grid = {},
-                         const ExactSolverOptions& options = {});
+                         const SdecGridOptions& grid = {}, const ExactSolverOptions& options = {});
 
 /// Steady rolling for a given undeformed distance `h` [m] per element of `grid` (index
 /// j*nx + i, before the approach; the contact area follows from the normal problem,
 /// exact_normal) with normal force load.N and friction load.mu. Creepages are at the origin
 /// of the grid's coordinates; rigid slip, slip and friction as for exact_sdec. Forces are on
-/// body 1 against body 2 (Kalker's convention). Throws InputError on invalid input.
+/// body 1 against body 2 (Kalker's convention). `row_vx`, where not empty (one value per row
+/// j, grid.ny), is added to vx in each row: a rolling radius whose departure from the contact
+/// plane's varies across the patch (conformal contact, wheel_rail_exact). Throws InputError on
+/// invalid input.
 ExactSolution exact_rolling(const ElementGrid& grid, const std::vector<double>& h,
                             const Creepages& creepages, const ContactLoad& load,
-                            const Material& material, const ExactSolverOptions& options = {});
+                            const Material& material, const ExactSolverOptions& options = {},
+                            std::span<const double> row_vx = {});
 
 }  // namespace wheelwear::tangential

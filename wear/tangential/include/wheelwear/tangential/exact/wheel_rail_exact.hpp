@@ -22,6 +22,13 @@ struct WheelRailExactOptions {
   /// patch it is sized from (virtual penetration is an approximation), hence more than
   /// CONTACT's 1.02 for a known patch.
   double margin = 1.3;
+  /// Whether the longitudinal rigid slip follows the wheel's rolling radius across the patch.
+  /// The planar theory (and CONTACT's planar wheel/rail contact) takes the radius linear in s,
+  /// which the spin creepage accounts for; where a wide conformal patch spans a curved tread
+  /// (a hollow-worn wheel) the radius departs from that line by up to a millimetre, a
+  /// longitudinal creepage of order 1e-3 that varies across the patch. true adds it to each
+  /// row: -(r(s) - r_O - r'_O s) / r_O (WheelRailExactSolution::row_vx).
+  bool radius_variation = false;
   ExactSolverOptions solver;  ///< stopping tests of the normal and tangential iterations
 
   void validate() const;  ///< throws InputError naming the bad field
@@ -38,6 +45,10 @@ struct WheelRailExactSolution {
   /// Approach of the bodies along the contact normal [m], beyond the least undeformed distance
   /// in O's cross-section (for a quadratic gap: Hertz's delta).
   double approach = 0.0;
+  /// With WheelRailExactOptions::radius_variation: the longitudinal creepage added to each row
+  /// of the grid (its lateral coordinate s, row j), the wheel's rolling radius departing from
+  /// its tangent at O; empty otherwise.
+  std::vector<double> row_vx;
   int normal_iterations = 0;       ///< iterations of the normal problem
   double contact_area = 0.0;       ///< contact elements times the element area [m^2]
   double adhesion_fraction = 0.0;  ///< adhesion elements / contact elements [-]
