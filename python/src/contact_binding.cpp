@@ -166,12 +166,20 @@ void bind_contact(py::module_& m) {
       py::arg("inputs"));
   m.def(
       "wear",
-      [](const py::dict& kw, const std::string& law_name, const std::string& model_name,
-         int cells) {
+      [](const py::dict& kw, const std::string& law_name, const std::string& model_name, int cells,
+         int exact_grid, double exact_margin, bool exact_radius_variation) {
+        const cli::ExactPatchOptions exact{exact_grid, exact_margin, exact_radius_variation};
         const cli::ContactInputs in = contact_inputs(kw);
         cli::check_wear_grid(in.motion.speed, cells);
         const wear::WearLaw law = cli::wear_law_named(law_name, "");
-        const tangential::ContactModel model = cli::contact_model_named(model_name);
+        // "exact": Kalker's exact theory on the gap (`wear --exact`), else a contact model.
+        const bool exact_chain = model_name == "exact";
+        std::optional<tangential::ContactModel> model;
+        if (exact_chain) {
+          cli::check_exact_patch_options(exact);
+        } else {
+          model = cli::contact_model_named(model_name);
+        }
         std::optional<cli::SolvedContact> solved;
         std::vector<cli::ModelWear> wear;
         {
@@ -181,7 +189,9 @@ void bind_contact(py::module_& m) {
           // fails with it).
           if (contactgeom::carries_load(solved->contact.status))
             for (const auto& p : solved->contact.patches)
-              wear.push_back(cli::model_wear(in, solved->pair, p, model, law, cells, true));
+              wear.push_back(exact_chain
+                                 ? cli::exact_wear(in, solved->pair, p, law, exact)
+                                 : cli::model_wear(in, solved->pair, p, *model, law, cells, true));
         }
         py::dict out = contact_dict(*solved);
         py::list patches = out["patches"];
@@ -190,7 +200,8 @@ void bind_contact(py::module_& m) {
                                                : py::object(py::none());
         return out;
       },
-      py::arg("inputs"), py::arg("law"), py::arg("model"), py::arg("cells"));
+      py::arg("inputs"), py::arg("law"), py::arg("model"), py::arg("cells"), py::arg("exact_grid"),
+      py::arg("exact_margin"), py::arg("exact_radius_variation"));
 }
 
 }  // namespace wheelwear::python

@@ -105,6 +105,33 @@ def test_wear_equals_the_command_line_and_its_depth_is_its_volume(cli):
     assert compared == len(expected["patches"]) > 0
 
 
+def test_wear_with_the_exact_chain_equals_wear_exact_on_the_command_line(cli):
+    # model="exact" is the row `wheelwear wear --exact` adds: the same solve, the same numbers.
+    expected = cli("wear", "--dy", 0.004, "--load", 55000, "--vx", 1e-3, "--phi", 0.1,
+                   "--exact", "--exact-grid", 30)
+    got = wheelwear.wear(dy=0.004, load=55000.0, vx=1e-3, phi=0.1, model="exact", exact_grid=30)
+    compared = 0
+    for mine, theirs in zip(got.patches, expected["patches"]):
+        exact = theirs["models"][-1]
+        assert exact["model"] == "exact"
+        w = mine.wear
+        for key in ("worn_volume_per_metre", "peak_depth_per_metre", "frictional_work", "Fx"):
+            assert w[key] == exact[key], key
+        # 30 x 30 elements, and the depth integrates to the worn volume.
+        assert w.tgamma.work.shape == (30 * 30,)
+        assert np.sum(w.depth.depth_per_metre) * 0.1e-3 == pytest.approx(
+            w.worn_volume_per_metre, rel=1e-9)
+        compared += 1
+    assert compared == len(expected["patches"]) > 0
+
+
+def test_wear_refuses_a_bad_exact_grid_as_the_command_line(cli):
+    with pytest.raises(ValueError) as error:
+        wheelwear.wear(dy=0.0, load=55000.0, model="exact", exact_grid=2)
+    assert str(error.value) == cli.error("wear", "--dy", "0", "--load", "55000", "--exact",
+                                         "--exact-grid", "2")
+
+
 def test_wear_refuses_a_bad_law_as_the_command_line(cli):
     with pytest.raises(ValueError) as error:
         wheelwear.wear(dy=0.0, load=55000.0, law="nope")

@@ -348,12 +348,21 @@ def wear(
     max_drop: Optional[float] = None,
     gauge_side: Optional[str] = None,
     smoothing: Optional[float] = None,
+    exact_grid: int = 40,
+    exact_margin: float = 1.3,
+    exact_radius_variation: bool = False,
 ) -> Any:
     """One wheel position's wear, as ``wheelwear wear``: the contact of :func:`contact`, each
     patch's tangential problem with the contact ``model`` (sdec, eql, eqe, eqe-shifted, hertz)
     on ``cells`` x ``cells`` FASTSIM cells at the creepages ``vx``, ``vy`` [-], ``phi`` [1/m]
     and friction ``mu``, the wear ``law`` (usfd: T gamma; archard: the KTH map) at speed ``V``
     [m/s]. Profile files are read as for :func:`contact`.
+
+    ``model="exact"`` is the exact chain of ``wheelwear wear --exact``: Kalker's exact theory on
+    the patch's undeformed distance, on ``exact_grid`` x ``exact_grid`` elements over
+    ``exact_margin`` times the patch (``tgamma`` then holds its elements), with
+    ``exact_radius_variation`` the wheel's rolling radius across the patch in the slip; the
+    reference for where the SDEC chain puts the wear (0.02-2 s per patch).
 
     A contact that carries no load (a flange climb, say) has no wear: its ``status`` and
     ``message`` say why and each patch's ``wear`` is None. Otherwise each patch has ``wear``
@@ -365,8 +374,9 @@ def wear(
     """
     args = dict(locals())
     law_name, model_name, n = args.pop("law"), args.pop("model"), args.pop("cells")
+    exact = (args.pop("exact_grid"), args.pop("exact_margin"), args.pop("exact_radius_variation"))
     kw = _contact_inputs(**args)
-    result = _records(_wheelwear.wear(kw, law_name, model_name, n))
+    result = _records(_wheelwear.wear(kw, law_name, model_name, n, *exact))
     _warn_all(result.warnings)
     return result
 

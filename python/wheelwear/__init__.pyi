@@ -169,6 +169,9 @@ def wear(
     max_drop: Optional[float] = ...,
     gauge_side: Optional[str] = ...,
     smoothing: Optional[float] = ...,
+    exact_grid: int = ...,
+    exact_margin: float = ...,
+    exact_radius_variation: bool = ...,
 ) -> Record: ...
 def curving(
     scene: Optional[PathLike] = ...,

@@ -319,7 +319,9 @@ TEST(WheelsetTable, DoesNotDependOnTheNumberOfThreads) {
     const auto a = one->contact(at(dy, 52e3, 57e3));
     const auto b = many.contact(at(dy, 52e3, 57e3));
     ASSERT_EQ(a.has_value(), b.has_value());
-    if (a) EXPECT_EQ(a->left.lateral_force, b->left.lateral_force);
+    if (a) {
+      EXPECT_EQ(a->left.lateral_force, b->left.lateral_force);
+    }
   }
 }
 

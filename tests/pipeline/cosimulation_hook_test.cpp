@@ -78,9 +78,10 @@ TEST_F(HookRunTest, TheHooksCollectiveWearsAsTheSameCollectiveGivenDirectly) {
     }
     // Called at every step but the last, which only records the final profile.
     EXPECT_EQ(b.read_step_array(step, "hook/called").at(0), step < 2 ? 1.0 : 0.0);
-    if (step < 2)
+    if (step < 2) {
       EXPECT_EQ(b.read_text(ResultsFile::step_group(step) + "/hook/output").value_or(""),
                 kStatesCsv);
+    }
     EXPECT_EQ(b.read_step_array(step, "collective/weight").size(), 4u);
   }
   EXPECT_GT(compared, 1000u);

@@ -145,8 +145,9 @@ TEST(WheelsetProfiles, BackwardPiecesRunTheReversedRoute) {
   for (const RouteCase& c : plan.cases) {
     total += c.share;
     // A curve's name is the forward way's: backwards its label says the hand it has now.
-    if (c.reversed && c.curve.running.curve_radius < 0.0)
+    if (c.reversed && c.curve.running.curve_radius < 0.0) {
       EXPECT_NE(c.label.find("(left-hand this way)"), std::string::npos) << c.label;
+    }
   }
   for (const DynamicPiece& p : plan.pieces) {
     total += p.share;
