@@ -72,7 +72,8 @@ tangential::WheelRailExactSolution exact_description(const ContactInputs& in,
 }
 
 // The worn depth of `out.solution`'s cells on 0.1 mm bins of the wheel's arc length reaching
-// `reach` [m] either side of O, weighted by the patch's share; its summary.
+// `reach` [m] either side of O, and its summary; then, for a patch of a blend, the forces and
+// work of its description weighted by its share (the wear is weighted as it is placed).
 void place_on_wheel(const ContactInputs& in, const contactgeom::WheelRailPatch& p,
                     const wear::WearLaw& law, double reach, ModelWear& out) {
   const double ds = 0.1e-3;
@@ -81,15 +82,10 @@ void place_on_wheel(const ContactInputs& in, const contactgeom::WheelRailPatch& 
   wear::accumulate_wear(*out.solution.fields, in.motion.speed, law, {p.s_wheel, p.rolling_radius},
                         p.share, out.distribution);
   out.summary = wear::summarise(out.distribution);
-}
-
-// A patch of a blend: its description's forces and work weighted by its share (its wear
-// already is, place_on_wheel).
-void weigh_by_share(double share, ModelWear& out) {
-  if (share == 1.0) return;
-  out.solution.forces = tangential::weighted(out.solution.forces, share);
-  out.solution.frictional_work *= share;
-  for (double& w : out.solution.fields->work) w *= share;
+  if (p.share == 1.0) return;
+  out.solution.forces = tangential::weighted(out.solution.forces, p.share);
+  out.solution.frictional_work *= p.share;
+  for (double& w : out.solution.fields->work) w *= p.share;
 }
 
 }  // namespace
@@ -111,15 +107,15 @@ ModelWear exact_wear(const ContactInputs& in, const contactgeom::WheelRailPair& 
   const tangential::Creepages creepages = in.creepages_at(pair, p);
   const tangential::WheelRailExactSolution e = exact_description(in, pair, p, creepages, options);
   if (e.rolling.status != tangential::ExactStatus::converged) {
-    throw std::runtime_error("--exact: Kalker's exact theory did not converge on the patch at " +
-                             std::to_string(-p.y_wheel * 1e3) + " mm: " + e.rolling.message +
-                             " (try --exact-grid or --exact-margin)");
+    throw std::runtime_error(std::string("--exact: Kalker's exact theory on the patch at y = ") +
+                             std::to_string(-p.y_wheel * 1e3) +
+                             " mm on the wheel: " + tangential::status_name(e.rolling.status) +
+                             ", " + e.rolling.message + " (a finer --exact-grid may converge)");
   }
   ModelWear out{"exact", tangential::exact_tangential_solution(e.rolling, creepages), {}, {}};
   // Its grid, margin times the patch about the patch's middle, and 2 mm beyond.
   const double reach = options.margin * (p.measures.W1 + p.measures.W2) + 2e-3;
   place_on_wheel(in, p, law, reach, out);
-  weigh_by_share(p.share, out);
   return out;
 }
 
@@ -144,7 +140,6 @@ ModelWear model_wear(const ContactInputs& in, const contactgeom::WheelRailPair& 
       {}};
   // A grid on the wheel wide enough for every model's region around O.
   place_on_wheel(in, p, law, 2.0 * std::max(p.sdec.b, hertz ? hertz->b : 0.0) + 2e-3, out);
-  weigh_by_share(p.share, out);
   return out;
 }
 

@@ -183,12 +183,27 @@ TEST(WearExact, AddsTheExactChainAfterTheModels) {
   const tangential::Creepages creepages{1e-3, 0.0, 0.1};
   const tangential::ExactSolution s =
       tangential::wheel_rail_exact(pair, pose, contact.patches[0], creepages, 0.3, options).rolling;
-  // The same solve, its forces summed again over the cells: equal to rounding.
+  // The same solve on the same patch (the contact found again in this process): equal to
+  // rounding.
   EXPECT_NEAR(*json_number(exact, "Fx"), s.forces.Fx, 1e-9 * std::abs(s.forces.Fx));
   EXPECT_NEAR(*json_number(exact, "Fy"), s.forces.Fy, 1e-9 * std::abs(s.forces.Fy));
   const double rigid_slip_work = -(s.forces.Fx * creepages.vx + *s.forces.Mz * creepages.phi);
   EXPECT_NEAR(*json_number(exact, "frictional_work"), rigid_slip_work, 1e-9 * rigid_slip_work);
   EXPECT_GT(*json_number(exact, "worn_volume_per_metre"), 0.0);
+
+  // With the rolling radius across the patch: the work is the rigid slip's, its rows' creepage
+  // included (row_creepage_work).
+  const auto radius = run_wheelwear(args + " --exact --exact-grid 30 --exact-radius-variation");
+  ASSERT_EQ(radius.exit_code, 0) << radius.err;
+  const std::string varied = radius.out.substr(radius.out.find("\"model\": \"exact\""));
+  options.radius_variation = true;
+  const tangential::ExactSolution r =
+      tangential::wheel_rail_exact(pair, pose, contact.patches[0], creepages, 0.3, options).rolling;
+  EXPECT_NE(r.row_creepage_work, 0.0);
+  const double varied_work =
+      -(r.forces.Fx * creepages.vx + *r.forces.Mz * creepages.phi) + r.row_creepage_work;
+  EXPECT_NEAR(*json_number(varied, "frictional_work"), varied_work, 1e-9 * varied_work);
+  EXPECT_NE(json_number(varied, "Fx"), json_number(exact, "Fx"));
 }
 
 TEST(WearExact, RefusesItsOptionsWithoutIt) {

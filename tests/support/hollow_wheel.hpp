@@ -4,7 +4,8 @@
 // that the worn tread follows the rail's head up to a residual gap t^2 / (2 relative_radius)
 // about the new wheel's contact point (t the lateral offset from it). Heavy-haul wheels wear so
 // (a hollow of 2-3 mm; patches up to 35 mm wide); with depth 2 mm and 3 m it carries 150 kN
-// on a patch 34 mm wide at the centred position.
+// on a patch 37 mm wide at the centred position (Hertz-calibrated strips; 34 mm with
+// Kik-Piotrowski's fixed 0.55).
 
 #include <algorithm>
 #include <cmath>

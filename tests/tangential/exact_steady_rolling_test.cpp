@@ -126,6 +126,37 @@ TEST(ExactSteadyRolling, GapPathAgreesWithPrescribedHertzPressure) {
   RecordProperty("dFy_over_muN", std::to_string((gap.forces.Fy - sdec.forces.Fy) / scale));
 }
 
+// A longitudinal creepage added to every row (exact_rolling's row_vx) is a shift of vx: the
+// same rigid slip in every element, so the same forces (to rounding, the sums taken in another
+// order), and the rigid slip's work it adds, row_creepage_work, is -k Fx, which with the
+// creepages at O gives the work of the shifted creepages.
+TEST(ExactSteadyRolling, AUniformRowCreepageIsAShiftOfVx) {
+  const double radius = 0.3, force = 30e3;
+  const SdecGridOptions options = grid(24);
+  const ElementGrid g = sdec_grid({4e-3, 4e-3, 0.0}, options);
+  std::vector<double> h(static_cast<std::size_t>(g.size()));
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i)
+      h[static_cast<std::size_t>(j * g.nx + i)] =
+          (g.x(i) * g.x(i) + g.y(j) * g.y(j)) / (2 * radius);
+  const ContactLoad load{force, 0.3};
+  constexpr double kShift = 4e-4;
+  const Creepages at_O{1e-4, 2e-4, 0.5};
+  const std::vector<double> rows(static_cast<std::size_t>(g.ny), kShift);
+  const ExactSolution with_rows = exact_rolling(g, h, at_O, load, kSteel, {}, rows);
+  const ExactSolution shifted =
+      exact_rolling(g, h, {at_O.vx + kShift, at_O.vy, at_O.phi}, load, kSteel);
+  ASSERT_EQ(with_rows.status, ExactStatus::converged) << with_rows.message;
+  const double scale = load.mu * force;
+  EXPECT_NEAR(with_rows.forces.Fx / scale, shifted.forces.Fx / scale, 1e-9);
+  EXPECT_NEAR(with_rows.forces.Fy / scale, shifted.forces.Fy / scale, 1e-9);
+  EXPECT_NEAR(with_rows.row_creepage_work, -kShift * with_rows.forces.Fx, 1e-9 * scale * kShift);
+  EXPECT_EQ(shifted.row_creepage_work, 0.0);
+  // Rows of the wrong number are refused.
+  EXPECT_THROW(exact_rolling(g, h, at_O, load, kSteel, {}, std::vector<double>(3, 0.0)),
+               InputError);
+}
+
 // Robustness: random patches (a/b = 0.2 ... 5, |psi| <= 0.8), creepages (1e-4 ... 1e-2, spin
 // up to 10 1/m), loads, friction and Poisson's ratios all converge, and no force exceeds
 // Coulomb's bound mu times the grid's normal force. (In development 400 such cases on 30 x 30

@@ -264,17 +264,14 @@ TEST(WheelRailExact, RadiusVariationIsTheTreadsDepartureFromItsTangentAtO) {
       (profiles::s1002_nominal_z(y_O + kStep) - profiles::s1002_nominal_z(y_O - kStep)) /
       (2.0 * kStep);
   double largest = 0.0;
-  int compared = 0;
   for (int j = 0; j < s.rolling.grid.ny; ++j) {
-    const double t = -s.rolling.grid.y(j) * std::cos(p.contact_angle);
+    const double t = -s.rolling.grid.y(j) / std::sqrt(1.0 + slope * slope);  // along the tangent
     const double departure = profiles::s1002_nominal_z(y_O + t) - z_O - slope * t;
     const double expected = -departure / p.rolling_radius;
     EXPECT_NEAR(s.row_vx[static_cast<std::size_t>(j)], expected, 2e-9) << "row " << j;
     largest = std::max(largest, std::abs(expected));
-    ++compared;
   }
   EXPECT_GT(largest, 1e-3);  // the comparison spans a real departure
-  EXPECT_EQ(compared, 80);
 
   // Off, the rows add nothing and the solution is the planar one.
   options.radius_variation = false;

@@ -64,7 +64,7 @@ ExactChain exact_chain(const contactgeom::WheelRailPair& pair, const contactgeom
   tangential::WheelRailExactOptions grid;
   grid.nx = 80;   // 0.24 mm along x over 1.4 times the 14 mm length (40: 0.1 mm off in
                   // the centroid, 1 % in the work)
-  grid.ny = 160;  // 0.3 mm across 1.4 times the 34 mm width
+  grid.ny = 160;  // 0.3 mm across 1.4 times the 37 mm width
   grid.margin = 1.4;
   const tangential::WheelRailExactSolution e =
       tangential::wheel_rail_exact(pair, {}, p, creepages, kMu, grid);
@@ -80,14 +80,16 @@ double relative(double value, double reference) {
 
 TEST(ConformalPatch, SdecChainPlacesTheWearOfAWidePatchWhereTheExactChainDoes) {
   const contactgeom::WheelRailPair pair(testing::hollow_worn_s1002(), profiles::rail_60e1());
-  const contactgeom::WheelRailContact c = contactgeom::solve_wheel_rail(pair, {}, kLoad);
+  contactgeom::WheelRailOptions calibrated;  // the runs' normal method
+  calibrated.kp.penetration = contactgeom::KpPenetration::hertz_calibrated;
+  const contactgeom::WheelRailContact c =
+      contactgeom::solve_wheel_rail(pair, {}, kLoad, calibrated);
   ASSERT_EQ(c.status, contactgeom::WheelRailStatus::ok) << c.message;
   ASSERT_EQ(c.patches.size(), 1u);
   const contactgeom::WheelRailPatch& p = c.patches[0];
   ASSERT_GT(p.measures.width, 30e-3);  // the case is the wide conformal patch it stands for
 
   // A curving wheel's creepages, and pure spin (a free-rolling wheel on its tread).
-  int compared = 0;
   for (const Creepages& creepages : {Creepages{1e-3, 1e-3, 0.1}, Creepages{0.0, 0.0, 0.05}}) {
     const std::string label =
         "vx " + std::to_string(creepages.vx) + " phi " + std::to_string(creepages.phi);
@@ -95,29 +97,27 @@ TEST(ConformalPatch, SdecChainPlacesTheWearOfAWidePatchWhereTheExactChainDoes) {
     const ChainWear best = sdec_chain(tangential::Method::best, p, creepages);
     const ExactChain exact = exact_chain(pair, p, creepages);
     const WearSummary& e = exact.chain.wear;
-    // Normal problem (measured +12 %, -11 %): the strips' semi-elliptic pressure on a patch
-    // whose exact pressure is flatter across it.
-    EXPECT_LT(std::abs(relative(p.measures.area, exact.area)), 0.15) << label;
-    EXPECT_LT(std::abs(relative(p.pmax, exact.pmax)), 0.15) << label;
+    // Normal problem (measured -0.5 %, +0.2 %): over this flat gap the calibrated strips
+    // carry the load as the exact normal solve does; 5 %, the bound of the flank's sweep.
+    EXPECT_LT(std::abs(relative(p.measures.area, exact.area)), 0.05) << label;
+    EXPECT_LT(std::abs(relative(p.pmax, exact.pmax)), 0.05) << label;
     // Where the wear lands (best spreads its work as FASTSIM-SDEC does): the centroid within
-    // 1 mm across the 34 mm band (measured 0.37 and 0.75 mm), the band within 15 % (-11 %,
-    // -7 %).
+    // 1 mm across the 37 mm band (measured 0.63 and 0.21 mm), the band within 5 % (-2.8 %,
+    // +1.4 %).
     EXPECT_LT(std::abs(fastsim.wear.centroid_s - e.centroid_s), 1e-3) << label;
-    EXPECT_LT(std::abs(relative(fastsim.wear.band_width, e.band_width)), 0.15) << label;
-    // How much: with the book of tables' exact totals within 12 % (+9.0 %, -2.2 %), both in
-    // frictional work and in worn volume; FASTSIM-SDEC alone within 10 % on the curving wheel
-    // (-4.6 %) and 35 % under pure spin (-30 %): its spin error over a wide patch.
-    const double fastsim_bound = creepages.vx != 0.0 ? 0.10 : 0.35;
+    EXPECT_LT(std::abs(relative(fastsim.wear.band_width, e.band_width)), 0.05) << label;
+    // How much: with the book of tables' exact totals within 5 % (+2.5 %, +0.6 %), both in
+    // frictional work and in worn volume; FASTSIM-SDEC alone within 15 % on the curving wheel
+    // (-9.1 %) and 35 % under pure spin (-27 %): its spin error over a wide patch.
+    const double fastsim_bound = creepages.vx != 0.0 ? 0.15 : 0.35;
     EXPECT_LT(std::abs(relative(fastsim.frictional_work, exact.chain.frictional_work)),
               fastsim_bound)
         << label;
     EXPECT_LT(std::abs(relative(fastsim.wear.volume_per_metre, e.volume_per_metre)), fastsim_bound)
         << label;
-    EXPECT_LT(std::abs(relative(best.frictional_work, exact.chain.frictional_work)), 0.12) << label;
-    EXPECT_LT(std::abs(relative(best.wear.volume_per_metre, e.volume_per_metre)), 0.12) << label;
-    compared += 8;
+    EXPECT_LT(std::abs(relative(best.frictional_work, exact.chain.frictional_work)), 0.05) << label;
+    EXPECT_LT(std::abs(relative(best.wear.volume_per_metre, e.volume_per_metre)), 0.05) << label;
   }
-  EXPECT_EQ(compared, 16);
 }
 
 }  // namespace

@@ -47,7 +47,8 @@ TangentialSolution exact_tangential_solution(const ExactSolution& exact,
     }
   }
   work *= g.area();
-  const double rigid = std::max(0.0, rigid_slip_work(exact.forces, creepages));
+  const double rigid =
+      std::max(0.0, rigid_slip_work(exact.forces, creepages) + exact.row_creepage_work);
   if (work > 0.0) {
     const double factor = rigid / work;
     for (std::vector<double>* v : {&f.sx, &f.sy, &f.slip_norm, &f.work})

@@ -41,7 +41,7 @@ void solve_and_sum(const Creepages& v, std::span<const double> row_vx, double mu
   CreepForces& f = solution.forces;
   f = CreepForces{};
   double mz = 0.0;
-  solution.normal_force = solution.frictional_work = 0.0;
+  solution.normal_force = solution.frictional_work = solution.row_creepage_work = 0.0;
   solution.contact_elements = solution.adhesion_elements = solution.slip_elements = 0;
   for (int j = 0; j < grid.ny; ++j)
     for (int i = 0; i < grid.nx; ++i) {
@@ -56,6 +56,8 @@ void solve_and_sum(const Creepages& v, std::span<const double> row_vx, double mu
                                     std::hypot(solution.sx[e], solution.sy[e]) * da;
       }
       solution.normal_force += solution.pn[e] * da;
+      if (!row_vx.empty())
+        solution.row_creepage_work -= row_vx[static_cast<std::size_t>(j)] * solution.px[e] * da;
       f.Fx += solution.px[e] * da;
       f.Fy += solution.py[e] * da;
       mz += (grid.x(i) * solution.py[e] - grid.y(j) * solution.px[e]) * da;

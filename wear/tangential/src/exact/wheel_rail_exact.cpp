@@ -74,7 +74,7 @@ void require_inside(const ElementGrid& grid, const std::vector<double>& pn,
       << " mm, s " << grid.y_min * 1e3 << " ... " << (grid.y_min + grid.ny * grid.dy) * 1e3
       << " mm from O): the patch is larger than the Kik-Piotrowski patch the grid was sized "
          "from; increase margin (now "
-      << options.margin << "; `wheelwear contact --exact-margin`)";
+      << options.margin << "; --exact-margin on the command line)";
     throw InputError(m.str());
   }
   for (int j = 0; j < grid.ny; ++j)
@@ -94,21 +94,23 @@ void require_inside(const ElementGrid& grid, const std::vector<double>& pn,
 }
 
 // The longitudinal creepage each row of `grid` adds where the wheel's rolling radius departs
-// from its tangent at O: a material point at lateral offset t from O has the radius
-// r_O + z(y_O + t) - z(y_O) (the wheel's z points away from its axle), and the planar theory
-// keeps only the linear part z'(y_O) t, which the spin creepage carries. The rest slows (or
-// speeds) that row's surface: vx(s) - vx = -omega (r(s) - r_lin(s)) / V = -departure / r_O.
-// Row j lies at t = -s_j cos(delta) (s towards the gauge side, the profile's -y); rows off the
-// wheel add nothing (they have no surface).
+// from its tangent at O: a material point at lateral offset t from O (in the wheel's unrolled
+// profile, where a roll does not change the radius) has the radius r_O + z(y_O + t) - z(y_O)
+// (the wheel's z points away from its axle), and the planar theory keeps only the linear part
+// z'(y_O) t, which the spin creepage carries. The rest slows (or speeds) that row's surface:
+// vx(s) - vx = -omega (r(s) - r_lin(s)) / V = -departure / r_O (omega r_O = V to the order of
+// the creepage). The contact plane is the wheel's tangent at O, so row j, at s_j along it
+// towards the gauge side (the profile's -y), lies at t = -s_j / sqrt(1 + z'(y_O)^2); rows off
+// the wheel add nothing (they have no surface).
 std::vector<double> radius_departure_creepage(const profiles::Profile& wheel, double y_O,
-                                              double rolling_radius, double c,
-                                              const ElementGrid& grid) {
+                                              double rolling_radius, const ElementGrid& grid) {
   const auto at_O = wheel.surface_at(y_O);
   require(at_O && std::isfinite(at_O->dz_dy), "patch.y_wheel", -y_O,
           "the wheel's surface must have a finite slope at O for radius_variation");
+  const double cos_tangent = 1.0 / std::sqrt(1.0 + at_O->dz_dy * at_O->dz_dy);
   std::vector<double> row_vx(static_cast<std::size_t>(grid.ny), 0.0);
   for (int j = 0; j < grid.ny; ++j) {
-    const double t = -grid.y(j) * c;
+    const double t = -grid.y(j) * cos_tangent;
     const auto z = wheel.z_at(y_O + t);
     if (!z) continue;
     const double departure = *z - at_O->z - at_O->dz_dy * t;
@@ -213,8 +215,7 @@ WheelRailExactSolution wheel_rail_exact(const contactgeom::WheelRailPair& pair,
   if (options.radius_variation) {
     require(patch.rolling_radius > 0.0, "patch.rolling_radius", patch.rolling_radius,
             "must be positive (metres) for radius_variation");
-    out.row_vx =
-        radius_departure_creepage(pair.wheel, -patch.y_wheel, patch.rolling_radius, c, grid);
+    out.row_vx = radius_departure_creepage(pair.wheel, -patch.y_wheel, patch.rolling_radius, grid);
   }
   out.rolling = exact_rolling(grid, out.h, creepages, load, material, options.solver, out.row_vx);
   out.contact_area = out.rolling.contact_elements * grid.area();

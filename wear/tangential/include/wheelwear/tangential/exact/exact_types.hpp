@@ -90,6 +90,9 @@ struct ExactSolution {
   int slip_elements = 0;            ///< contact elements that slip
   double normal_force = 0.0;        ///< sum of pn dA of the grid [N]
   double frictional_work = 0.0;     ///< sum of |p| |s| dA: frictional work per rolled distance [N]
+  /// The rigid-slip work of a per-row longitudinal creepage (exact_rolling's row_vx) beyond that
+  /// of the creepages at O, -sum_j row_vx_j Fx_j over the rows' forces Fx_j [N]; 0 without.
+  double row_creepage_work = 0.0;
   ExactStatus status = ExactStatus::no_contact;  ///< numerical outcome
   int iterations = 0;                            ///< tangential iterations (sweeps)
   double change = 0.0;                           ///< last rms|p_k - p_(k-1)| / rms|p_k| [-]
