@@ -25,8 +25,8 @@ struct ModelWear {
 struct ExactPatchOptions {
   int grid = 40;        ///< elements per side (--exact-grid)
   double margin = 1.3;  ///< the grid over the patch (--exact-margin)
-  bool radius_variation =
-      false;  ///< the rolling radius across the patch (--exact-radius-variation)
+  /// The rolling radius across the patch in the slip (--exact-radius-variation).
+  bool radius_variation = false;
 };
 
 /// --exact-radius-variation's help (contact, wear).
