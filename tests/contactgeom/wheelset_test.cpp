@@ -8,9 +8,8 @@
 #include <cmath>
 #include <string>
 
-#include "support/csv_table.hpp"
+#include "support/reference_profiles.hpp"
 #include "wheelwear/core/input_error.hpp"
-#include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 #include "wheelwear/profiles/track.hpp"
@@ -37,11 +36,8 @@ WheelsetState loaded(double dy) {
 
 // Both wheels of a wheelset worn as in tests/data/profiles/`file`, on 60E1 1:40.
 WheelsetOnTrack worn_on_60e1(const std::string& file) {
-  profiles::LoadOptions options;
-  options.read.body = profiles::Body::wheel;
-  const profiles::Profile worn =
-      profiles::load_profile(testing::test_data("profiles/" + file), options).profile;
-  const WheelRailPair pair(worn, profiles::rail_60e1({.inclination = std::atan(1.0 / 40.0)}));
+  const WheelRailPair pair(testing::worn_wheel(file),
+                           profiles::rail_60e1({.inclination = std::atan(1.0 / 40.0)}));
   return {pair, pair};
 }
 

@@ -16,6 +16,13 @@ inline profiles::Profile load_reference_profile(const std::string& file, profile
   return profiles::load_profile(test_data("contact/profiles/" + file), options).profile;
 }
 
+/// A wheel worn by this program, tests/data/profiles/`file` (y, z in mm).
+inline profiles::Profile worn_wheel(const std::string& file) {
+  profiles::LoadOptions options;
+  options.read.body = profiles::Body::wheel;
+  return profiles::load_profile(test_data("profiles/" + file), options).profile;
+}
+
 /// The pair of CONTACT's set d, built once.
 inline const contactgeom::WheelRailPair& benchmark_pair() {
   static const contactgeom::WheelRailPair pair(

@@ -14,6 +14,7 @@
 
 #include "standard_wheelset.hpp"
 #include "support/csv_table.hpp"
+#include "support/reference_profiles.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/vehicle/vehicle_file.hpp"
 
@@ -23,6 +24,7 @@ namespace {
 using testing::four;
 using testing::standard_wheelset;
 using wheelwear::testing::test_data;
+using wheelwear::testing::worn_wheel;
 
 SteadyCurve curve_of(double radius, double cant, double speed) {
   SteadyCurve c;
@@ -151,13 +153,6 @@ TEST(QuasiStaticCurving, AtTheBalanceSpeedBothWheelsCarryTheSameLoad) {
     }
   }
   EXPECT_EQ(compared, 3 * 4);
-}
-
-// A wheel worn by this program (tests/data/profiles/`file`).
-profiles::Profile worn_wheel(const std::string& file) {
-  profiles::LoadOptions options;
-  options.read.body = profiles::Body::wheel;
-  return profiles::load_profile(test_data("profiles/" + file), options).profile;
 }
 
 // A worn wheel (tests/data/profiles/s1002_worn_33200km.csv: its tread worn into bands, its flank

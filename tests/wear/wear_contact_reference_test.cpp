@@ -46,6 +46,18 @@ Location locate(const std::map<double, double>& power) {
   return out;
 }
 
+// Frictional power per unit lateral width [W/m] of a solution's cells, strip by strip, against
+// the strip's lateral position from O [m].
+std::map<double, double> power_per_width(const CellFields& f, double speed) {
+  std::map<double, double> power;
+  for (int j = 0; j < f.ny; ++j) {
+    double line = 0.0;
+    for (int i = 0; i < f.nx; ++i) line += f.work[static_cast<std::size_t>(j) * f.nx + i] * f.dx[j];
+    power[f.strip_y[static_cast<std::size_t>(j)]] = line * speed;
+  }
+  return power;
+}
+
 // Our model's frictional power per unit lateral width [W/m] against the lateral position
 // from O [m], for the creepages CONTACT used (moved from its reference point to O).
 std::map<double, double> model_power(ContactModel model, const contactgeom::WheelRailPatch& p,
@@ -58,14 +70,7 @@ std::map<double, double> model_power(ContactModel model, const contactgeom::Whee
   options.fastsim.cell_fields = true;
   const TangentialSolution s =
       solve_patch(mp.method, mp.region, at_O, {p.normal_force, 0.35}, {80e9, 0.25}, options);
-  std::map<double, double> power;
-  const CellFields& f = *s.fields;
-  for (int j = 0; j < f.ny; ++j) {
-    double line = 0.0;
-    for (int i = 0; i < f.nx; ++i) line += f.work[static_cast<std::size_t>(j) * f.nx + i] * f.dx[j];
-    power[f.y[static_cast<std::size_t>(j) * f.nx]] = line * speed;
-  }
-  return power;
+  return power_per_width(*s.fields, speed);
 }
 
 // The exact chain's frictional power per unit lateral width [W/m] against the lateral
@@ -80,15 +85,7 @@ std::map<double, double> exact_power(const contactgeom::WheelRailPair& pair,
   grid.margin = 2.5;  // the exact patch at y_ws = -2 reaches twice the strips' width
   const WheelRailExactSolution e = wheel_rail_exact(pair, pose, p, at_O, 0.35, grid);
   EXPECT_EQ(e.rolling.status, ExactStatus::converged) << e.rolling.message;
-  const TangentialSolution s = exact_tangential_solution(e.rolling, at_O);
-  std::map<double, double> power;
-  const CellFields& f = *s.fields;
-  for (int j = 0; j < f.ny; ++j) {
-    double line = 0.0;
-    for (int i = 0; i < f.nx; ++i) line += f.work[static_cast<std::size_t>(j) * f.nx + i] * f.dx[j];
-    power[f.strip_y[static_cast<std::size_t>(j)]] = line * speed;
-  }
-  return power;
+  return power_per_width(*exact_tangential_solution(e.rolling, at_O).fields, speed);
 }
 
 TEST(WearVersusContact, FrictionalWorkLandsWhereExactTheoryPutsIt) {
