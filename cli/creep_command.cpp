@@ -34,6 +34,7 @@ struct CreepArgs {
   std::string scheme = "kalker";
   std::optional<double> target_error;  // fraction of mu N; chooses nx = ny (grid_choice.hpp)
   int exact_grid = 40;                 // --method exact: elements per side of the grid
+  std::string beyond_table = "exact";  // --method best outside the table
   bool json = false;
   // Options given on the command line (not their defaults), to refuse those that do not apply.
   const CLI::Option* nx = nullptr;
@@ -41,6 +42,7 @@ struct CreepArgs {
   const CLI::Option* bound_option = nullptr;
   const CLI::Option* scheme_option = nullptr;
   const CLI::Option* exact_grid_option = nullptr;
+  const CLI::Option* beyond_table_option = nullptr;
 };
 
 // The options as given on the command line (a default is "not given": an option that does not
@@ -55,12 +57,15 @@ CreepOptions creep_options(const CreepArgs& args) {
   if (given(args.scheme_option)) o.scheme = args.scheme;
   o.target_error = args.target_error;
   if (given(args.exact_grid_option)) o.exact_grid = args.exact_grid;
+  if (given(args.beyond_table_option)) o.beyond_table = args.beyond_table;
   return o;
 }
 
-void add_exact_json(JsonObject& out, const tangential::ExactSolution& s, int exact_grid,
-                    const tangential::Creepages& creepages) {
-  out.add("exact_grid", exact_grid)
+void add_exact_json(JsonObject& out, const tangential::ExactSolution& s,
+                    std::optional<int> exact_grid, const tangential::Creepages& creepages) {
+  if (exact_grid) out.add("exact_grid", *exact_grid);
+  out.add("exact_nx", s.grid.nx)
+      .add("exact_ny", s.grid.ny)
       .add("status", tangential::status_name(s.status))
       .add("iterations", s.iterations)
       .add("adhesion_elements", s.adhesion_elements)
@@ -75,8 +80,8 @@ void add_exact_json(JsonObject& out, const tangential::ExactSolution& s, int exa
   if (!s.message.empty()) out.add("message", s.message);
 }
 
-void print_exact(const tangential::ExactSolution& s, int exact_grid) {
-  std::printf("grid     %d x %d elements over 1.02 times the patch\n", exact_grid, exact_grid);
+void print_exact(const tangential::ExactSolution& s) {
+  std::printf("grid     %d x %d elements over 1.02 times the patch\n", s.grid.nx, s.grid.ny);
   std::printf("status   %s after %d iterations%s%s\n", tangential::status_name(s.status),
               s.iterations, s.message.empty() ? "" : ": ", s.message.c_str());
   std::printf("contact  %d elements: %d adhere (%.1f %%), %d slip\n", s.contact_elements,
@@ -98,7 +103,7 @@ void run_creep(const CreepArgs& args) {
   const tangential::CreepForces& forces = s.forces;
   const bool tabled = method == tangential::Method::table || method == tangential::Method::best;
   // For table and best: which method gave the forces.
-  const std::string source = s.from_table ? "table" : "fastsim-sdec";
+  const std::string source = s.from_table ? "table" : s.exact ? "exact" : "fastsim-sdec";
   const std::string table_outside = s.table_outside.value_or("");
   const bool has_cells = s.cells > 0 || (tangential::has_cell_fields(method) && !s.from_table);
   const double mu_n = args.load.mu * args.load.N;
@@ -122,8 +127,13 @@ void run_creep(const CreepArgs& args) {
           .add("ny", chosen->ny)
           .add("predicted_error", chosen->predicted_error);
     }
-    if (s.exact)
-      add_exact_json(out, *s.exact, solver.options().exact_grid_or_default(), args.creepages);
+    if (s.exact) {
+      const std::optional<int> n =
+          method == tangential::Method::exact
+              ? std::optional<int>(solver.options().exact_grid_or_default())
+              : std::nullopt;
+      add_exact_json(out, *s.exact, n, args.creepages);
+    }
     out.add("extrapolated", forces.flags.any()).add_raw("warnings", json_strings(warnings));
     std::cout << out.str() << '\n';
     return;
@@ -133,7 +143,7 @@ void run_creep(const CreepArgs& args) {
   std::printf("Fy       %14.6g N   (Fy/muN = %+.6f)\n", forces.Fy, forces.Fy / mu_n);
   if (forces.Mz) std::printf("Mz       %14.6g N m (about O)\n", *forces.Mz);
   if (s.exact) {
-    print_exact(*s.exact, solver.options().exact_grid_or_default());
+    print_exact(*s.exact);
   } else if (has_cells) {
     std::printf("slip     %d of %d cells\n", s.slip_cells, s.cells);
   }
@@ -178,7 +188,9 @@ void add_creep_command(CLI::App& app) {
          "table (the book of exact-theory tables, data/creep_table.h5: Fx, Fy, Mz within 1 % of\n"
          "muN of the exact theory in about 1 us; a/b 0.2-5, |psi| <= 0.8, nu\n"
          "0.25-0.28; an error outside its range) or best (the table inside its\n"
-         "range, fastsim-sdec outside; the JSON's \"source\" says which)")
+         "range; outside it, as --beyond-table says, the exact theory on a grid that\n"
+         "resolves the patch's long axis (default) or fastsim-sdec; the JSON's \"source\"\n"
+         "says which)")
       ->check(CLI::IsMember(core::all_names(tangential::kMethodNames)));
   cmd->add_option("--a", args->sdec.a, "semi-length along x [m]")->required();
   cmd->add_option("--b", args->sdec.b, "semi-width along y [m]")->required();
@@ -219,6 +231,16 @@ void add_creep_command(CLI::App& app) {
                       "--method exact: elements per side of the grid, 8 ... 400 (cost grows as\n"
                       "N^2 log N times the iterations: 40 about 16 ms, 80 about 0.13 s)")
           ->capture_default_str();
+  args->beyond_table_option =
+      cmd->add_option(
+             "--beyond-table", args->beyond_table,
+             "--method best, for a patch outside the book of tables (a/b below 0.2 or above\n"
+             "5, |psi| above 0.8, other nu): exact (default: Kalker's exact theory, 40\n"
+             "elements across the patch and elements at most twice as long as wide, 0.02-2 s;\n"
+             "within about 0.5 % of muN of its converged answer at a/b = 10) or fastsim-sdec\n"
+             "(what runs use: well under 1 ms, up to 7 % of muN off on slender patches)")
+          ->check(CLI::IsMember(std::vector<std::string>(std::begin(kBeyondTableChoices),
+                                                         std::end(kBeyondTableChoices))));
   cmd->add_flag("--json", args->json, "print one JSON object (forces in N, normalised by muN)");
   cmd->callback([args] { run_creep(*args); });
 }

@@ -21,6 +21,26 @@ void check_options(const CreepOptions& o, tangential::Method method) {
   const auto refuse = [](bool given, const char* name, const char* why) {
     if (given) throw InputError(std::string(name) + " does not apply to --method exact: " + why);
   };
+  if (o.beyond_table && method != tangential::Method::best)
+    throw InputError(
+        "--beyond-table applies to --method best only: it says what answers "
+        "outside the book of tables");
+  if (o.beyond_table)
+    require_choice("--beyond-table", *o.beyond_table,
+                   {std::begin(kBeyondTableChoices), std::end(kBeyondTableChoices)});
+  if (method == tangential::Method::best && o.beyond_table.value_or("exact") == "exact") {
+    // No FASTSIM runs: the table answers inside its range, the exact theory outside.
+    const char* fastsim_option = o.nx             ? "--nx"
+                                 : o.ny           ? "--ny"
+                                 : o.target_error ? "--target-error"
+                                 : o.bound        ? "--bound"
+                                 : o.scheme       ? "--scheme"
+                                                  : nullptr;
+    if (fastsim_option)
+      throw InputError(std::string(fastsim_option) +
+                       " sets FASTSIM-SDEC, which --method best runs only with --beyond-table "
+                       "fastsim-sdec (by default the exact theory answers outside the table)");
+  }
   if (!exact && o.exact_grid)
     throw InputError("--exact-grid applies to --method exact only; FASTSIM's grid is --nx --ny");
   if (o.target_error && (o.nx || o.ny))
@@ -74,6 +94,7 @@ CreepSolver::CreepSolver(CreepOptions options) : options_(std::move(options)) {
   fastsim.scheme = named(tangential::kSchemeNames, options_.scheme, fastsim.scheme, "--scheme");
   // The exact theory on 1.02 times the patch (CONTACT's SDEC option).
   base_.exact_grid.nx = base_.exact_grid.ny = options_.exact_grid_or_default();
+  base_.exact_beyond_table = options_.beyond_table.value_or("exact") == "exact";
 }
 
 void check_creep_inputs(const contactgeom::Sdec& sdec, const tangential::Creepages& creepages,

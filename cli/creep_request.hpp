@@ -21,6 +21,9 @@ namespace wheelwear::cli {
 inline constexpr int kMinExactGrid = 8;
 inline constexpr int kMaxExactGrid = 400;
 
+/// What --beyond-table may name.
+inline constexpr const char* kBeyondTableChoices[] = {"exact", "fastsim-sdec"};
+
 /// The method and the options a user gave (an empty optional: not given, the default applies).
 struct CreepOptions {
   std::string method = "fastsim-sdec";
@@ -29,6 +32,9 @@ struct CreepOptions {
   std::optional<std::string> scheme;   ///< "kalker" (default) or "second-order"
   std::optional<double> target_error;  ///< fraction of mu N: chooses nx = ny (grid_choice.hpp)
   std::optional<int> exact_grid;       ///< method exact: elements per side (default 40)
+  /// Method best, for a patch outside the book of tables: "exact" (default; Kalker's exact
+  /// theory on a grid resolving the patch's long axis) or "fastsim-sdec" (as runs do).
+  std::optional<std::string> beyond_table;
 
   int exact_grid_or_default() const { return exact_grid.value_or(40); }
 };

@@ -139,6 +139,7 @@ PURE_SPIN_ROWS = [
     ("fastsim-elliptic", "kalker", [20, 200]),
     ("exact", None, [10, 20, 30, 40, 60, 80]),
     ("table", None, [0]),
+    ("best", None, [0]),
 ]
 
 
@@ -148,7 +149,7 @@ def validation_pure_spin():
     for method, scheme, grids in PURE_SPIN_ROWS:
         for n in grids:
             r = find(rows, "pure_spin", method, scheme, n)
-            own = "–" if method in ("linear-sdec", "she-sdec", "table") else percent(
+            own = "–" if method in ("linear-sdec", "she-sdec", "table", "best") else percent(
                 r["err_converged"])
             out.append([method_label(r), grid(r), duration(r["time_per_call_s"]),
                         percent(r["err_contact_fx"]), percent(r["err_contact_fy"]), own])
@@ -165,6 +166,7 @@ LINEAR_ROWS = [
     ("fastsim-eqe-shifted", "kalker", [20, 200]),
     ("exact", None, [20, 40, 80]),
     ("table", None, [0]),
+    ("best", None, [0]),
 ]
 
 
@@ -338,6 +340,44 @@ def vehicle_time_domain_study():
 # ---------------------------------------------------------------------------------------------
 
 # ---------------------------------------------------------------------------------------------
+# bench/results/slender_patches.csv (studies/slender_patch_study.cpp)
+
+
+def validation_slender_patches():
+    by_g = {}
+    for r in read_csv("slender_patches.csv"):
+        by_g.setdefault(float(r["a_over_b"]), {}).setdefault(r["grid"], []).append(r)
+    out = []
+    for g in sorted(by_g):
+        grids = by_g[g]
+        contact, aspect, fastsim = grids["contact"], grids["aspect"], grids["fastsim"]
+
+        def converged(rows):
+            return f"{sum(int(r['converged']) for r in rows)} of {len(rows)}"
+
+        def sweeps(rows):
+            values = sorted(int(r["sweeps"]) for r in rows)
+            return f"{values[len(values) // 2]} / {values[-1]}"
+
+        def seconds(rows):
+            values = sorted(float(r["seconds"]) for r in rows)
+            return f"{duration(values[len(values) // 2])} / {duration(values[-1])}"
+
+        def largest(rows):
+            return f"{percent(max(float(r['dF_vs_aspect_muN']) for r in rows))} %"
+
+        out.append([
+            sig(g, 2), f"{aspect[0]['nx']} × {aspect[0]['ny']}", converged(contact),
+            sweeps(contact), converged(aspect), sweeps(aspect), seconds(aspect), largest(contact),
+            largest(fastsim),
+        ])
+    return table(["a/b", "aspect grid", "80 × 80: converged", "sweeps (median / max)",
+                  "aspect grid: converged", "sweeps (median / max)", "time (median / max)",
+                  "80 × 80 vs aspect grid: largest ΔF / μN", "FASTSIM-SDEC 50 × 50 vs aspect grid"],
+                 out)
+
+
+# ---------------------------------------------------------------------------------------------
 # bench/results/python_overhead.csv (bench/python_overhead.py)
 
 
@@ -393,6 +433,7 @@ GENERATORS = {
     "readme-accuracy": ("README.md", readme_accuracy),
     "validation-pure-spin": ("docs/validation.md", validation_pure_spin),
     "validation-linear": ("docs/validation.md", validation_linear),
+    "validation-slender-patches": ("docs/validation.md", validation_slender_patches),
     "performance-target-error": ("docs/performance.md", performance_target_error),
     "performance-exact-grids": ("docs/performance.md", performance_exact_grids),
     "performance-grid-constants": ("docs/performance.md", performance_grid_constants),

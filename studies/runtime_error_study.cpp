@@ -11,13 +11,15 @@
 //                     solved by the library (tangential::exact_sdec, the SDEC pressure of Liu, Fu &
 //                     Bruni 2022, Eq. 4, prescribed as in CONTACT's reference runs; `wheelwear
 //                     creep --method exact`); table: the built-in book of exact-theory
-//                     tables (tangential::creep_table_forces)
+//                     tables (tangential::creep_table_forces); best: as `wheelwear creep
+//                     --method best` gives it, the table inside its range and the exact theory
+//                     on aspect_sdec_grid outside
 //     scheme          kalker | second-order (FASTSIM marching); none for the other methods
 //     bound           parabolic (Eq. 18 of Liu, Fu & Bruni 2022) | none (the non-FASTSIM
 //                     methods: exact applies Coulomb's |p| <= mu p_n itself)
 //     n               the grid is n x n cells (nx = ny = n; exact: elements over CONTACT's
 //                     potential contact area, 1.02 a by 1.02 b around O'); 0 for the grid-free
-//                     methods (linear-sdec, she-sdec, table)
+//                     methods (linear-sdec, she-sdec, table, best)
 //     cells           n*n
 //     case_set        pure_spin: the 17 cases phi > 0 of tests/data/contact/b_pure_spin_mx80.csv
 //                     (g = 1, psi = 0.6 with phi = 0.2 ... 1.6 1/m, and phi = 1 1/m with
@@ -141,7 +143,10 @@ struct Solver {
   tangential::FastsimScheme fastsim_scheme = tangential::FastsimScheme::kalker;
   tangential::TractionBound traction_bound = tangential::TractionBound::parabolic;
 
-  bool fastsim() const { return tangential::fastsim_variant(method).has_value(); }
+  // best answers with the table and the exact theory here (exact_beyond_table): no FASTSIM grid.
+  bool fastsim() const {
+    return method != tangential::Method::best && tangential::fastsim_variant(method).has_value();
+  }
   bool exact() const { return method == tangential::Method::exact; }
   bool grid() const { return fastsim() || exact(); }
   /// The CSV's names: the creep --method name, and the scheme and bound of a FASTSIM method
@@ -181,6 +186,7 @@ int solve_all(const Solver& s, int n, const CaseSet& set, std::vector<Forces>& o
   options.fastsim.scheme = s.fastsim_scheme;
   options.fastsim.bound = s.traction_bound;
   options.exact_grid.nx = options.exact_grid.ny = std::max(n, 2);
+  options.exact_beyond_table = true;  // best as `wheelwear creep` gives it
   int not_converged = 0;
   for (std::size_t k = 0; k < set.cases.size(); ++k) {
     const Case& c = set.cases[k];
@@ -272,6 +278,7 @@ std::vector<Solver> plotted_solvers() {
     solvers.push_back(s);
   solvers.push_back({Method::exact});
   solvers.push_back({Method::table});
+  solvers.push_back({Method::best});
   return solvers;
 }
 

@@ -41,6 +41,21 @@ def test_exact_equals_the_command_line(cli):
     assert got.status == expected["status"] == "converged"
 
 
+def test_best_beyond_the_table_equals_the_command_line(cli):
+    # a/b = 10 lies beyond the book of tables: the exact theory answers by default, FASTSIM-SDEC
+    # when asked, each as the command line gives it.
+    kw = dict(a=13.44e-3, b=1.344e-3, psi=0.3, phi=0.5, N=37830.0, mu=0.35)
+    exact = cli(*cli_args("best", **kw))
+    got = wheelwear.creep("best", **kw)
+    assert (got.Fx, got.Fy, got.Mz) == (exact["Fx"], exact["Fy"], exact["Mz"])
+    assert not got.from_table and got.status == "converged"
+    runs = wheelwear.creep("best", beyond_table="fastsim-sdec", **kw)
+    fastsim = wheelwear.creep("fastsim-sdec", **kw)
+    assert (runs.Fx, runs.Fy) == (fastsim.Fx, fastsim.Fy)
+    with pytest.raises(ValueError, match="--beyond-table"):
+        wheelwear.creep("fastsim-sdec", beyond_table="exact", **kw)
+
+
 def test_rigid_slip_work_is_minus_the_power_of_the_creep_forces():
     # -(Fx vx + Fy vy + Mz phi) by definition, for every method with a spin moment.
     vx, vy, phi = 1e-3, -4e-4, 0.6

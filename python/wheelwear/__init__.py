@@ -93,8 +93,9 @@ class CreepResult:
             it ("converged", or why not).
         cells, slip_cells: cells of the method's grid (FASTSIM) or contact elements (exact), and
             of them those that slip.
-        from_table: method best: True where the book of tables answered, False where
-            FASTSIM-SDEC did (the patch outside the table).
+        from_table: method best: True where the book of tables answered, False where the
+            patch lies outside it (the exact theory or FASTSIM-SDEC answered, as
+            ``beyond_table`` says).
         extrapolated: True where a coefficient table was used beyond its range.
         warnings: the implausible inputs (each once), as the command line warns of them.
     """
@@ -151,6 +152,7 @@ def creep(
     scheme: Optional[str] = None,
     target_error: Optional[float] = None,
     exact_grid: Optional[int] = None,
+    beyond_table: Optional[str] = None,
     threads: Optional[int] = None,
 ) -> CreepResult:
     """Creep forces of SDEC contact patches (Liu, Fu & Bruni 2022), as ``wheelwear creep``.
@@ -168,7 +170,9 @@ def creep(
     Methods (``method``): fastsim-sdec (default), fastsim-eql, fastsim-eqe,
     fastsim-eqe-shifted, fastsim-elliptic, linear-sdec, she-sdec (Shen-Hedrick-Elkins),
     table (the book of exact-theory tables: a/b 0.2-5, |psi| <= 0.8), best (the table inside its
-    range, fastsim-sdec outside) and exact (Kalker's exact theory on ``exact_grid`` x
+    range; outside it, as ``beyond_table`` says, "exact" (default: Kalker's exact theory, 40
+    elements across the patch, elements at most twice as long as wide, 0.02-2 s a patch) or
+    "fastsim-sdec", as runs do) and exact (Kalker's exact theory on ``exact_grid`` x
     ``exact_grid`` elements, default 40, about 16 ms a patch).
 
     FASTSIM options: ``nx``, ``ny`` (cells, default 50 x 50) or ``target_error`` (the cheapest
@@ -189,7 +193,7 @@ def creep(
     shape = inputs[0].shape
     flat = [_np.ascontiguousarray(v).reshape(-1) for v in inputs]
     fields = _wheelwear.creep_arrays(
-        method, nx, ny, bound, scheme, target_error, exact_grid, flat, threads
+        method, nx, ny, bound, scheme, target_error, exact_grid, beyond_table, flat, threads
     )
     mu_N = inputs[9] * inputs[6]
     result = CreepResult(fields, shape, mu_N.item() if shape == () else mu_N)

@@ -97,6 +97,7 @@ def creep(
     scheme: Optional[str] = ...,
     target_error: Optional[float] = ...,
     exact_grid: Optional[int] = ...,
+    beyond_table: Optional[str] = ...,
     threads: Optional[int] = ...,
 ) -> CreepResult: ...
 def wheel_profile(

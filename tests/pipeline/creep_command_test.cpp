@@ -4,6 +4,7 @@
 
 #include "support/run_command.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
+#include "wheelwear/tangential/exact/steady_rolling.hpp"
 #include "wheelwear/tangential/fastsim.hpp"
 #include "wheelwear/tangential/grid_choice.hpp"
 #include "wheelwear/tangential/linear_theory.hpp"
@@ -129,10 +130,11 @@ TEST(CreepCommand, TableAndBestReportTheirSource) {
   EXPECT_EQ(json_number(best.out, "Fx"), f.Fx);
   EXPECT_NE(best.out.find("\"source\": \"table\""), std::string::npos) << best.out;
 
-  // psi = 0.9 lies outside the table (|psi| <= 0.8): FASTSIM-SDEC on the 30 x 20 grid.
+  // psi = 0.9 lies outside the table (|psi| <= 0.8): with --beyond-table fastsim-sdec,
+  // FASTSIM-SDEC on the 30 x 20 grid.
   const auto outside = run_wheelwear(
       "creep --a 4.25e-3 --b 4.25e-3 --psi 0.9 --phi 1.0 --N 37830 --mu 0.35 --json "
-      "--method best --nx 30 --ny 20");
+      "--method best --beyond-table fastsim-sdec --nx 30 --ny 20");
   ASSERT_EQ(outside.exit_code, 0) << outside.err;
   tangential::FastsimOptions options;
   options.nx = 30;
@@ -145,6 +147,37 @@ TEST(CreepCommand, TableAndBestReportTheirSource) {
   EXPECT_NE(outside.out.find("\"source\": \"fastsim-sdec\""), std::string::npos) << outside.out;
   EXPECT_NE(outside.out.find("psi = 0.9"), std::string::npos) << outside.out;
   EXPECT_TRUE(json_number(outside.out, "slip_cells").has_value());
+}
+
+// Outside the table best answers with the exact theory on the grid that resolves the patch's
+// long axis (aspect_sdec_grid): a/b = 10 under pure spin, the library's solution to the last
+// digit; FASTSIM's options are refused there unless FASTSIM is asked to answer, and
+// --beyond-table belongs to best alone.
+TEST(CreepCommand, BestBeyondTheTableSolvesTheExactTheory) {
+  const std::string slender =
+      "creep --a 13.44e-3 --b 1.344e-3 --phi 0.5 --N 37830 --mu 0.35 --json --method best";
+  const auto best = run_wheelwear(slender);
+  ASSERT_EQ(best.exit_code, 0) << best.err;
+  const contactgeom::Sdec patch{13.44e-3, 1.344e-3, 0.0};
+  const tangential::ExactSolution exact = tangential::exact_sdec(
+      patch, {0, 0, 0.5}, {37830, 0.35}, {80e9, 0.25}, tangential::aspect_sdec_grid(patch), {});
+  EXPECT_EQ(json_number(best.out, "Fy"), exact.forces.Fy);
+  EXPECT_EQ(json_number(best.out, "exact_nx"), 200.0);
+  EXPECT_EQ(json_number(best.out, "exact_ny"), 40.0);
+  EXPECT_NE(best.out.find("\"source\": \"exact\""), std::string::npos) << best.out;
+  EXPECT_NE(best.out.find("a/b = 10"), std::string::npos) << best.out;
+  EXPECT_FALSE(json_number(best.out, "exact_grid").has_value()) << best.out;
+
+  for (const std::string& refused :
+       {slender + " --nx 30", slender + " --target-error 0.01",
+        std::string("creep --a 4.25e-3 --b 4.25e-3 --phi 0.5 --N 37830 --method table "
+                    "--beyond-table exact"),
+        slender + " --beyond-table fastsim"}) {
+    const auto r = run_wheelwear(refused);
+    EXPECT_EQ(r.exit_code, 2) << refused;
+    EXPECT_NE(r.err.find("--beyond-table"), std::string::npos) << refused << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << refused;
+  }
 }
 
 }  // namespace

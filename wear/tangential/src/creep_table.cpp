@@ -91,7 +91,7 @@ std::string range_text(double lo, double hi) {
   return text.str();
 }
 
-const std::string kFallback = "; use FASTSIM-SDEC (--method fastsim-sdec or best) there";
+const std::string kFallback = "; use --method best (or fastsim-sdec) there";
 
 // Empty message when covered, else the reason.
 std::string check(const CreepTableData& table, const contactgeom::Sdec& sdec, const Creepages& v,

@@ -81,6 +81,14 @@ void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages, const
     }
     solution.table_outside = kNoMoment;
   }
+  if (solution.table_outside && options.exact_beyond_table) {
+    SolveOptions beyond = options;
+    beyond.exact_grid = aspect_sdec_grid(sdec);
+    const std::optional<std::string> why = std::move(solution.table_outside);
+    solve_exact(sdec, creepages, load, material, beyond, solution);
+    solution.table_outside = why;
+    return;
+  }
   fastsim(FastsimMethod::sdec, sdec, creepages, load, material, options.fastsim, solution);
   if (!solution.table_outside) {
     solution.from_table = correct_with_creep_table(sdec, creepages, load, material, solution);

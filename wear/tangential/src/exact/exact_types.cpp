@@ -7,10 +7,6 @@
 
 namespace wheelwear::tangential {
 
-namespace {
-constexpr int kMaxElementsPerSide = 4096;  // keeps the padded FFT arrays within memory
-}  // namespace
-
 void ElementGrid::validate() const {
   require(nx >= 1 && nx <= kMaxElementsPerSide, "grid.nx", nx, "needs 1 ... 4096 elements");
   require(ny >= 1 && ny <= kMaxElementsPerSide, "grid.ny", ny, "needs 1 ... 4096 elements");

@@ -37,10 +37,26 @@ class InfluenceOperator {
   const double* kxx_row() const { return kxx_row_.data() + grid_.nx; }
   const double* kyy_row() const { return kyy_row_.data() + grid_.nx; }
 
+  /// Rows of the steady-rolling kernel C(m, n) for n = 1 ... near_rows() (field row n rows
+  /// above the source row), m in [-(nx - 1), nx - 1]: the slip the sweep adds to the rows it
+  /// has still to solve after solving one.
+  int near_rows() const { return near_rows_; }
+  const double* cxx_near(int n) const { return near_at(cxx_near_, n); }
+  const double* cxy_near(int n) const { return near_at(cxy_near_, n); }
+  const double* cyy_near(int n) const { return near_at(cyy_near_, n); }
+
   const ElementGrid& grid() const { return grid_; }
 
  private:
+  const double* near_at(const std::vector<double>& c, int n) const {
+    const std::size_t row = static_cast<std::size_t>(2 * grid_.nx - 1);
+    return c.data() + static_cast<std::size_t>(n - 1) * row +
+           static_cast<std::size_t>(grid_.nx - 1);
+  }
+
   ElementGrid grid_;
+  int near_rows_ = 0;
+  std::vector<double> cxx_near_, cxy_near_, cyy_near_;
   int mx_ = 0, my_ = 0;  // padded FFT sizes
   std::vector<double> kxx_row_, kyy_row_;
   std::vector<std::complex<double>> cxx_hat_, cxy_hat_, cyy_hat_, knn_hat_;

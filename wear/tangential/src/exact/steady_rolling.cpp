@@ -1,5 +1,6 @@
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <span>
@@ -78,6 +79,23 @@ ElementGrid sdec_grid(const contactgeom::Sdec& sdec, const SdecGridOptions& opti
   grid.dy = 2.0 * options.margin * sdec.b / options.ny;
   grid.x_min = -options.margin * sdec.a + options.shift_x * grid.dx;
   grid.y_min = sdec.y0() - options.margin * sdec.b + options.shift_y * grid.dy;
+  return grid;
+}
+
+SdecGridOptions aspect_sdec_grid(const contactgeom::Sdec& sdec, int across, double max_aspect) {
+  sdec.validate();
+  require(across >= 2 && across <= kMaxElementsPerSide, "across", across,
+          "needs 2 ... 4096 elements across the patch");
+  require_finite("max_aspect", max_aspect);
+  require(max_aspect >= 1.0, "max_aspect", max_aspect, "must be at least 1");
+  // Elements dx/dy = (a/nx)/(b/ny): along the long axis as many as keep them within max_aspect.
+  const double slender = std::max(sdec.a / sdec.b, sdec.b / sdec.a);
+  const double needed = std::ceil(across * slender / max_aspect - 1e-9);
+  const int along =
+      static_cast<int>(std::clamp(needed, double(across), double(kMaxElementsPerSide)));
+  SdecGridOptions grid;
+  grid.nx = sdec.a >= sdec.b ? along : across;
+  grid.ny = sdec.a >= sdec.b ? across : along;
   return grid;
 }
 

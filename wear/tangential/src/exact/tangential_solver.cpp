@@ -111,6 +111,33 @@ void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bo
     }
   };
 
+  // The slip a row's change of traction (dpx, dpy over its columns lo ... hi) causes in the
+  // near rows above it, which this sweep has still to solve.
+  std::vector<double> dpx(static_cast<std::size_t>(nx)), dpy(static_cast<std::size_t>(nx));
+  auto update_near_rows = [&](int j) {
+    const auto& src = rows[static_cast<std::size_t>(j)];
+    if (src.empty()) return;
+    const int lo = src.front(), hi = src.back();
+    for (int up = 1; up <= op.near_rows() && j + up < ny; ++up) {
+      const auto& dst = rows[static_cast<std::size_t>(j + up)];
+      if (dst.empty()) continue;
+      const double* cxx = op.cxx_near(up);
+      const double* cxy = op.cxy_near(up);
+      const double* cyy = op.cyy_near(up);
+      const std::size_t row0 = static_cast<std::size_t>((j + up) * nx);
+      for (const int f : dst) {
+        double ax = 0.0, ay = 0.0;
+        for (int i = lo; i <= hi; ++i) {
+          const double ux = dpx[static_cast<std::size_t>(i)], uy = dpy[static_cast<std::size_t>(i)];
+          ax += cxx[f - i] * ux + cxy[f - i] * uy;
+          ay += cxy[f - i] * ux + cyy[f - i] * uy;
+        }
+        sx[row0 + static_cast<std::size_t>(f)] += ax;
+        sy[row0 + static_cast<std::size_t>(f)] += ay;
+      }
+    }
+  };
+
   // One Gauss-Seidel sweep after SteadyGS, the steady-rolling variant of Vollebregt's ConvexGS
   // (Vollebregt 1995, J. Optim. Theory Appl. 87) in his program CONTACT:
   // the slip of the current tractions by FFT, then every row from its trailing to its leading
@@ -121,7 +148,9 @@ void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bo
   // slip or outside the contact (index i_end), where q changes by -d. Each element is solved
   // with the diagonal (K(0) - K(i - i_end))/dx of that move; the slip it changes upstream in
   // its row (the elements still to be solved there) is updated directly, the other rows see it
-  // at the next sweep's FFT (the Anderson acceleration below takes care of that coupling).
+  // at the next sweep's FFT (the Anderson acceleration below takes care of that coupling), but
+  // for the near rows above a solved row on long elements (InfluenceOperator::near_rows), whose
+  // slip is updated at once.
   // Processing a row from its trailing edge, as SteadyGS does, converges; from the leading
   // edge the sweep diverges under large spin. Returns true when an element changed state.
   auto sweep = [&]() {
@@ -134,6 +163,15 @@ void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bo
     for (int j = 0; j < ny; ++j) {
       const auto& cols = rows[static_cast<std::size_t>(j)];
       const std::size_t row0 = static_cast<std::size_t>(j * nx);
+      const bool near = op.near_rows() > 0 && !cols.empty();
+      if (near) {  // the row's tractions before, zero between its contact elements
+        std::fill(dpx.begin(), dpx.end(), 0.0);
+        std::fill(dpy.begin(), dpy.end(), 0.0);
+        for (const int i : cols) {
+          dpx[static_cast<std::size_t>(i)] = -px[row0 + static_cast<std::size_t>(i)];
+          dpy[static_cast<std::size_t>(i)] = -py[row0 + static_cast<std::size_t>(i)];
+        }
+      }
       for (std::size_t k = 0; k < cols.size(); ++k) {
         const int i = cols[k];
         const std::size_t e = row0 + static_cast<std::size_t>(i);
@@ -164,6 +202,12 @@ void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bo
         update_row(sx.data() + row0, sy.data() + row0, i + 1, row_hi[static_cast<std::size_t>(j)],
                    i, i_end, ux, uy);
       }
+      if (!near) continue;
+      for (const int i : cols) {
+        dpx[static_cast<std::size_t>(i)] += px[row0 + static_cast<std::size_t>(i)];
+        dpy[static_cast<std::size_t>(i)] += py[row0 + static_cast<std::size_t>(i)];
+      }
+      update_near_rows(j);
     }
     return changed;
   };

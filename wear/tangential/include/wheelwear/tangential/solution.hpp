@@ -54,10 +54,12 @@ struct TangentialSolution {
   /// which their cells then sum to (table_correction.hpp); 0 for linear-sdec, she-sdec, table.
   double frictional_work = 0.0;
   /// Method best: true where the totals came from the book of tables; false where the patch
-  /// is outside it (table_outside says why) and FASTSIM-SDEC answered alone.
+  /// is outside it (table_outside says why) and FASTSIM-SDEC answered alone, or the exact
+  /// theory (SolveOptions::exact_beyond_table; `exact` then holds its solution).
   bool from_table = false;
   std::optional<std::string> table_outside;
-  std::optional<ExactSolution> exact;  ///< method exact: the whole solution on its grid
+  /// Method exact, and best where the exact theory answered: the whole solution on its grid.
+  std::optional<ExactSolution> exact;
 };
 
 /// "ok", "not converged", "no contact".

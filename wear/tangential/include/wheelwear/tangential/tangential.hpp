@@ -67,6 +67,10 @@ struct SolveOptions {
   /// Grid of the exact method (exact_sdec): nx x ny elements over margin times the patch.
   SdecGridOptions exact_grid;
   ExactSolverOptions exact_solver;  ///< stopping tests of the exact method
+  /// best, for a patch outside the book of tables: Kalker's exact theory on aspect_sdec_grid
+  /// (0.02-2 s a patch; for single evaluations) instead of FASTSIM-SDEC (tens of microseconds,
+  /// up to 7 % of mu N off the exact theory on slender patches; for runs).
+  bool exact_beyond_table = false;
 
   void validate() const;  ///< throws InputError naming the bad field
 };

@@ -9,6 +9,9 @@
 
 namespace wheelwear::tangential {
 
+/// Most elements along either side of a grid (keeps the padded FFT arrays within memory).
+inline constexpr int kMaxElementsPerSide = 4096;
+
 /// A rectangular grid of nx x ny equal elements in the contact plane; element (i, j) has index
 /// j*nx + i, i along x (rolling direction, the leading edge at +x), j along y. Coordinates are
 /// relative to the initial contact point O [m].
