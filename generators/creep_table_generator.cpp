@@ -18,25 +18,37 @@
 // [g][psi][theta][beta][r], r = 0 included (zero forces). Mz changes sign with Fy under both
 // symmetries.
 //
+// Grid: n elements across the patch and at most --max-aspect (5) times as many along its long
+// axis as across (aspect_sdec_grid): n x n up to a/b = 5, as the table was first made; beyond,
+// elements no longer than at a/b = 5 (42 x 30 at a/b = 7, 60 x 30 at 10), where an n x n grid
+// would lose accuracy along the long axis as the patch grows slender.
+//
 // Usage: wheelwear_creep_table_generator [--n 30] [--threads 2] [--out data/creep_table.h5]
 //   [--nu 0.25,0.28] [--g 0.2,0.25,...] [--psi 0,0.2,...] [--theta-count 33] [--beta-count 19]
-//   [--r 0,0.25,...,6] [--spin-scale 3]
-// The defaults are the shipped table: 2 x 489 060 nodes (425 520 solves per nu), 35 min on two
-// cores, 16 MB. The nodes are where interpolating (creep_table.cpp) needs them to stay within
-// 1 % of mu N of fresh solves (tests/wear/creep_table_test.cpp): the forces turn fastest with
-// theta where the patch begins to slide fully, and with a/b below 0.3 and above 3. A finer
-// solver grid (--n 40) or more nodes cost in proportion (see the printed count).
+//   [--r 0,0.25,...,6] [--spin-scale 3] [--max-aspect 5] [--reuse OLD.h5]
+// --reuse takes the nodes of every a/b that OLD.h5 holds with the same other axes, grid rule
+// and nu from it instead of solving them again (to add a/b nodes to a table).
+// The defaults are the shipped table: 2 x 652 080 nodes (567 360 solves per nu), about 75 min
+// on two cores (35 min for a/b 0.2 ... 5, 40 min for 6 ... 10), 21 MB. The nodes are where
+// interpolating (creep_table.cpp) needs them to stay within 1 % of mu N of fresh solves
+// (tests/tangential/creep_table_test.cpp): the forces turn fastest with theta where the patch
+// begins to slide fully, and with a/b below 0.3 and above 3 (with nodes at 5, 7 and 10 alone the
+// worst of 1000 points between 5 and 10 reached 0.98 %). A finer solver grid (--n 40) or more
+// nodes cost in proportion (see the printed count).
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -109,6 +121,67 @@ void write_attribute(hid_t object, const char* key, double value) {
   H5Sclose(scalar);
 }
 
+// A dataset of doubles, or empty when it is missing.
+std::vector<double> read_doubles(hid_t group, const char* name) {
+  if (H5Lexists(group, name, H5P_DEFAULT) <= 0) return {};
+  const hid_t set = H5Dopen2(group, name, H5P_DEFAULT);
+  const hid_t space = H5Dget_space(set);
+  std::vector<double> out(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
+  H5Sclose(space);
+  H5Dclose(set);
+  return out;
+}
+
+double read_number(hid_t object, const char* key, double absent) {
+  if (H5Aexists(object, key) <= 0) return absent;
+  double value = absent;
+  const hid_t attr = H5Aopen(object, key, H5P_DEFAULT);
+  H5Aread(attr, H5T_NATIVE_DOUBLE, &value);
+  H5Aclose(attr);
+  return value;
+}
+
+// The solved nodes of one nu block of an earlier table, to reuse where the axes agree.
+struct Reused {
+  std::vector<double> gs, fx, fy, mz;
+  bool square_only = false;  // written before the grid rule: n x n nodes only
+};
+
+Reused reusable(const std::string& path, const char* group_name, int n, double max_aspect,
+                double spin_scale, const std::vector<double>& psis,
+                const std::vector<double>& thetas, const std::vector<double>& betas,
+                const std::vector<double>& rs) {
+  Reused out;
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0) throw std::runtime_error("--reuse: " + path + " is not an HDF5 file");
+  if (H5Lexists(file, group_name, H5P_DEFAULT) > 0) {
+    const hid_t group = H5Gopen2(file, group_name, H5P_DEFAULT);
+    // A table written before the grid rule solved every node on n x n, which the rule gives
+    // for a/b within [1/max_aspect, max_aspect] only.
+    out.square_only = H5Aexists(group, "max_element_aspect") <= 0;
+    const double old_aspect = read_number(group, "max_element_aspect", max_aspect);
+    const auto same = [](const std::vector<double>& a, const std::vector<double>& b) {
+      if (a.size() != b.size()) return false;
+      for (std::size_t i = 0; i < a.size(); ++i)
+        if (std::abs(a[i] - b[i]) > 1e-12) return false;
+      return true;
+    };
+    if (read_number(group, "grid", 0) == n && old_aspect == max_aspect &&
+        read_number(group, "spin_scale", 1.0) == spin_scale &&
+        same(read_doubles(group, "psi"), psis) && same(read_doubles(group, "theta"), thetas) &&
+        same(read_doubles(group, "beta"), betas) && same(read_doubles(group, "r"), rs)) {
+      out.gs = read_doubles(group, "a_over_b");
+      out.fx = read_doubles(group, "Fx_muN");
+      out.fy = read_doubles(group, "Fy_muN");
+      out.mz = read_doubles(group, "Mz_muNc");
+    }
+    H5Gclose(group);
+  }
+  H5Fclose(file);
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -116,7 +189,10 @@ int main(int argc, char** argv) {
   unsigned threads = 2;
   std::string out_path = "data/creep_table.h5";
   std::vector<double> nus = {0.25, 0.28};
-  std::vector<double> gs = {0.2, 0.25, 0.3, 0.4, 0.5, 0.7, 1.0, 1.4, 2.0, 3.0, 4.0, 5.0};
+  std::vector<double> gs = {0.2, 0.25, 0.3, 0.4, 0.5, 0.7, 1.0, 1.4,
+                            2.0, 3.0,  4.0, 5.0, 6.0, 7.0, 8.5, 10.0};
+  double max_aspect = 5.0;
+  std::string reuse_path;
   std::vector<double> psis = {0.0, 0.2, 0.4, 0.6, 0.8};
   int theta_count = 33, beta_count = 19;
   std::vector<double> rs = {0.0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0};
@@ -143,10 +219,31 @@ int main(int argc, char** argv) {
       rs = parse_list(value);
     } else if (key == "--spin-scale") {
       spin_scale = std::stod(value);
+    } else if (key == "--max-aspect") {
+      max_aspect = std::stod(value);
+    } else if (key == "--reuse") {
+      reuse_path = value;
     } else {
       std::cerr << "unknown option " << key
                 << "; options: --n --threads --out --nu --g --psi --theta-count --beta-count "
-                   "--r --spin-scale\n";
+                   "--r --spin-scale --max-aspect --reuse\n";
+      return 2;
+    }
+  }
+  if (!(max_aspect >= 1.0)) {
+    std::cerr << "need --max-aspect >= 1\n";
+    return 2;
+  }
+  if (!reuse_path.empty()) {
+    std::error_code error;
+    if (!std::filesystem::exists(reuse_path, error)) {
+      std::cerr << "--reuse " << reuse_path << ": no such file\n";
+      return 2;
+    }
+    // The output is created (truncated) before the earlier table is read.
+    if (std::filesystem::exists(out_path, error) &&
+        std::filesystem::equivalent(reuse_path, out_path, error)) {
+      std::cerr << "--reuse " << reuse_path << " is the --out file; write to another file\n";
       return 2;
     }
   }
@@ -174,8 +271,9 @@ int main(int argc, char** argv) {
          "rolling (wheelwear wear/exact, "
          "exact_sdec) on SDEC patches with the prescribed pressure of Liu, Fu & Bruni 2022, "
          "Eq. 4, "
-      << n << " x " << n
-      << " elements over [-1.02a, 1.02a] x [y0 - 1.02b, y0 + 1.02b], stopping tolerance 1e-6. "
+      << n << " elements across the patch and at most " << max_aspect
+      << " times as many along its long axis (aspect_sdec_grid; n x n up to a/b = " << max_aspect
+      << ") over [-1.02a, 1.02a] x [y0 - 1.02b, y0 + 1.02b], stopping tolerance 1e-6. "
          "Axes: a_over_b (interpolate in log), psi >= 0 (psi < 0: mirror y -> -y, vy, phi and "
          "Fy change sign), normalised creepages xi = G c^2 C11 vx/(mu N), eta = G c^2 C22 "
          "vy/(mu N), chi = s G c^3 C23 phi/(mu N) (s: the group's spin_scale), c = sqrt(ab), "
@@ -197,14 +295,35 @@ int main(int argc, char** argv) {
       c23[k] = kc.c23;
     }
     std::vector<double> fx(total, 0.0), fy(total, 0.0), mz(total, 0.0);
+    // Nodes of a/b values an earlier table holds (--reuse) are copied, not solved.
+    std::vector<char> reused_g(gs.size(), 0);
+    if (!reuse_path.empty()) {
+      Reused old;
+      try {
+        old = reusable(reuse_path, name, n, max_aspect, spin_scale, psis, thetas, betas, rs);
+      } catch (const std::exception& e) {
+        std::cerr << e.what() << '\n';
+        H5Fclose(file);
+        return 1;
+      }
+      for (std::size_t k = 0; k < gs.size(); ++k)
+        for (std::size_t m = 0; m < old.gs.size(); ++m)
+          if (std::abs(old.gs[m] - gs[k]) <= 1e-12 * gs[k] &&
+              (!old.square_only || (gs[k] <= max_aspect && gs[k] >= 1.0 / max_aspect))) {
+            std::copy_n(old.fx.begin() + m * per_g, per_g, fx.begin() + k * per_g);
+            std::copy_n(old.fy.begin() + m * per_g, per_g, fy.begin() + k * per_g);
+            std::copy_n(old.mz.begin() + m * per_g, per_g, mz.begin() + k * per_g);
+            reused_g[k] = 1;
+          }
+      std::cout << name << ": " << std::count(reused_g.begin(), reused_g.end(), 1) << " of "
+                << gs.size() << " a/b values reused from " << reuse_path << std::endl;
+    }
     std::atomic<std::size_t> next{0};
     std::atomic<int> unconverged{0};
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::thread> pool;
     for (unsigned t = 0; t < threads; ++t) {
       pool.emplace_back([&] {
-        tangential::SdecGridOptions options;
-        options.nx = options.ny = n;
         const tangential::Material material{80e9, nu};
         const tangential::ContactLoad load{1e4, 0.3};
         const double mu_n = load.mu * load.N;
@@ -218,7 +337,7 @@ int main(int argc, char** argv) {
           rest /= thetas.size();
           const std::size_t ip = rest % psis.size();
           const std::size_t ig = rest / psis.size();
-          if (rs[ir] == 0.0) continue;
+          if (rs[ir] == 0.0 || reused_g[ig]) continue;
           // The poles (theta = 0, pi) are one direction for every beta: solve it once.
           const bool pole = it == 0 || it + 1 == thetas.size();
           if (pole && ib != 0) continue;
@@ -229,8 +348,10 @@ int main(int argc, char** argv) {
           const double chi = r * std::cos(th);
           const double gc2 = material.G * c * c;
           const tangential::Creepages v{xi * mu_n / (gc2 * c11[ig]), eta * mu_n / (gc2 * c22[ig]),
-                                  chi * mu_n / (spin_scale * gc2 * c * c23[ig])};
-          const auto s = tangential::exact_sdec({a, b, psis[ip]}, v, load, material, options);
+                                        chi * mu_n / (spin_scale * gc2 * c * c23[ig])};
+          const contactgeom::Sdec patch{a, b, psis[ip]};
+          const auto s = tangential::exact_sdec(patch, v, load, material,
+                                                tangential::aspect_sdec_grid(patch, n, max_aspect));
           if (s.status != tangential::ExactStatus::converged) ++unconverged;
           fx[i] = s.forces.Fx / mu_n;
           fy[i] = s.forces.Fy / mu_n;
@@ -256,6 +377,7 @@ int main(int argc, char** argv) {
     const hid_t group = H5Gcreate2(file, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     write_attribute(group, "nu", nu);
     write_attribute(group, "grid", static_cast<double>(n));
+    write_attribute(group, "max_element_aspect", max_aspect);
     write_attribute(group, "spin_scale", spin_scale);
     write_attribute(group, "generation_seconds", seconds);
     write(group, "a_over_b", gs, {gs.size()}, "1", "ellipticity a/b of the SDEC patch");
@@ -273,8 +395,9 @@ int main(int argc, char** argv) {
     write(group, "Mz_muNc", mz, dims, "1",
           "Mz/(mu N c), spin moment about O, c = sqrt(ab) [a_over_b][psi][theta][beta][r]");
     H5Gclose(group);
-    std::cout << name << ": " << total << " nodes on " << n << " x " << n << " grids in " << seconds
-              << " s (" << threads << " threads), " << unconverged << " not converged" << std::endl;
+    std::cout << name << ": " << total << " nodes on grids of " << n << " elements across in "
+              << seconds << " s (" << threads << " threads), " << unconverged << " not converged"
+              << std::endl;
   }
   H5Fclose(file);
   std::cout << "-> " << out_path << " in " << seconds_total << " s\n";

@@ -2,13 +2,15 @@
 // 5 ... 25, where the flange's patches lie): how the solve converges on CONTACT's 80 x 80 grid
 // (elements up to 25 times longer than wide) and on aspect_sdec_grid (40 across, elements at
 // most twice as long as wide; what method best solves there for single evaluations), and how far
-// FASTSIM-SDEC on 50 x 50 (what best gives there in runs) lies from it.
+// FASTSIM-SDEC on 50 x 50 (what best gives beyond the table in runs) and the book of tables
+// (where it covers the patch, a/b up to 10) lie from it.
 //
 // Cases: CONTACT's reference load (p0 = 1000 MPa, c = sqrt(ab) = 4.25 mm, mu 0.35, G 80 GPa,
 // nu 0.25), psi -0.8 ... 0.8, pure spin and mixed creepages. Writes bench/results/
 // slender_patches.csv (or the file given), one row per case and grid:
 //   a_over_b, psi, vx, vy, phi   the case
-//   grid                          contact (80 x 80) | aspect (aspect_sdec_grid) | fastsim
+//   grid                          contact (80 x 80) | aspect (aspect_sdec_grid) | fastsim |
+//                                 table (nx, ny: the grid its nodes were solved on)
 //   nx, ny                        its elements or cells
 //   converged                     1 when the exact solve met its tolerance (fastsim: 1)
 //   sweeps, seconds               its iterations and wall time (one thread)
@@ -21,9 +23,11 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "wheelwear/tangential/creep_table.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 #include "wheelwear/tangential/tangential.hpp"
 
@@ -56,6 +60,19 @@ Row exact_row(const std::string& name, const contactgeom::Sdec& patch, const Cre
   row.sweeps = s.iterations;
   row.fx = s.forces.Fx / (load.mu * load.N);
   row.fy = s.forces.Fy / (load.mu * load.N);
+  return row;
+}
+
+// The book of tables where it covers the patch (nullopt beyond it).
+std::optional<Row> table_row(const contactgeom::Sdec& patch, const Creepages& v,
+                             const ContactLoad& load) {
+  if (!creep_table_covers(patch, v, load, {})) return std::nullopt;
+  const SdecGridOptions grid = creep_table_grid(patch);
+  CreepForces f;
+  Row row{"table", grid.nx, grid.ny, true};
+  row.seconds = timed([&] { f = creep_table_forces(patch, v, load, {}); });
+  row.fx = f.Fx / (load.mu * load.N);
+  row.fy = f.Fy / (load.mu * load.N);
   return row;
 }
 
@@ -92,8 +109,9 @@ int main(int argc, char** argv) {
         const ContactLoad load{1000e6 * 2.0 * std::acos(-1.0) * patch.a * patch.b / 3.0, 0.35};
         SdecGridOptions contact_grid;  // 80 x 80, margin 1.02: CONTACT's
         const Row aspect = exact_row("aspect", patch, v, load, aspect_sdec_grid(patch));
-        const Row rows[] = {exact_row("contact", patch, v, load, contact_grid), aspect,
-                            fastsim_row(patch, v, load)};
+        std::vector<Row> rows = {exact_row("contact", patch, v, load, contact_grid), aspect,
+                                 fastsim_row(patch, v, load)};
+        if (const auto table = table_row(patch, v, load)) rows.push_back(*table);
         for (const Row& r : rows) {
           const double d = std::max(std::abs(r.fx - aspect.fx), std::abs(r.fy - aspect.fy));
           char line[400];

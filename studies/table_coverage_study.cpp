@@ -9,7 +9,7 @@
 //     55 kN per wheel, 30 m/s, 5 mrad of yaw (an angle of attack of a leading wheelset in a
 //     tight curve).
 // Per collective: the patches, their frictional work per metre, the share of it the table
-// answered, the shares outside its a/b range (0.2 ... 5), outside its |psi| range (0.8) and
+// answered, the shares outside its a/b range (0.2 ... 10), outside its |psi| range (0.8) and
 // inside both but outside its creepages (full sliding beyond the normalised creepage 6, or nu),
 // the work-weighted 1st, 50th and 99th percentiles of a/b and the 99th of |psi|, and the share
 // of the work on patches with 0.05 <= a/b <= 25 and |psi| <= 0.9. Writes
@@ -29,6 +29,7 @@
 #include "wheelwear/pipeline/scene.hpp"
 #include "wheelwear/pipeline/vehicle_run.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
+#include "wheelwear/tangential/creep_table.hpp"
 
 namespace {
 
@@ -71,10 +72,12 @@ double quantile(std::vector<PatchRecord> patches, double q, Value value) {
 }
 
 std::string row(const std::string& name, const std::vector<PatchRecord>& patches) {
+  const tangential::CreepTableRange range = tangential::creep_table_range();
   double total = 0.0, table = 0.0, ab_out = 0.0, psi_out = 0.0, creep_out = 0.0, target = 0.0;
   for (const PatchRecord& p : patches) {
     total += p.work;
-    const bool ab_in = p.ab >= 0.2 && p.ab <= 5.0, psi_in = std::abs(p.psi) <= 0.8;
+    const bool ab_in = p.ab >= range.a_over_b_min && p.ab <= range.a_over_b_max,
+               psi_in = std::abs(p.psi) <= range.psi_max;
     if (p.from_table) table += p.work;
     if (!ab_in) ab_out += p.work;
     if (ab_in && !psi_in) psi_out += p.work;

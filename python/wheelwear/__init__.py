@@ -169,7 +169,7 @@ def creep(
 
     Methods (``method``): fastsim-sdec (default), fastsim-eql, fastsim-eqe,
     fastsim-eqe-shifted, fastsim-elliptic, linear-sdec, she-sdec (Shen-Hedrick-Elkins),
-    table (the book of exact-theory tables: a/b 0.2-5, |psi| <= 0.8), best (the table inside its
+    table (the book of exact-theory tables: a/b 0.2-10, |psi| <= 0.8), best (the table inside its
     range; outside it, as ``beyond_table`` says, "exact" (default: Kalker's exact theory, 40
     elements across the patch, elements at most twice as long as wide, 0.02-2 s a patch) or
     "fastsim-sdec", as runs do) and exact (Kalker's exact theory on ``exact_grid`` x

@@ -104,7 +104,7 @@ TEST(TableCorrection, RigidSlipWorkRefusesSpinWithoutMoment) {
 }
 
 TEST(TableCorrection, LeavesPatchesOutsideTheTableToFastsim) {
-  const Sdec narrow{5e-3, 0.5e-3, 0.4};  // a/b = 10, beyond the table's 5
+  const Sdec narrow{5e-3, 0.25e-3, 0.4};  // a/b = 20, beyond the table's 10
   const Creepages v{1e-3, 0, 0.5};
   FastsimOptions options;
   options.cell_fields = true;

@@ -9,6 +9,7 @@
 
 #include "creep_table_data.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/tangential/exact/steady_rolling.hpp"
 
 namespace wheelwear::tangential {
 
@@ -228,11 +229,21 @@ CreepTableRange CreepTable::range() const {
   range.r_max = r_max(first);
   range.grid = first.grid;
   range.spin_scale = first.spin_scale;
+  range.max_element_aspect = first.max_element_aspect;
   return range;
 }
 
 CreepTableRange creep_table_range() {
   return creep_table().range();
+}
+
+SdecGridOptions creep_table_grid(const contactgeom::Sdec& sdec) {
+  const CreepTableRange range = creep_table_range();
+  if (range.max_element_aspect >= 1.0)
+    return aspect_sdec_grid(sdec, range.grid, range.max_element_aspect);
+  SdecGridOptions grid;
+  grid.nx = grid.ny = range.grid;
+  return grid;
 }
 
 double creep_table_magnitude(const contactgeom::Sdec& sdec, const Creepages& creepages,

@@ -188,6 +188,9 @@ CreepTableBlock read_block(const H5::Group& group, const fs::path& file, const s
   const std::optional<double> nu = read_number(group, "nu", file, where);
   const std::optional<double> grid = read_number(group, "grid", file, where);
   const std::optional<double> spin_scale = read_number(group, "spin_scale", file, where);
+  const std::optional<double> aspect = read_number(group, "max_element_aspect", file, where);
+  if (aspect && !(std::isfinite(*aspect) && *aspect >= 1.0))
+    damaged(file, where + ": attribute max_element_aspect is below 1");
   if (!nu || !std::isfinite(*nu)) damaged(file, where + ": attribute nu is missing or not finite");
   if (!grid || !(*grid >= 1.0 && *grid <= 1e6))
     damaged(file, where + ": attribute grid is missing or not a grid size");
@@ -196,6 +199,7 @@ CreepTableBlock read_block(const H5::Group& group, const fs::path& file, const s
   b.nu = *nu;
   b.grid = static_cast<int>(*grid);
   b.spin_scale = spin_scale.value_or(1.0);  // tables written before it was an attribute: 1
+  b.max_element_aspect = aspect.value_or(0.0);
   b.a_over_b = read_axis(group, "a_over_b", file, where);
   if (!(b.a_over_b[0] > 0.0)) damaged(file, where + ": a_over_b is not positive");
   b.psi = read_axis(group, "psi", file, where);

@@ -14,8 +14,11 @@ namespace wheelwear::tangential::detail {
 
 /// One Poisson's ratio of the table. Nodes are indexed [g][psi][theta][beta][r] (r fastest).
 struct CreepTableBlock {
-  double nu = 0.0;          ///< Poisson's ratio [-]
-  int grid = 0;             ///< elements per side of the exact solver's grid
+  double nu = 0.0;  ///< Poisson's ratio [-]
+  int grid = 0;     ///< elements across the patch of the exact solver's grid
+  /// Elements at most this many times as many along the patch's long axis as across
+  /// (aspect_sdec_grid); 0: grid x grid at every a/b (tables made before the attribute).
+  double max_element_aspect = 0.0;
   double spin_scale = 1.0;  ///< s of the normalised spin chi = s G c^3 C23 phi / (mu N) [-]
   int n_g = 0, n_psi = 0, n_theta = 0, n_beta = 0, n_r = 0;
   std::vector<double> a_over_b;  ///< n_g ellipticities a/b [-], increasing

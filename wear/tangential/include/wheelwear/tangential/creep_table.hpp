@@ -20,6 +20,7 @@
 
 #include "wheelwear/contactgeom/sdec.hpp"
 #include "wheelwear/tangential/creep_types.hpp"
+#include "wheelwear/tangential/exact/exact_types.hpp"
 
 namespace wheelwear::tangential {
 
@@ -35,8 +36,11 @@ struct CreepTableRange {
   double psi_max = 0.0;                           ///< |psi| <= psi_max [-]
   /// Largest magnitude of the normalised creepage (xi, eta, chi) [-] (see creep_table_forces).
   double r_max = 0.0;
-  int grid = 0;  ///< elements per side of the exact solver's grid the table was made with
+  int grid = 0;  ///< elements across the patch of the exact solver's grid the table was made with
+  /// Its elements at most this many times as many along the patch's long axis as across (0:
+  /// grid x grid at every a/b); creep_table_grid gives the grid of a patch.
   double spin_scale = 1.0;  ///< s of the normalised spin (creep_table_magnitude) [-]
+  double max_element_aspect = 0.0;
 };
 
 /// A book of creep-force tables read from its file (load_creep_table): immutable; copies share
@@ -85,6 +89,12 @@ std::string file_sha256(const std::filesystem::path& file);
 
 /// The range of the table (creep_table().range()).
 CreepTableRange creep_table_range();
+
+/// The grid the table's nodes were solved on, for the patch `sdec` (a fresh exact solve on it
+/// differs from the table by its interpolation alone): creep_table_range().grid elements
+/// across, n x n up to a/b = max_element_aspect and as many more along a longer patch as keep
+/// the elements no longer than there (aspect_sdec_grid).
+SdecGridOptions creep_table_grid(const contactgeom::Sdec& sdec);
 
 /// The normalised creepage of the table: xi = G c^2 C11 vx/(mu N), eta = G c^2 C22 vy/(mu N),
 /// chi = s G c^3 C23 phi/(mu N), c = sqrt(ab) [m], C's Kalker's (Kalker 1990, Table E.3) for
