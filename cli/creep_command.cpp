@@ -186,7 +186,7 @@ void add_creep_command(CLI::App& app) {
          "adhesion_fraction, adhesion_elements, N_grid, frictional_work, exact_grid;\n"
          "cells and slip_cells count contact and slipping elements),\n"
          "table (the book of exact-theory tables, data/creep_table.h5: Fx, Fy, Mz within 1 % of\n"
-         "muN of the exact theory in about 1 us; a/b 0.2-10, |psi| <= 0.8, nu\n"
+         "muN of the exact theory on its grid in about 1 us; a/b 0.2-10, |psi| <= 0.8, nu\n"
          "0.25-0.28; an error outside its range) or best (the table inside its\n"
          "range; outside it, as --beyond-table says, the exact theory on a grid that\n"
          "resolves the patch's long axis (default) or fastsim-sdec; the JSON's \"source\"\n"
@@ -236,9 +236,9 @@ void add_creep_command(CLI::App& app) {
              "--beyond-table", args->beyond_table,
              "--method best, for a patch outside the book of tables (a/b below 0.2 or above\n"
              "10, |psi| above 0.8, other nu): exact (default: Kalker's exact theory, 40\n"
-             "elements across the patch and elements at most twice as long as wide, 0.02-2 s;\n"
-             "within about 0.5 % of muN of its converged answer at a/b = 10 ... 25) or\n"
-             "fastsim-sdec (what runs use: well under 1 ms, 7 % of muN off there)")
+             "elements across the patch and elements at most twice as long as wide, 0.05-2 s\n"
+             "for a/b 0.05 ... 25; within about 0.5 % of muN of its converged answer) or\n"
+             "fastsim-sdec (what runs use: well under 1 ms, about 7 % of muN off at a/b 10-25)")
           ->check(CLI::IsMember(std::vector<std::string>(std::begin(kBeyondTableChoices),
                                                          std::end(kBeyondTableChoices))));
   cmd->add_flag("--json", args->json, "print one JSON object (forces in N, normalised by muN)");

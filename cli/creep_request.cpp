@@ -41,6 +41,11 @@ void check_options(const CreepOptions& o, tangential::Method method) {
                        " sets FASTSIM-SDEC, which --method best runs only with --beyond-table "
                        "fastsim-sdec (by default the exact theory answers outside the table)");
   }
+  if (method == tangential::Method::best && o.exact_grid)
+    throw InputError(
+        "--exact-grid applies to --method exact only; --method best solves the exact "
+        "theory beyond the book of tables on its own grid (40 elements across the "
+        "patch, elements at most twice as long as wide)");
   if (!exact && o.exact_grid)
     throw InputError("--exact-grid applies to --method exact only; FASTSIM's grid is --nx --ny");
   if (o.target_error && (o.nx || o.ny))

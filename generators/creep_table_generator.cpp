@@ -18,10 +18,10 @@
 // [g][psi][theta][beta][r], r = 0 included (zero forces). Mz changes sign with Fy under both
 // symmetries.
 //
-// Grid: n elements across the patch and at most --max-aspect (5) times as many along its long
-// axis as across (aspect_sdec_grid): n x n up to a/b = 5, as the table was first made; beyond,
-// elements no longer than at a/b = 5 (42 x 30 at a/b = 7, 60 x 30 at 10), where an n x n grid
-// would lose accuracy along the long axis as the patch grows slender.
+// Grid: n elements across the patch, elements at most --max-aspect (5) times as long as wide
+// (aspect_sdec_grid): n x n up to a/b = 5, as the table was first made; beyond, elements no
+// longer than at a/b = 5 (42 x 30 at a/b = 7, 60 x 30 at 10), where an n x n grid would lose
+// accuracy along the long axis as the patch grows slender.
 //
 // Usage: wheelwear_creep_table_generator [--n 30] [--threads 2] [--out data/creep_table.h5]
 //   [--nu 0.25,0.28] [--g 0.2,0.25,...] [--psi 0,0.2,...] [--theta-count 33] [--beta-count 19]
@@ -33,8 +33,8 @@
 // interpolating (creep_table.cpp) needs them to stay within 1 % of mu N of fresh solves
 // (tests/tangential/creep_table_test.cpp): the forces turn fastest with theta where the patch
 // begins to slide fully, and with a/b below 0.3 and above 3 (with nodes at 5, 7 and 10 alone the
-// worst of 1000 points between 5 and 10 reached 0.98 %). A finer solver grid (--n 40) or more
-// nodes cost in proportion (see the printed count).
+// worst of the 190 of 1000 test points beyond a/b = 5 reached 0.98 %). A finer solver grid (--n 40)
+// or more nodes cost in proportion (see the printed count).
 
 #include <hdf5.h>
 
@@ -148,8 +148,8 @@ struct Reused {
   bool square_only = false;  // written before the grid rule: n x n nodes only
 };
 
-Reused reusable(const std::string& path, const char* group_name, int n, double max_aspect,
-                double spin_scale, const std::vector<double>& psis,
+Reused reusable(const std::string& path, const char* group_name, double nu, int n,
+                double max_aspect, double spin_scale, const std::vector<double>& psis,
                 const std::vector<double>& thetas, const std::vector<double>& betas,
                 const std::vector<double>& rs) {
   Reused out;
@@ -167,14 +167,17 @@ Reused reusable(const std::string& path, const char* group_name, int n, double m
         if (std::abs(a[i] - b[i]) > 1e-12) return false;
       return true;
     };
-    if (read_number(group, "grid", 0) == n && old_aspect == max_aspect &&
-        read_number(group, "spin_scale", 1.0) == spin_scale &&
+    if (read_number(group, "nu", -1.0) == nu && read_number(group, "grid", 0) == n &&
+        old_aspect == max_aspect && read_number(group, "spin_scale", 1.0) == spin_scale &&
         same(read_doubles(group, "psi"), psis) && same(read_doubles(group, "theta"), thetas) &&
         same(read_doubles(group, "beta"), betas) && same(read_doubles(group, "r"), rs)) {
       out.gs = read_doubles(group, "a_over_b");
       out.fx = read_doubles(group, "Fx_muN");
       out.fy = read_doubles(group, "Fy_muN");
       out.mz = read_doubles(group, "Mz_muNc");
+      const std::size_t per_g = psis.size() * thetas.size() * betas.size() * rs.size();
+      for (const auto* values : {&out.fx, &out.fy, &out.mz})
+        if (values->size() != out.gs.size() * per_g) out.gs.clear();  // not a whole table
     }
     H5Gclose(group);
   }
@@ -230,22 +233,13 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (!(max_aspect >= 1.0)) {
-    std::cerr << "need --max-aspect >= 1\n";
+  if (!(std::isfinite(max_aspect) && max_aspect >= 1.0)) {
+    std::cerr << "need a finite --max-aspect >= 1\n";
     return 2;
   }
-  if (!reuse_path.empty()) {
-    std::error_code error;
-    if (!std::filesystem::exists(reuse_path, error)) {
-      std::cerr << "--reuse " << reuse_path << ": no such file\n";
-      return 2;
-    }
-    // The output is created (truncated) before the earlier table is read.
-    if (std::filesystem::exists(out_path, error) &&
-        std::filesystem::equivalent(reuse_path, out_path, error)) {
-      std::cerr << "--reuse " << reuse_path << " is the --out file; write to another file\n";
-      return 2;
-    }
+  if (!reuse_path.empty() && !std::filesystem::exists(reuse_path)) {
+    std::cerr << "--reuse " << reuse_path << ": no such file\n";
+    return 2;
   }
   if (n < 8 || theta_count < 3 || beta_count < 3 || rs.empty() || rs[0] != 0.0 || psis.empty() ||
       psis[0] != 0.0) {
@@ -259,9 +253,12 @@ int main(int argc, char** argv) {
   const std::size_t per_g = psis.size() * thetas.size() * betas.size() * rs.size();
   const std::size_t total = gs.size() * per_g;
 
-  const hid_t file = H5Fcreate(out_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  // Written beside the output and renamed over it when complete: a failed or interrupted run
+  // leaves the table it would replace (which --reuse may be reading) as it was.
+  const std::string partial_path = out_path + ".partial";
+  const hid_t file = H5Fcreate(partial_path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   if (file < 0) {
-    std::cerr << "cannot create " << out_path << '\n';
+    std::cerr << "cannot create " << partial_path << '\n';
     return 1;
   }
   std::ostringstream description;
@@ -271,8 +268,8 @@ int main(int argc, char** argv) {
          "rolling (wheelwear wear/exact, "
          "exact_sdec) on SDEC patches with the prescribed pressure of Liu, Fu & Bruni 2022, "
          "Eq. 4, "
-      << n << " elements across the patch and at most " << max_aspect
-      << " times as many along its long axis (aspect_sdec_grid; n x n up to a/b = " << max_aspect
+      << n << " elements across the patch, elements at most " << max_aspect
+      << " times as long as wide (aspect_sdec_grid; n x n up to a/b = " << max_aspect
       << ") over [-1.02a, 1.02a] x [y0 - 1.02b, y0 + 1.02b], stopping tolerance 1e-6. "
          "Axes: a_over_b (interpolate in log), psi >= 0 (psi < 0: mirror y -> -y, vy, phi and "
          "Fy change sign), normalised creepages xi = G c^2 C11 vx/(mu N), eta = G c^2 C22 "
@@ -300,10 +297,11 @@ int main(int argc, char** argv) {
     if (!reuse_path.empty()) {
       Reused old;
       try {
-        old = reusable(reuse_path, name, n, max_aspect, spin_scale, psis, thetas, betas, rs);
+        old = reusable(reuse_path, name, nu, n, max_aspect, spin_scale, psis, thetas, betas, rs);
       } catch (const std::exception& e) {
         std::cerr << e.what() << '\n';
         H5Fclose(file);
+        std::filesystem::remove(partial_path);
         return 1;
       }
       for (std::size_t k = 0; k < gs.size(); ++k)
@@ -379,7 +377,7 @@ int main(int argc, char** argv) {
     write_attribute(group, "grid", static_cast<double>(n));
     write_attribute(group, "max_element_aspect", max_aspect);
     write_attribute(group, "spin_scale", spin_scale);
-    write_attribute(group, "generation_seconds", seconds);
+    write_attribute(group, "generation_seconds", seconds);  // this run's solves, reused not counted
     write(group, "a_over_b", gs, {gs.size()}, "1", "ellipticity a/b of the SDEC patch");
     write(group, "psi", psis, {psis.size()}, "1", "shape number psi >= 0");
     write(group, "theta", thetas, {thetas.size()}, "rad", "polar angle of (xi, eta, chi) from chi");
@@ -400,6 +398,13 @@ int main(int argc, char** argv) {
               << std::endl;
   }
   H5Fclose(file);
+  std::error_code error;
+  std::filesystem::rename(partial_path, out_path, error);
+  if (error) {
+    std::cerr << "cannot rename " << partial_path << " to " << out_path << ": " << error.message()
+              << '\n';
+    return 1;
+  }
   std::cout << "-> " << out_path << " in " << seconds_total << " s\n";
   return 0;
 }

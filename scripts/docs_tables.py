@@ -177,7 +177,7 @@ def validation_linear():
         for n in grids:
             r = find(rows, "linear", method, scheme, n)
             skipped = int(r["skipped"])
-            cases = f"{r['calls']}" + (f" ({skipped} patches outside)" if skipped else "")
+            cases = f"{r['calls']}" + (f" ({skipped} outside)" if skipped else "")
             out.append([method_label(r), grid(r), cases, percent(r["err_contact"])])
     return table(["method", "grid", "calls", "largest |F − F_CONTACT| / |F_CONTACT| [%]"], out)
 

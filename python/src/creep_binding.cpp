@@ -32,7 +32,8 @@ struct Inputs {
 
 // Patches per check for Ctrl-C: a few milliseconds of FASTSIM, some tens of the exact theory.
 py::ssize_t chunk_of(tangential::Method method) {
-  return method == tangential::Method::exact || method == tangential::Method::best ? 4 : 256;
+  if (method == tangential::Method::exact) return 4;
+  return method == tangential::Method::best ? 16 : 256;  // best: lookups, or slender exact solves
 }
 
 py::dict creep_arrays(const cli::CreepOptions& options, const std::vector<Array>& arrays,

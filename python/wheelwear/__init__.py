@@ -171,8 +171,8 @@ def creep(
     fastsim-eqe-shifted, fastsim-elliptic, linear-sdec, she-sdec (Shen-Hedrick-Elkins),
     table (the book of exact-theory tables: a/b 0.2-10, |psi| <= 0.8), best (the table inside its
     range; outside it, as ``beyond_table`` says, "exact" (default: Kalker's exact theory, 40
-    elements across the patch, elements at most twice as long as wide, 0.02-2 s a patch) or
-    "fastsim-sdec", as runs do) and exact (Kalker's exact theory on ``exact_grid`` x
+    elements across the patch, elements at most twice as long as wide, 0.05-2 s a patch for
+    a/b 0.05-25) or "fastsim-sdec", as runs do) and exact (Kalker's exact theory on ``exact_grid`` x
     ``exact_grid`` elements, default 40, about 16 ms a patch).
 
     FASTSIM options: ``nx``, ``ny`` (cells, default 50 x 50) or ``target_error`` (the cheapest

@@ -92,6 +92,8 @@ std::string range_text(double lo, double hi) {
   return text.str();
 }
 
+// The advice of the error creep_table_forces throws (not of the reason creep_table_outside gives
+// best, which has already moved on).
 const std::string kFallback = "; use --method best (or fastsim-sdec) there";
 
 // Empty message when covered, else the reason.
@@ -108,8 +110,7 @@ std::string check(const CreepTableData& table, const contactgeom::Sdec& sdec, co
   const double nu_lo = blocks[0].nu, nu_hi = blocks[count - 1].nu;
   std::ostringstream why;
   if (material.nu < nu_lo - 1e-12 || material.nu > nu_hi + 1e-12) {
-    why << "nu = " << material.nu << ": the creep table covers nu = " << range_text(nu_lo, nu_hi)
-        << kFallback;
+    why << "nu = " << material.nu << ": the creep table covers nu = " << range_text(nu_lo, nu_hi);
     return why.str();
   }
   NuBlocks nb;
@@ -126,20 +127,18 @@ std::string check(const CreepTableData& table, const contactgeom::Sdec& sdec, co
     if (!b) continue;
     const double g_lo = b->a_over_b[0], g_hi = b->a_over_b[b->n_g - 1];
     if (g < g_lo * (1 - kSlack) || g > g_hi * (1 + kSlack)) {
-      why << "a/b = " << g << ": the creep table covers a/b = " << range_text(g_lo, g_hi)
-          << kFallback;
+      why << "a/b = " << g << ": the creep table covers a/b = " << range_text(g_lo, g_hi);
       return why.str();
     }
     if (std::abs(sdec.psi) > psi_max(*b) + kSlack) {
-      why << "psi = " << sdec.psi << ": the creep table covers |psi| <= " << psi_max(*b)
-          << kFallback;
+      why << "psi = " << sdec.psi << ": the creep table covers |psi| <= " << psi_max(*b);
       return why.str();
     }
     const double r = normalise(*b, sdec, v, load, material).r();
     if (r > r_max(*b) * (1 + kSlack)) {
       why << "normalised creepage |(xi, eta, chi)| = " << r
           << " (xi = G c^2 C11 vx/(mu N), eta = G c^2 C22 vy/(mu N), chi = " << b->spin_scale
-          << " G c^3 C23 phi/(mu N)): the creep table covers up to " << r_max(*b) << kFallback;
+          << " G c^3 C23 phi/(mu N)): the creep table covers up to " << r_max(*b);
       return why.str();
     }
   }
@@ -250,7 +249,7 @@ double creep_table_magnitude(const contactgeom::Sdec& sdec, const Creepages& cre
                              const ContactLoad& load, const Material& material) {
   NuBlocks nb;
   const std::string why = check(data(creep_table()), sdec, {0, 0, 0}, load, material, &nb);
-  if (!why.empty()) throw InputError(why);
+  if (!why.empty()) throw InputError(why + kFallback);
   double r = normalise(*nb.lower, sdec, creepages, load, material).r();
   if (nb.upper) r = std::max(r, normalise(*nb.upper, sdec, creepages, load, material).r());
   return r;
@@ -275,7 +274,7 @@ CreepForces creep_table_forces(const CreepTable& table, const contactgeom::Sdec&
   const CreepTableData& d = data(table);
   NuBlocks nb;
   const std::string why = check(d, sdec, creepages, load, material, &nb);
-  if (!why.empty()) throw InputError(why);
+  if (!why.empty()) throw InputError(why + kFallback);
   std::array<double, 3> f = evaluate(*nb.lower, sdec, creepages, load, material);
   if (nb.upper && nb.t > 0.0) {
     const std::array<double, 3> u = evaluate(*nb.upper, sdec, creepages, load, material);

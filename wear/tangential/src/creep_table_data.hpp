@@ -16,8 +16,8 @@ namespace wheelwear::tangential::detail {
 struct CreepTableBlock {
   double nu = 0.0;  ///< Poisson's ratio [-]
   int grid = 0;     ///< elements across the patch of the exact solver's grid
-  /// Elements at most this many times as many along the patch's long axis as across
-  /// (aspect_sdec_grid); 0: grid x grid at every a/b (tables made before the attribute).
+  /// Elements at most this many times as long as wide (aspect_sdec_grid); 0: grid x grid at
+  /// every a/b (tables made before the attribute).
   double max_element_aspect = 0.0;
   double spin_scale = 1.0;  ///< s of the normalised spin chi = s G c^3 C23 phi / (mu N) [-]
   int n_g = 0, n_psi = 0, n_theta = 0, n_beta = 0, n_r = 0;

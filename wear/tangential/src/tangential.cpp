@@ -84,6 +84,9 @@ void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages, const
   if (solution.table_outside && options.exact_beyond_table) {
     SolveOptions beyond = options;
     beyond.exact_grid = aspect_sdec_grid(sdec);
+    // Slender patches under small mixed creepage took up to 700 sweeps on this grid in the
+    // slender-patch study: room above that.
+    beyond.exact_solver.max_iterations = std::max(options.exact_solver.max_iterations, 3000);
     const std::optional<std::string> why = std::move(solution.table_outside);
     solve_exact(sdec, creepages, load, material, beyond, solution);
     solution.table_outside = why;

@@ -98,7 +98,7 @@ std::vector<Complex> transform(At at, int nx, int ny, int mx, int my, Fft2d& fft
 // as strongly as its own diagonal, and left to the FFT they made the sweep diverge: on 80 x 80
 // elements over an SDEC of a/b = 10 (elements 10 times longer than wide) under mixed creepage
 // it wandered for 3000 sweeps. With the rows within a quarter of an element's length it
-// converged in 280. Below 6:1 the update did not pay: the sweeps it saved it lost in cost, and
+// converged in 276. Below 6:1 the update did not pay: the sweeps it saved it lost in cost, and
 // on square elements it slowed the Anderson-accelerated iteration (160 x 160, mixed creepage:
 // 384 sweeps against 215).
 int near_row_count(const ElementGrid& grid) {

@@ -37,9 +37,9 @@ struct CreepTableRange {
   /// Largest magnitude of the normalised creepage (xi, eta, chi) [-] (see creep_table_forces).
   double r_max = 0.0;
   int grid = 0;  ///< elements across the patch of the exact solver's grid the table was made with
-  /// Its elements at most this many times as many along the patch's long axis as across (0:
-  /// grid x grid at every a/b); creep_table_grid gives the grid of a patch.
   double spin_scale = 1.0;  ///< s of the normalised spin (creep_table_magnitude) [-]
+  /// Its elements at most this many times as long as wide (0: grid x grid at every a/b);
+  /// creep_table_grid gives the grid of a patch.
   double max_element_aspect = 0.0;
 };
 
