@@ -2,6 +2,7 @@
 // SHA-256, the loader on good, truncated and damaged copies, and forces bit for bit as recorded
 // when the library embedded the table at build time (before it was loaded at run time).
 
+#include <H5Cpp.h>
 #include <gtest/gtest.h>
 #include <stdlib.h>
 
@@ -218,6 +219,28 @@ TEST_F(CreepTableFile, RefusesMissingTruncatedAndDamagedFiles) {
     EXPECT_TRUE(contains(*message, file.string())) << *message;
     EXPECT_TRUE(contains(*message, "WHEELWEAR_DATA_DIR")) << *message;
   }
+}
+
+// The grid rule's attribute: a table without it (written before the rule) reads as n x n at
+// every a/b; an element aspect below 1 is refused naming the attribute.
+TEST_F(CreepTableFile, ReadsTheElementAspectOfItsGrid) {
+  EXPECT_EQ(load_creep_table(copy("shipped.h5")).range().max_element_aspect, 5.0);
+  const auto rewrite = [&](const std::string& name, std::optional<double> aspect) {
+    const fs::path file = copy(name);
+    H5::H5File h5(file.string(), H5F_ACC_RDWR);
+    for (const char* group : {"nu_0.25", "nu_0.28"}) {
+      H5::Group g = h5.openGroup(group);
+      g.removeAttr("max_element_aspect");
+      if (aspect)
+        g.createAttribute("max_element_aspect", H5::PredType::IEEE_F64LE, H5::DataSpace())
+            .write(H5::PredType::NATIVE_DOUBLE, &*aspect);
+    }
+    return file;
+  };
+  EXPECT_EQ(load_creep_table(rewrite("square.h5", std::nullopt)).range().max_element_aspect, 0.0);
+  const auto message = input_error([&] { load_creep_table(rewrite("bad.h5", 0.5)); });
+  ASSERT_TRUE(message);
+  EXPECT_TRUE(contains(*message, "max_element_aspect")) << *message;
 }
 
 TEST_F(CreepTableFile, EnvironmentFolderWithoutTheTableIsAnError) {

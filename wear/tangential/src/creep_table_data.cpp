@@ -190,7 +190,7 @@ CreepTableBlock read_block(const H5::Group& group, const fs::path& file, const s
   const std::optional<double> spin_scale = read_number(group, "spin_scale", file, where);
   const std::optional<double> aspect = read_number(group, "max_element_aspect", file, where);
   if (aspect && !(std::isfinite(*aspect) && *aspect >= 1.0))
-    damaged(file, where + ": attribute max_element_aspect is below 1");
+    damaged(file, where + ": attribute max_element_aspect is not a number of at least 1");
   if (!nu || !std::isfinite(*nu)) damaged(file, where + ": attribute nu is missing or not finite");
   if (!grid || !(*grid >= 1.0 && *grid <= 1e6))
     damaged(file, where + ": attribute grid is missing or not a grid size");
