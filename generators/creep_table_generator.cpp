@@ -29,7 +29,7 @@
 // --reuse takes the nodes of every a/b that OLD.h5 holds with the same other axes, grid rule
 // and nu from it instead of solving them again (to add a/b nodes to a table).
 // The defaults are the shipped table: 2 x 652 080 nodes (567 360 solves per nu), about 75 min
-// on two cores (35 min for a/b 0.2 ... 5, 40 min for 6 ... 10), 21 MB. The nodes are where
+// on two cores (35 min for a/b 0.2 ... 5, 37 min for 6 ... 10), 21 MB. The nodes are where
 // interpolating (creep_table.cpp) needs them to stay within 1 % of mu N of fresh solves
 // (tests/tangential/creep_table_test.cpp): the forces turn fastest with theta where the patch
 // begins to slide fully, and with a/b below 0.3 and above 3 (with nodes at 5, 7 and 10 alone the
