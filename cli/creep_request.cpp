@@ -28,7 +28,7 @@ void check_options(const CreepOptions& o, tangential::Method method) {
   if (o.beyond_table)
     require_choice("--beyond-table", *o.beyond_table,
                    {std::begin(kBeyondTableChoices), std::end(kBeyondTableChoices)});
-  if (method == tangential::Method::best && o.beyond_table.value_or("exact") == "exact") {
+  if (method == tangential::Method::best && o.exact_beyond_table()) {
     // No FASTSIM runs: the table answers inside its range, the exact theory outside.
     const char* fastsim_option = o.nx             ? "--nx"
                                  : o.ny           ? "--ny"
@@ -99,7 +99,7 @@ CreepSolver::CreepSolver(CreepOptions options) : options_(std::move(options)) {
   fastsim.scheme = named(tangential::kSchemeNames, options_.scheme, fastsim.scheme, "--scheme");
   // The exact theory on 1.02 times the patch (CONTACT's SDEC option).
   base_.exact_grid.nx = base_.exact_grid.ny = options_.exact_grid_or_default();
-  base_.exact_beyond_table = options_.beyond_table.value_or("exact") == "exact";
+  base_.exact_beyond_table = options_.exact_beyond_table();
 }
 
 void check_creep_inputs(const contactgeom::Sdec& sdec, const tangential::Creepages& creepages,

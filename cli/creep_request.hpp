@@ -37,6 +37,7 @@ struct CreepOptions {
   std::optional<std::string> beyond_table;
 
   int exact_grid_or_default() const { return exact_grid.value_or(40); }
+  bool exact_beyond_table() const { return beyond_table.value_or("exact") == "exact"; }
 };
 
 /// Throws InputError for an impossible patch, load or creepage (core/plausibility.hpp) and

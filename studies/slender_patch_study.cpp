@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "support/contact_cases.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 #include "wheelwear/tangential/tangential.hpp"
@@ -97,7 +98,6 @@ int main(int argc, char** argv) {
   }
   out << "a_over_b,psi,vx,vy,phi,grid,nx,ny,converged,sweeps,seconds,Fx_muN,Fy_muN,"
          "dF_vs_aspect_muN\n";
-  const double c = 4.25e-3;
   const std::vector<Creepages> creepages = {{0, 0, 0.2},        {0, 0, 1.0},
                                             {5e-4, -5e-4, 0.2}, {1e-3, 5e-4, 0.1},
                                             {-3e-4, 8e-4, 0.4}, {2e-4, 2e-4, 0.05}};
@@ -105,8 +105,8 @@ int main(int argc, char** argv) {
   for (const double g : {0.05, 0.1, 5.0, 7.0, 10.0, 15.0, 20.0, 25.0})
     for (const double psi : {-0.8, -0.4, 0.0, 0.4, 0.8})
       for (const Creepages& v : creepages) {
-        const contactgeom::Sdec patch{c * std::sqrt(g), c / std::sqrt(g), psi};
-        const ContactLoad load{1000e6 * 2.0 * std::acos(-1.0) * patch.a * patch.b / 3.0, 0.35};
+        const contactgeom::Sdec patch = testing::contact::reference_patch(g, psi);
+        const ContactLoad load = testing::contact::reference_load(patch);
         SdecGridOptions contact_grid;  // 80 x 80, margin 1.02: CONTACT's
         const Row aspect = exact_row("aspect", patch, v, load, aspect_sdec_grid(patch));
         std::vector<Row> rows = {exact_row("contact", patch, v, load, contact_grid), aspect,

@@ -28,6 +28,17 @@ inline constexpr tangential::Material kMaterial{80e9, 0.25};
 /// FSTAT = FKIN = 0.35 in every set.
 inline constexpr double kFriction = 0.35;
 
+/// The SDEC patches of the SDEC sets: c = sqrt(ab) = 4.25 mm, of ellipticity a/b and shape psi.
+inline contactgeom::Sdec reference_patch(double a_over_b, double psi) {
+  const double c = 4.25e-3;
+  return {c * std::sqrt(a_over_b), c / std::sqrt(a_over_b), psi};
+}
+
+/// Their load: p0 = 1000 MPa, N = 2 pi a b p0 / 3, and kFriction.
+inline tangential::ContactLoad reference_load(const contactgeom::Sdec& patch) {
+  return {1000e6 * 2.0 * std::acos(-1.0) * patch.a * patch.b / 3.0, kFriction};
+}
+
 // --- The files and how many cases each holds -----------------------------------------------
 
 /// a_linear_coeffs_mx80.csv: 10 ellipticities x 9 shape numbers psi = -0.8 ... 0.8.

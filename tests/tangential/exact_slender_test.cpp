@@ -19,15 +19,9 @@ namespace {
 
 namespace contact = testing::contact;
 
-// CONTACT's reference load: p0 = 1000 MPa on a patch of c = sqrt(ab) = 4.25 mm, mu 0.35.
-contactgeom::Sdec slender_patch(double a_over_b, double psi) {
-  const double c = 4.25e-3;
-  return {c * std::sqrt(a_over_b), c / std::sqrt(a_over_b), psi};
-}
-
-ContactLoad reference_load(const contactgeom::Sdec& s) {
-  return {1000e6 * 2.0 * std::acos(-1.0) * s.a * s.b / 3.0, 0.35};
-}
+// CONTACT's SDEC patches and load (p0 = 1000 MPa, c = 4.25 mm, mu 0.35) at other a/b.
+using contact::reference_load;
+using contact::reference_patch;
 
 // On N x N elements a patch of a/b = 10 has elements ten times longer than wide. Under mixed
 // creepage the sweep that couples the rows only through the FFT wandered there for 3000 sweeps
@@ -36,7 +30,7 @@ ContactLoad reference_load(const contactgeom::Sdec& s) {
 // of mu N measured, bound 1.5 % (the 80 x 80 grid's own distance from the converged answer at
 // a/b = 10 is 0.7-1.4 % of mu N, the 200 x 40 grid's 0.4-0.6 %).
 TEST(ExactSlender, LongElementsConverge) {
-  const contactgeom::Sdec patch = slender_patch(10.0, 0.5);
+  const contactgeom::Sdec patch = reference_patch(10.0, 0.5);
   const ContactLoad load = reference_load(patch);
   const Creepages creepages{5e-4, -5e-4, 0.2};
   SdecGridOptions square;
@@ -56,7 +50,7 @@ TEST(ExactSlender, LongElementsConverge) {
 // The grid keeps `across` elements over the short axis and elements at most max_aspect times
 // longer than wide; a patch no more slender than max_aspect gets the square grid.
 TEST(ExactSlender, AspectGridResolvesTheLongAxis) {
-  const auto grid = [](double a_over_b) { return aspect_sdec_grid(slender_patch(a_over_b, 0)); };
+  const auto grid = [](double a_over_b) { return aspect_sdec_grid(reference_patch(a_over_b, 0)); };
   EXPECT_EQ(grid(10.0).nx, 200);
   EXPECT_EQ(grid(10.0).ny, 40);
   EXPECT_EQ(grid(0.1).nx, 40);
@@ -64,14 +58,14 @@ TEST(ExactSlender, AspectGridResolvesTheLongAxis) {
   EXPECT_EQ(grid(1.5).nx, 40);
   EXPECT_EQ(grid(1.5).ny, 40);
   for (const double g : {0.05, 0.1, 0.3, 1.0, 3.0, 10.0, 25.0}) {
-    const contactgeom::Sdec s = slender_patch(g, 0.2);
+    const contactgeom::Sdec s = reference_patch(g, 0.2);
     const ElementGrid e = sdec_grid(s, aspect_sdec_grid(s));
     const double aspect = std::max(e.dx / e.dy, e.dy / e.dx);
     EXPECT_LE(aspect, 2.0 + 1e-9) << "a/b = " << g;
     EXPECT_EQ(std::min(e.nx, e.ny), 40) << "a/b = " << g;
   }
-  EXPECT_THROW(aspect_sdec_grid(slender_patch(1, 0), 1), InputError);
-  EXPECT_THROW(aspect_sdec_grid(slender_patch(1, 0), 40, 0.5), InputError);
+  EXPECT_THROW(aspect_sdec_grid(reference_patch(1, 0), 1), InputError);
+  EXPECT_THROW(aspect_sdec_grid(reference_patch(1, 0), 40, 0.5), InputError);
 }
 
 // best outside the table, against CONTACT's linear limit (set a) at a/b = 0.1, the 9 patches the
@@ -118,7 +112,7 @@ TEST(ExactSlender, BestBeyondTheTableMatchesContactsLinearLimit) {
 // Without exact_beyond_table best gives FASTSIM-SDEC outside the table, as runs do; with it the
 // exact theory on aspect_sdec_grid, the very solution exact_sdec gives there.
 TEST(ExactSlender, BestBeyondTheTableIsTheExactSolveOnTheAspectGrid) {
-  const contactgeom::Sdec patch = slender_patch(20.0, 0.0);
+  const contactgeom::Sdec patch = reference_patch(20.0, 0.0);
   const ContactLoad load = reference_load(patch);
   const Creepages spin{0, 0, 0.5};
   SolveOptions options;
@@ -134,7 +128,7 @@ TEST(ExactSlender, BestBeyondTheTableIsTheExactSolveOnTheAspectGrid) {
   EXPECT_EQ(single.forces.Fy, exact.forces.Fy);
   EXPECT_EQ(single.forces.Mz, exact.forces.Mz);
   // Inside the table nothing changes: the table answers.
-  const contactgeom::Sdec inside = slender_patch(2.0, 0.3);
+  const contactgeom::Sdec inside = reference_patch(2.0, 0.3);
   const TangentialSolution tabled =
       solve_patch(Method::best, inside, spin, reference_load(inside), {}, options);
   EXPECT_TRUE(tabled.from_table);

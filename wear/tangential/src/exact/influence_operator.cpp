@@ -142,15 +142,17 @@ InfluenceOperator::InfluenceOperator(const ElementGrid& grid, const Material& ma
         return (k[at_k(m, n)].*entry - k[at_k(m + 1, n)].*entry) / dx;
       };
     };
-    cxx_hat_ = transform(c(&InfluenceCoefficients::xx), nx, ny, mx, my, *fft_);
-    cxy_hat_ = transform(c(&InfluenceCoefficients::xy), nx, ny, mx, my, *fft_);
-    cyy_hat_ = transform(c(&InfluenceCoefficients::yy), nx, ny, mx, my, *fft_);
+    const auto cxx = c(&InfluenceCoefficients::xx), cxy = c(&InfluenceCoefficients::xy),
+               cyy = c(&InfluenceCoefficients::yy);
+    cxx_hat_ = transform(cxx, nx, ny, mx, my, *fft_);
+    cxy_hat_ = transform(cxy, nx, ny, mx, my, *fft_);
+    cyy_hat_ = transform(cyy, nx, ny, mx, my, *fft_);
     near_rows_ = near_row_count(grid);
     for (int n = 1; n <= near_rows_; ++n)
       for (int m = -(nx - 1); m < nx; ++m) {
-        cxx_near_.push_back(c(&InfluenceCoefficients::xx)(m, n));
-        cxy_near_.push_back(c(&InfluenceCoefficients::xy)(m, n));
-        cyy_near_.push_back(c(&InfluenceCoefficients::yy)(m, n));
+        cxx_near_.push_back(cxx(m, n));
+        cxy_near_.push_back(cxy(m, n));
+        cyy_near_.push_back(cyy(m, n));
       }
     kxx_row_.resize(static_cast<std::size_t>(row));
     kyy_row_.resize(static_cast<std::size_t>(row));

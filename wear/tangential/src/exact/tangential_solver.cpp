@@ -111,13 +111,11 @@ void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bo
     }
   };
 
-  // The slip a row's change of traction (dpx, dpy over its columns lo ... hi) causes in the
-  // near rows above it, which this sweep has still to solve.
+  // The slip a row's change of traction (dpx, dpy at its contact columns) causes in the near
+  // rows above it, which this sweep has still to solve.
   std::vector<double> dpx(static_cast<std::size_t>(nx)), dpy(static_cast<std::size_t>(nx));
   auto update_near_rows = [&](int j) {
     const auto& src = rows[static_cast<std::size_t>(j)];
-    if (src.empty()) return;
-    const int lo = src.front(), hi = src.back();
     for (int up = 1; up <= op.near_rows() && j + up < ny; ++up) {
       const auto& dst = rows[static_cast<std::size_t>(j + up)];
       if (dst.empty()) continue;
@@ -127,7 +125,7 @@ void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bo
       const std::size_t row0 = static_cast<std::size_t>((j + up) * nx);
       for (const int f : dst) {
         double ax = 0.0, ay = 0.0;
-        for (int i = lo; i <= hi; ++i) {
+        for (const int i : src) {
           const double ux = dpx[static_cast<std::size_t>(i)], uy = dpy[static_cast<std::size_t>(i)];
           ax += cxx[f - i] * ux + cxy[f - i] * uy;
           ay += cxy[f - i] * ux + cyy[f - i] * uy;
@@ -164,9 +162,7 @@ void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bo
       const auto& cols = rows[static_cast<std::size_t>(j)];
       const std::size_t row0 = static_cast<std::size_t>(j * nx);
       const bool near = op.near_rows() > 0 && !cols.empty();
-      if (near) {  // the row's tractions before, zero between its contact elements
-        std::fill(dpx.begin(), dpx.end(), 0.0);
-        std::fill(dpy.begin(), dpy.end(), 0.0);
+      if (near) {  // the row's tractions before
         for (const int i : cols) {
           dpx[static_cast<std::size_t>(i)] = -px[row0 + static_cast<std::size_t>(i)];
           dpy[static_cast<std::size_t>(i)] = -py[row0 + static_cast<std::size_t>(i)];
