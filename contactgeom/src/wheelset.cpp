@@ -285,7 +285,7 @@ WheelsetContact solve_wheelset(const WheelsetOnTrack& track, const WheelsetState
     ++out.touch_evaluations;
     touch = l.found && r.found;
     if (!touch) return 0.0;
-    const double z_left = at.base_left + l.gap, z_right = at.base_right + r.gap;
+    const double z_left = at.base_left + l.resting_gap, z_right = at.base_right + r.resting_gap;
     centre = -(z_left - std::sin(roll) * at.y_left - std::cos(roll) * at.r_left);
     centre_roll = roll;
     return std::sin(roll) * D + std::cos(roll) * (at.r_left - at.r_right) - (z_left - z_right);

@@ -10,6 +10,7 @@
 
 #include "support/reference_profiles.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 #include "wheelwear/profiles/track.hpp"
@@ -91,7 +92,8 @@ TEST(Wheelset, CentredSymmetricWheelsetDoesNotRollAndHasEqualContacts) {
   }
   EXPECT_EQ(w.left.lateral_force, w.right.lateral_force);
   // The centre sits a wheel radius above the taping points, which sit where the wheels first
-  // touch: the rail's top plus the first touch's gap below the wheel profile's datum.
+  // touch: the rail's top plus the first touch's gap below the wheel profile's datum (on the
+  // tread no other minimum shares the load: WheelRailTouch::resting_gap is the gap).
   const WheelRailPair& pair = s1002_on_60e1();
   const double z_tape = pair.wheel.surface_at(0.0)->z;
   const double z_top = profiles::top_of_rail(pair.rail).point.y();
@@ -254,6 +256,55 @@ TEST(Wheelset, AFlankDipBetweenTheCoarseScansPointsLoadsContinuously) {
   EXPECT_LT(largest_step, 2.5e3);
   // The same strips sampled once the scan sees the dip: to rounding (measured 0.002 N).
   EXPECT_LT(largest_miss, 1.0);
+}
+
+// A measured wheel on a measured rail (tests/data/measured: MiniProf Car7216_0001r.whl fitted
+// over 2 mm, on avg_HR.BAN as it lies in its file), the rail's gauge face steeper than the
+// wheel's flank (80 against 74 deg): the flank's minimum overtakes the tread's at a contact
+// angle of 1.2 rad, where the lever r tan(angle) of a rolled wheel nearly equals the distance D
+// between the taping points and the flank's height hardly changes with the roll. Resting at the
+// lower of the two minima, the wheelset's roll ran away by 2.2e-5 rad within 20 nm of shift,
+// and the wheel's lateral force jumped across the balance the leading wheelset of R 500 m needs
+// (the curving found none). Resting where both share its load, the roll turns from the tread's
+// rate (1e-7 rad per um) to the flank's over 5.21-5.233 mm: over 0.05 um steps through the
+// steepest part of the takeover it moves at most at the rate it keeps once the flank carries the
+// wheel (2.2e-5 rad per um over 5.233-5.26 mm; bound with half again as margin), and by 6e-5 rad
+// in all.
+TEST(Wheelset, AMeasuredFlankTakesOverFromTheTreadWithoutARunawayRoll) {
+  profiles::LoadOptions wheel_options;
+  wheel_options.read.body = profiles::Body::wheel;
+  wheel_options.curve.smoothing_length = 2e-3;
+  profiles::LoadOptions rail_options;
+  rail_options.read.body = profiles::Body::rail;
+  WheelRailPair pair(
+      profiles::load_profile(testing::test_data("measured/Car7216_0001r.whl"), wheel_options)
+          .profile,
+      profiles::load_profile(testing::test_data("measured/avg_HR.BAN"), rail_options).profile);
+  pair.wheel_radius = 0.46;
+  const WheelsetOnTrack t{pair, pair};
+  double previous = std::nan(""), first = 0.0, last = 0.0, largest_step = 0.0;
+  int compared = 0;
+  for (int step = 0; step <= 60; ++step) {
+    WheelsetState s;
+    s.dy = 5.2295e-3 + step * 0.05e-6;
+    s.yaw = 1.02e-3;
+    s.vertical_force_left = 55.3e3;  // the leading wheelset's loads in R 500 m
+    s.vertical_force_right = 53.8e3;
+    const WheelsetContact c = solve_wheelset(t, s);
+    ASSERT_TRUE(c.roll_converged) << c.message;
+    if (step == 0) first = c.roll;
+    last = c.roll;
+    if (std::isfinite(previous)) {
+      largest_step = std::max(largest_step, std::abs(c.roll - previous));
+      ++compared;
+    }
+    previous = c.roll;
+  }
+  RecordProperty("largest_roll_step", std::to_string(largest_step));
+  RecordProperty("roll_change", std::to_string(last - first));
+  EXPECT_EQ(compared, 60);
+  EXPECT_LT(largest_step, 1.5 * 2.2e-5 * 0.05);  // the runaway: 2.2e-5 rad in 0.02 um
+  EXPECT_LT(last - first, -3e-5);                // the flank does take over within the sweep
 }
 
 TEST(WheelsetInput, RejectsBadStatesAndMismatchedPairs) {

@@ -16,6 +16,7 @@
 #include "support/csv_table.hpp"
 #include "support/reference_profiles.hpp"
 #include "wheelwear/profiles/profile_loader.hpp"
+#include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/vehicle/vehicle_file.hpp"
 
 namespace wheelwear::vehicle {
@@ -236,6 +237,50 @@ TEST(QuasiStaticCurving, AWavyMeasuredWheelFindsItsBalanceWhenFittedSmoother) {
     expect_equilibrium(v, models, curve, c, compared);
   }
   EXPECT_EQ(compared, 2 * 19);
+}
+
+// The same wheel on a measured rail (avg_HR.BAN as it lies in its file), whose gauge face is
+// steeper than the wheel's flank (80 against 74 deg): in R 500 m the leading wheelsets rest
+// where the flank takes over from the tread (5.23 mm). There the wheelset's roll ran away while
+// each wheel rested at its gap's lowest minimum, the lateral force jumped across the balance (by
+// 56 kN within 20 nm), and neither hand found one. Resting where the minima within an elastic
+// approach share the load (WheelRailTouch::resting_gap), every body is in equilibrium, and the
+// hands mirror (to the solver's tolerance: 1e-7 m g on a flank stiffness of 1e10 N/m leaves the
+// shifts 1e-10 m apart; bound 1e-8 m). (In R 3000 m on this model the trailing bogie's leading
+// wheelset still stalls 70 N short, where a flank patch two strips wide jumps by 100 N of its
+// normal force within 0.1 nm of shift: the flank's normal problem, not the roll.)
+TEST(QuasiStaticCurving, AMeasuredWheelOnAMeasuredRailFindsItsBalanceWhereItsFlankTakesOver) {
+  const Vehicle v = default_vehicle();
+  // As a scene with this wheel and rail reads and solves them (`wheelwear curving SCENE`): the
+  // wheel's nominal radius 0.46 m, FASTSIM on 30 x 30 cells.
+  profiles::ProfileFileOptions wheel_file;
+  wheel_file.smoothing_length = 2e-3;
+  WheelsetModel model = standard_wheelset(
+      profiles::wheel_profile(test_data("measured/Car7216_0001r.whl"), 0.46, wheel_file),
+      profiles::rail_profile(test_data("measured/avg_HR.BAN"), std::nullopt));
+  model.solve.fastsim.nx = model.solve.fastsim.ny = 30;
+  model.solve.fastsim.cell_fields = false;
+  const auto models = four(model);
+  int compared = 0;
+  for (double radius : {500.0, 1000.0}) {
+    const SteadyCurve curve = curve_of(radius, 0.1, 20.0);
+    const VehicleCurving c = solve_vehicle_curving(v, models, curve);
+    ASSERT_TRUE(c.converged) << "R " << radius << ": " << c.message;
+    expect_equilibrium(v, models, curve, c, compared);
+    if (radius != 500.0) continue;
+    const SteadyCurve mirrored = curve_of(-radius, 0.1, 20.0);
+    const VehicleCurving m = solve_vehicle_curving(v, models, mirrored);
+    ASSERT_TRUE(m.converged) << "R " << -radius << ": " << m.message;
+    expect_equilibrium(v, models, mirrored, m, compared);
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_NEAR(c.wheelsets[k].state.dy, -m.wheelsets[k].state.dy, 1e-8) << k;
+      ++compared;
+    }
+    // The leading wheelsets rest where the flank takes over.
+    EXPECT_NEAR(c.wheelsets[0].state.dy, 5.23e-3, 0.02e-3);
+    ++compared;
+  }
+  EXPECT_EQ(compared, 3 * 19 + 5);
 }
 
 // Traction and braking on the leading bogie's axles only: every body still in balance, the

@@ -10,11 +10,9 @@
 
 namespace wheelwear::vehicle::testing {
 
-// `wheel` (default: a new S1002) on the default track.
-inline WheelsetModel standard_wheelset(const profiles::Profile& wheel = profiles::s1002()) {
-  profiles::Rail60E1Options rail_options;
-  rail_options.inclination = 0.025;
-  const profiles::Profile rail = profiles::rail_60e1(rail_options);
+// `wheel` on `rail` (as it lies in the track), standard gauge.
+inline WheelsetModel standard_wheelset(const profiles::Profile& wheel,
+                                       const profiles::Profile& rail) {
   WheelsetModel model{
       {contactgeom::WheelRailPair(wheel, rail), contactgeom::WheelRailPair(wheel, rail)}};
   for (contactgeom::WheelRailPair* p : {&model.track.left, &model.track.right}) {
@@ -24,6 +22,13 @@ inline WheelsetModel standard_wheelset(const profiles::Profile& wheel = profiles
   }
   model.method = tangential::Method::fastsim_sdec;
   return model;
+}
+
+// `wheel` (default: a new S1002) on the default track.
+inline WheelsetModel standard_wheelset(const profiles::Profile& wheel = profiles::s1002()) {
+  profiles::Rail60E1Options rail_options;
+  rail_options.inclination = 0.025;
+  return standard_wheelset(wheel, profiles::rail_60e1(rail_options));
 }
 
 inline std::array<WheelsetModel, kWheelsets> four(const WheelsetModel& m) {

@@ -165,9 +165,16 @@ WheelRailContact solve_wheel_rail(const WheelRailPair& pair, const WheelsetPose&
 /// the wheel rolled about its taping point), sampled every options.strip_width and refined by a
 /// parabola through the lowest sample and its neighbours.
 struct WheelRailTouch {
-  bool found = false;           ///< false where the profiles do not overlap laterally
-  double gap = 0.0;             ///< minimum vertical gap [m]: how far the wheel moves down (+z)
-                                ///< from the profiles' common datum to touch its rail
+  bool found = false;  ///< false where the profiles do not overlap laterally
+  double gap = 0.0;    ///< minimum vertical gap [m]: how far the wheel moves down (+z)
+                       ///< from the profiles' common datum to touch its rail
+  /// Where the wheel of a wheelset rests [m]: `gap`, unless a minimum of the gap on a flank so
+  /// steep that the roll hardly lifts the wheel off it (above about 1 rad) lies within an
+  /// elastic approach (50 um) of the lowest; then smaller (the minima sharing the load as equal
+  /// Hertzian springs, the wheel sinks less than into one), so that the wheelset's roll
+  /// (solve_wheelset puts each wheel at this depth) moves smoothly as the flank's minimum
+  /// overtakes the tread's. first_touch, without a wheelset: `gap`.
+  double resting_gap = 0.0;
   double y_rail = 0.0;          ///< touch point on the rail profile, + towards the gauge side [m]
   double y_wheel = 0.0;         ///< touch point on the wheel profile, + towards the flange [m]
   double contact_angle = 0.0;   ///< as WheelRailPatch::contact_angle [rad]
