@@ -106,6 +106,15 @@ void expect_equilibrium(const Vehicle& v, const std::array<WheelsetModel, 4>& mo
   compared += 3;
 }
 
+// The vehicle solved in `curve`, converged and with every body in balance (expect_equilibrium).
+VehicleCurving solved_in_equilibrium(const Vehicle& v, const std::array<WheelsetModel, 4>& models,
+                                     const SteadyCurve& curve, int& compared) {
+  VehicleCurving c = solve_vehicle_curving(v, models, curve);
+  EXPECT_TRUE(c.converged) << "R " << curve.running.curve_radius << ": " << c.message;
+  if (c.converged) expect_equilibrium(v, models, curve, c, compared);
+  return c;
+}
+
 TEST(QuasiStaticCurving, EveryBodyIsInEquilibrium) {
   const Vehicle v = default_vehicle();
   const auto models = four(standard_wheelset());
@@ -230,12 +239,8 @@ TEST(QuasiStaticCurving, AWavyMeasuredWheelFindsItsBalanceWhenFittedSmoother) {
   const auto models = four(standard_wheelset(
       profiles::load_profile(test_data("measured/Car7216_0001r.whl"), options).profile));
   int compared = 0;
-  for (double radius : {3000.0, 1000.0}) {
-    const SteadyCurve curve = curve_of(radius, 0.1, 25.0);
-    const VehicleCurving c = solve_vehicle_curving(v, models, curve);
-    ASSERT_TRUE(c.converged) << "R " << radius << ": " << c.message;
-    expect_equilibrium(v, models, curve, c, compared);
-  }
+  for (double radius : {3000.0, 1000.0})
+    solved_in_equilibrium(v, models, curve_of(radius, 0.1, 25.0), compared);
   EXPECT_EQ(compared, 2 * 19);
 }
 
@@ -262,24 +267,18 @@ TEST(QuasiStaticCurving, AMeasuredWheelOnAMeasuredRailFindsItsBalanceWhereItsFla
   model.solve.fastsim.cell_fields = false;
   const auto models = four(model);
   int compared = 0;
-  for (double radius : {500.0, 1000.0}) {
-    const SteadyCurve curve = curve_of(radius, 0.1, 20.0);
-    const VehicleCurving c = solve_vehicle_curving(v, models, curve);
-    ASSERT_TRUE(c.converged) << "R " << radius << ": " << c.message;
-    expect_equilibrium(v, models, curve, c, compared);
-    if (radius != 500.0) continue;
-    const SteadyCurve mirrored = curve_of(-radius, 0.1, 20.0);
-    const VehicleCurving m = solve_vehicle_curving(v, models, mirrored);
-    ASSERT_TRUE(m.converged) << "R " << -radius << ": " << m.message;
-    expect_equilibrium(v, models, mirrored, m, compared);
-    for (int k = 0; k < 4; ++k) {
-      EXPECT_NEAR(c.wheelsets[k].state.dy, -m.wheelsets[k].state.dy, 1e-8) << k;
-      ++compared;
-    }
-    // The leading wheelsets rest where the flank takes over.
-    EXPECT_NEAR(c.wheelsets[0].state.dy, 5.23e-3, 0.02e-3);
+  solved_in_equilibrium(v, models, curve_of(1000.0, 0.1, 20.0), compared);
+  const VehicleCurving right =
+      solved_in_equilibrium(v, models, curve_of(500.0, 0.1, 20.0), compared);
+  const VehicleCurving left =
+      solved_in_equilibrium(v, models, curve_of(-500.0, 0.1, 20.0), compared);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_NEAR(right.wheelsets[k].state.dy, -left.wheelsets[k].state.dy, 1e-8) << k;
     ++compared;
   }
+  // The leading wheelsets rest where the flank takes over.
+  EXPECT_NEAR(right.wheelsets[0].state.dy, 5.23e-3, 0.02e-3);
+  ++compared;
   EXPECT_EQ(compared, 3 * 19 + 5);
 }
 
