@@ -1,37 +1,42 @@
 #pragma once
-// The depth at which a wheel rests on its rail where its gap has several minima of nearly the
-// same depth (internal to contactgeom).
+// The depth at which a wheel of a wheelset rests on its rail where its gap has several minima of
+// nearly the same depth (internal to contactgeom).
 //
 // The rigid wheelset's roll puts each wheel at its gap's lowest eligible minimum. Where a second
 // minimum overtakes the first (a flank taking over from the tread), the roll then changes its
 // law at once: on a flank as steep as the wheelset's lever allows (r tan(angle) near the
-// distance between the wheels' taping points) the height of the new minimum hardly changes with
-// the roll, and the roll ran away by 2e-5 rad within 20 nm of shift (a measured wheel on a
+// distance D between the wheels' taping points) the height of the new minimum hardly changes
+// with the roll, and the roll ran away by 2e-5 rad within 20 nm of shift (a measured wheel on a
 // measured rail, Car7216 on avg_HR), taking the flank's load with it: no balance lay on either
 // side. An elastic wheel shares its load between the regions within its approach. So the wheel
 // rests at the height H where the minima, taken as equal Hertzian springs, carry what one alone
-// carries at `approach`: sum w_j (H - h_j)^(3/2) over the minima below H = approach^(3/2). A
-// minimum's weight w is the product of two smooth steps:
+// carries at `approach`: sum w_j (H - h_j)^(3/2) over the minima below H = approach^(3/2), the
+// lowest minimum with weight 1. The others' weights are the product of smooth steps:
 // - by the roll's lever (lever_share): only where a minimum lies on such a flank does the rigid
-//   roll need the elastic sharing; on the tread and the flange root it passes from one minimum
-//   to the next with a kink only, and sharing there cost more Newton iterations on worn
-//   profiles than it saved (measured over the built-in route on 16 worn wheels);
-// - by its ridge: a minimum separated from a deeper one by a ridge lower than the approach lies
-//   in the same region once loaded (a ripple of a worn tread): 0 behind no ridge (as where it
-//   is born), 1 behind a ridge of `approach` or more.
-// The wheel's touch has weight 1. The resting gap H - approach is the touch's gap while no other
-// minimum with weight is within reach (the single-basin result is unchanged), and moves smoothly
-// as another comes within reach and overtakes it (their weights swap as their depths cross, the
-// sum unchanged).
+//   roll need the sharing; on the tread and the flange root it passes from one minimum to the
+//   next with a kink only, and sharing there cost more Newton iterations on worn profiles than
+//   it saved (measured over the built-in route on 16 worn wheels);
+// - by its rise to the ridge towards a deeper minimum: one behind a ridge lower than the
+//   approach lies in the same region once loaded (a ripple of a worn tread), none behind no
+//   ridge (where a minimum is born).
+// The resting gap H - approach is the touch's gap while no other minimum with weight is within
+// reach (the single-basin result is unchanged, bit for bit), and moves continuously as another
+// comes within reach and overtakes it: the weights depend on the minima's depths and angles
+// only, not on which one is the touch, and two minima's weights are equal where their depths
+// cross.
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <vector>
+
+#include "wheel_rail_gap.hpp"
 
 namespace wheelwear::contactgeom::detail {
 
-// The shared approach [m]: a tread contact's approach under a wheel load, 50 um at 30-40 kN
-// (S1002 on 60E1: 79 um at 55 kN), so minima 50 um apart share the load.
+// The shared approach [m]: a tread contact's approach under a wheel load (S1002 on 60E1: 79 um
+// at 55 kN, about 50 um at 27 kN), so minima 50 um apart share the load.
 constexpr double kSharedApproach = 50e-6;
 
 // 0 at t <= 0, 1 at t >= 1, smooth (C1) between.
@@ -40,59 +45,130 @@ inline double smoothstep(double t) {
   return t * t * (3.0 - 2.0 * t);
 }
 
-// The share a minimum takes by the roll's lever at it and at the touch, the lesser of the two:
-// lever = 1 - tan(angle) / tan(atan(D / r)), the share of the roll's lift of the wheel that a
-// contact at that angle does not give back by moving the wheel into its rail. On the tread and
-// flange root (lever 0.6 to 1) the rigid roll passes from one minimum to another with a kink
-// only, and a minimum takes no share (the result is the rigid wheelset's); on a flank with a
-// lever below 0.3 (1.16 rad for a 0.46 m wheel on standard gauge) a full one.
+// The roll's lever at a contact angle: 1 - tan(angle) / tan(steepest) with steepest = atan(D/r),
+// the share of the roll's lift of the wheel that a contact there does not give back by moving
+// the wheel into its rail (1 on the tread, 0 at steepest).
+inline double roll_lever(double angle, double steepest) {
+  return 1.0 - std::tan(angle) / std::tan(steepest);
+}
+
+// The share a minimum takes by the roll's lever: none from 0.6 up (tread and flange root, up to
+// 0.92 rad for a 0.46 m wheel on standard gauge), all below 0.3 (from 1.16 rad), and tapering
+// to none again over the last 0.05 before the steepest contact (a minimum steeper still is not
+// eligible as the touch: rigid contact there has no roll).
 inline double lever_share(double lever) {
-  return smoothstep((0.6 - lever) / 0.3);
+  return smoothstep((0.6 - lever) / 0.3) * smoothstep(lever / 0.05);
 }
 
 struct RestingMinimum {
   double h = 0.0;      // gap [m]
-  double ridge = 0.0;  // rise to the lowest ridge towards a deeper minimum [m] (inf: none)
-  double share = 1.0;  // lever_share of it and the touch
+  double rise = 0.0;   // from it to the lowest ridge towards a deeper minimum [m] (inf: none)
+  double share = 0.0;  // by the roll's lever, in [0, 1]
 };
 
-// The weight of a minimum whose ridge towards a deeper one rises `ridge` [m].
-inline double resting_weight(double ridge, double approach = kSharedApproach) {
-  return smoothstep(ridge / approach);
-}
-
-// Its weight in the resting gap.
+// A minimum's weight in the resting gap (the lowest's is 1 whatever this says).
 inline double resting_weight(const RestingMinimum& m, double approach = kSharedApproach) {
-  return m.share * resting_weight(m.ridge, approach);
+  return m.share * smoothstep(m.rise / approach);
 }
 
-// The resting gap [m] of the touch `touch` [m] and the other minima `others`, at `approach`
-// [m] > 0.
-inline double resting_gap(double touch, const std::vector<RestingMinimum>& others,
+// The resting gap [m] of minima `minima` (not empty), at `approach` [m] > 0: the lowest with
+// weight 1, the others with resting_weight.
+inline double resting_gap(const std::vector<RestingMinimum>& minima,
                           double approach = kSharedApproach) {
-  const auto reach = [&](const RestingMinimum& m) {
-    return m.h < touch + approach && resting_weight(m, approach) > 0.0;
-  };
-  if (std::none_of(others.begin(), others.end(), reach)) return touch;
+  std::size_t low = 0;
+  for (std::size_t j = 1; j < minima.size(); ++j)
+    if (minima[j].h < minima[low].h) low = j;
+  const double lowest = minima[low].h;
+  const auto weight = [&](std::size_t j) { return j == low ? 1.0 : resting_weight(minima[j]); };
   const double target = approach * std::sqrt(approach);
   const auto carried = [&](double H) {
-    double sum = H > touch ? (H - touch) * std::sqrt(H - touch) : 0.0;
-    for (const RestingMinimum& m : others)
-      if (H > m.h) sum += resting_weight(m, approach) * (H - m.h) * std::sqrt(H - m.h);
+    double sum = 0.0;
+    for (std::size_t j = 0; j < minima.size(); ++j)
+      if (H > minima[j].h) sum += weight(j) * (H - minima[j].h) * std::sqrt(H - minima[j].h);
     return sum;
   };
-  // The touch alone carries the target at touch + approach, so H lies below that; and above
-  // the lowest minimum with weight (the sum vanishes below it). The sum rises monotonically
-  // with H: bisection to 1e-12 of the approach.
-  double lo = touch;
-  for (const RestingMinimum& m : others)
-    if (resting_weight(m, approach) > 0.0) lo = std::min(lo, m.h);
-  double hi = touch + approach;
-  while (hi - lo > 1e-12 * approach) {
+  // The lowest alone carries the target at lowest + approach, so H lies between it and that.
+  // The sum rises monotonically with H: bisection until the bracket stops shrinking.
+  double lo = lowest, hi = lowest + approach;
+  for (int i = 0; i < 80; ++i) {
     const double mid = 0.5 * (lo + hi);
+    if (mid == lo || mid == hi) break;
     (carried(mid) > target ? hi : lo) = mid;
   }
   return 0.5 * (lo + hi) - approach;
+}
+
+// The resting gap [m] of the sampled gap `g` whose touch is sample `k`, refined to `touch_gap`,
+// on a wheelset whose steepest touching contact is `steepest` (atan(D/r)) [rad]. `angle(j)`
+// gives the contact angle at sample j, `refined(j)` the gap of the local minimum at sample j
+// refined by its neighbours. The candidates are the local minima (the touch and those less
+// steep than `steepest` whose refined gap lies within reach of the touch's); a ridge is the
+// highest sample between two minima, across windows that touch (a gap in the samples is a
+// ridge of +inf).
+template <class Angle, class Refined>
+double resting_gap(const GapSamples& g, std::size_t k, double touch_gap, double steepest,
+                   const Angle& angle, const Refined& refined, double approach = kSharedApproach) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const std::size_t n = g.h.size();
+  // Whether samples i - 1 and i are neighbours: the same window, or windows that touch.
+  const auto joined = [&](std::size_t i) {
+    return g.window[i] == g.window[i - 1] || g.y[i] - g.y[i - 1] <= 1.5 * g.dy;
+  };
+  struct Candidate {
+    std::size_t sample;
+    double lever;
+    RestingMinimum m;
+  };
+  thread_local std::vector<Candidate> candidates;
+  candidates.clear();
+  for (std::size_t j = 0; j < n; ++j) {
+    const double left = j > 0 && joined(j) ? g.h[j - 1] : inf;
+    const double right = j + 1 < n && joined(j + 1) ? g.h[j + 1] : inf;
+    const bool minimum = j == k || (left > g.h[j] && right >= g.h[j]);
+    if (!minimum) continue;
+    const double h = j == k ? touch_gap : refined(j);
+    if (j != k && !(h < touch_gap + approach)) continue;
+    const double a = angle(j);
+    if (j != k && !(a < steepest)) continue;
+    candidates.push_back({j, roll_lever(a, steepest), {h, inf, 0.0}});
+  }
+  double lowest = inf;
+  for (const Candidate& c : candidates) lowest = std::min(lowest, c.m.h);
+  // The lever that pairs share: the least over the candidates, each raised by its depth above
+  // the lowest in approaches, so that it changes continuously as minima come within reach and
+  // cross, whichever one is the touch.
+  double paired = inf;
+  for (const Candidate& c : candidates)
+    paired = std::min(paired, c.lever + (c.m.h - lowest) / approach);
+  for (Candidate& c : candidates) c.m.share = lever_share(std::min(c.lever, paired));
+  // Bit for bit the touch's gap where no other minimum shares (the tread's).
+  if (std::none_of(candidates.begin(), candidates.end(),
+                   [&](const Candidate& c) { return c.sample != k && c.m.share > 0.0; }))
+    return touch_gap;
+  std::vector<RestingMinimum> minima;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    Candidate& c = candidates[i];
+    // The rise to the lowest ridge towards a deeper candidate, on either side.
+    const auto rise_towards = [&](std::ptrdiff_t step) {
+      double ridge = -inf;
+      std::size_t s = c.sample;
+      for (std::ptrdiff_t m = static_cast<std::ptrdiff_t>(i) + step;
+           m >= 0 && m < static_cast<std::ptrdiff_t>(candidates.size()); m += step) {
+        const Candidate& other = candidates[static_cast<std::size_t>(m)];
+        while (s != other.sample) {
+          const std::size_t next = step > 0 ? s + 1 : s - 1;
+          if (!joined(std::max(s, next))) return inf;
+          s = next;
+          ridge = std::max(ridge, g.h[s]);
+        }
+        if (other.m.h < c.m.h) return ridge - c.m.h;
+      }
+      return inf;
+    };
+    c.m.rise = std::min(rise_towards(-1), rise_towards(+1));
+    minima.push_back(c.m);
+  }
+  return resting_gap(minima, approach);
 }
 
 }  // namespace wheelwear::contactgeom::detail

@@ -103,56 +103,6 @@ std::size_t lowest_touch(const WheelRailGap& geometry, const GapSamples& g, doub
   return best;
 }
 
-// The sampled gap's local minima other than the touch `k` that may share its load: those less
-// steep than `steepest` (atan(D / r) of the wheelset), within reach of the touch's gap
-// `touch_gap` and with a share by the roll's lever (lever_share), each refined, with the rise
-// from its sample to the lowest ridge towards a deeper minimum of its window (+inf: none;
-// windows are separate regions).
-std::vector<RestingMinimum> resting_minima(const WheelRailGap& geometry, const GapSamples& g,
-                                           std::size_t k, double touch_gap, double steepest) {
-  // Without a wheelset (steepest = inf) there is no roll to share a load for.
-  if (!std::isfinite(steepest)) return {};
-  const auto roll_lever = [&](double angle) { return 1.0 - std::tan(angle) / std::tan(steepest); };
-  const double touch_lever = roll_lever(geometry.contact_angle(g.y[k]));
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  const auto neighbour = [&g](std::size_t j, std::size_t i) {
-    return i < g.h.size() && g.window[i] == g.window[j] ? g.h[i] : inf;
-  };
-  thread_local std::vector<std::size_t> minima;
-  minima.clear();
-  for (std::size_t j = 0; j < g.h.size(); ++j)
-    if ((j == 0 || neighbour(j, j - 1) > g.h[j]) && neighbour(j, j + 1) >= g.h[j])
-      minima.push_back(j);
-  // The highest sample between minima a and b of one window (a < b).
-  const auto ridge = [&g](std::size_t a, std::size_t b) {
-    return *std::max_element(g.h.begin() + static_cast<std::ptrdiff_t>(a),
-                             g.h.begin() + static_cast<std::ptrdiff_t>(b) + 1);
-  };
-  std::vector<RestingMinimum> out;
-  for (std::size_t i = 0; i < minima.size(); ++i) {
-    const std::size_t j = minima[i];
-    if (j == k || !(g.h[j] < touch_gap + kSharedApproach) ||
-        !(geometry.contact_angle(g.y[j]) < steepest))
-      continue;
-    const double share =
-        lever_share(std::min(roll_lever(geometry.contact_angle(g.y[j])), touch_lever));
-    if (share <= 0.0) continue;
-    double rise = inf;
-    for (std::size_t m = i; m-- > 0 && g.window[minima[m]] == g.window[j];)
-      if (g.h[minima[m]] < g.h[j]) {
-        rise = ridge(minima[m], j) - g.h[j];
-        break;
-      }
-    for (std::size_t m = i + 1; m < minima.size() && g.window[minima[m]] == g.window[j]; ++m)
-      if (g.h[minima[m]] < g.h[j]) {
-        rise = std::min(rise, ridge(j, minima[m]) - g.h[j]);
-        break;
-      }
-    out.push_back({refined_minimum(g, j, j).h, rise, share});
-  }
-  return out;
-}
-
 }  // namespace
 
 WheelRailTouch first_touch_at(const WheelRailPair& pair, const WheelsetPose& pose,
@@ -170,7 +120,13 @@ WheelRailTouch first_touch_at(const WheelRailPair& pair, const WheelsetPose& pos
   const GapMinimum m = refined_minimum(g, k, k);
   touch.found = true;
   touch.gap = m.h;
-  touch.resting_gap = resting_gap(m.h, resting_minima(geometry, g, k, m.h, steepest));
+  // Without a wheelset (steepest = inf) there is no roll to share a load for.
+  touch.resting_gap =
+      std::isfinite(steepest)
+          ? resting_gap(
+                g, k, m.h, steepest, [&](std::size_t j) { return geometry.contact_angle(g.y[j]); },
+                [&](std::size_t j) { return refined_minimum(g, j, j).h; })
+          : m.h;
   touch.y_rail = -m.y;
   touch.contact_angle = geometry.contact_angle(m.y);
   const auto w = geometry.wheel_at(m.y);

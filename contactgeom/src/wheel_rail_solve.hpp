@@ -15,7 +15,9 @@ WheelRailContact solve_wheel_rail_at(const WheelRailPair& pair, const WheelsetPo
 
 // first_touch with gauge_y = rail_gauge_y(pair) [m]; the input is not validated again.
 // `steepest`: the touch is the lowest local minimum of the gap whose contact angle is below
-// this [rad] (the gap's lowest point where none is); +inf: the gap's lowest point.
+// this [rad] (the gap's lowest point where none is), and WheelRailTouch::resting_gap shares its
+// load with the minima of a flank nearly that steep (resting_gap.hpp); +inf: the gap's lowest
+// point, resting_gap = gap.
 WheelRailTouch first_touch_at(const WheelRailPair& pair, const WheelsetPose& pose,
                               const WheelRailOptions& options, double gauge_y,
                               double steepest = std::numeric_limits<double>::infinity());

@@ -265,11 +265,11 @@ TEST(Wheelset, AFlankDipBetweenTheCoarseScansPointsLoadsContinuously) {
 // between the taping points and the flank's height hardly changes with the roll. Resting at the
 // lower of the two minima, the wheelset's roll ran away by 2.2e-5 rad within 20 nm of shift,
 // and the wheel's lateral force jumped across the balance the leading wheelset of R 500 m needs
-// (the curving found none). Resting where both share its load, the roll turns from the tread's
-// rate (1e-7 rad per um) to the flank's over 5.21-5.233 mm: over 0.05 um steps through the
-// steepest part of the takeover it moves at most at the rate it keeps once the flank carries the
-// wheel (2.2e-5 rad per um over 5.233-5.26 mm; bound with half again as margin), and by 6e-5 rad
-// in all.
+// (the curving found none; the runaway lay at 5.2285 mm). Resting where both share its load,
+// the roll turns from the tread's rate (7.5e-8 rad per um) to the flank's over 5.211-5.229 mm:
+// over 5 nm steps through 5.205-5.235 mm it moves at most at the rate it keeps once the flank
+// carries the wheel (2.15e-5 rad per um over 5.232-5.25 mm; bound 2.2e-5 with half again as
+// margin), and by 1.6e-4 rad in all.
 TEST(Wheelset, AMeasuredFlankTakesOverFromTheTreadWithoutARunawayRoll) {
   profiles::LoadOptions wheel_options;
   wheel_options.read.body = profiles::Body::wheel;
@@ -284,11 +284,12 @@ TEST(Wheelset, AMeasuredFlankTakesOverFromTheTreadWithoutARunawayRoll) {
   const WheelsetOnTrack t{pair, pair};
   double previous = std::nan(""), first = 0.0, last = 0.0, largest_step = 0.0;
   int compared = 0;
-  for (int step = 0; step <= 60; ++step) {
+  constexpr double kStep = 5e-9;  // [m]
+  for (int step = 0; step <= 6000; ++step) {
     WheelsetState s;
-    s.dy = 5.2295e-3 + step * 0.05e-6;
-    s.yaw = 1.02e-3;
-    s.vertical_force_left = 55.3e3;  // the leading wheelset's loads in R 500 m
+    s.dy = 5.205e-3 + step * kStep;
+    s.yaw = 5.13e-3;  // the leading wheelset's yaw and loads in R 500 m
+    s.vertical_force_left = 55.3e3;
     s.vertical_force_right = 53.8e3;
     const WheelsetContact c = solve_wheelset(t, s);
     ASSERT_TRUE(c.roll_converged) << c.message;
@@ -300,11 +301,11 @@ TEST(Wheelset, AMeasuredFlankTakesOverFromTheTreadWithoutARunawayRoll) {
     }
     previous = c.roll;
   }
-  RecordProperty("largest_roll_step", std::to_string(largest_step));
-  RecordProperty("roll_change", std::to_string(last - first));
-  EXPECT_EQ(compared, 60);
-  EXPECT_LT(largest_step, 1.5 * 2.2e-5 * 0.05);  // the runaway: 2.2e-5 rad in 0.02 um
-  EXPECT_LT(last - first, -3e-5);                // the flank does take over within the sweep
+  RecordProperty("largest_roll_step_nrad", std::to_string(largest_step * 1e9));
+  RecordProperty("roll_change_urad", std::to_string((last - first) * 1e6));
+  EXPECT_EQ(compared, 6000);
+  EXPECT_LT(largest_step, 1.5 * 2.2e-5 * kStep * 1e6);  // the runaway: 2.3e-5 rad in one step
+  EXPECT_LT(last - first, -1e-4);                       // the flank does take over within the sweep
 }
 
 TEST(WheelsetInput, RejectsBadStatesAndMismatchedPairs) {

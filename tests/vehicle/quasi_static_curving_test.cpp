@@ -251,9 +251,9 @@ TEST(QuasiStaticCurving, AWavyMeasuredWheelFindsItsBalanceWhenFittedSmoother) {
 // 56 kN within 20 nm), and neither hand found one. Resting where the minima within an elastic
 // approach share the load (WheelRailTouch::resting_gap), every body is in equilibrium, and the
 // hands mirror (to the solver's tolerance: 1e-7 m g on a flank stiffness of 1e10 N/m leaves the
-// shifts 1e-10 m apart; bound 1e-8 m). (In R 3000 m on this model the trailing bogie's leading
-// wheelset still stalls 70 N short, where a flank patch two strips wide jumps by 100 N of its
-// normal force within 0.1 nm of shift: the flank's normal problem, not the roll.)
+// shifts 3e-12 m apart, measured 4e-12 m; bound 1e-10 m). (In R 3000 m on this model the trailing
+// bogie's leading wheelset still stalls 70 N short, where a flank patch two strips wide jumps by
+// 100 N of its normal force within 0.1 nm of shift: the flank's normal problem, not the roll.)
 TEST(QuasiStaticCurving, AMeasuredWheelOnAMeasuredRailFindsItsBalanceWhereItsFlankTakesOver) {
   const Vehicle v = default_vehicle();
   // As a scene with this wheel and rail reads and solves them (`wheelwear curving SCENE`): the
@@ -273,7 +273,7 @@ TEST(QuasiStaticCurving, AMeasuredWheelOnAMeasuredRailFindsItsBalanceWhereItsFla
   const VehicleCurving left =
       solved_in_equilibrium(v, models, curve_of(-500.0, 0.1, 20.0), compared);
   for (int k = 0; k < 4; ++k) {
-    EXPECT_NEAR(right.wheelsets[k].state.dy, -left.wheelsets[k].state.dy, 1e-8) << k;
+    EXPECT_NEAR(right.wheelsets[k].state.dy, -left.wheelsets[k].state.dy, 1e-10) << k;
     ++compared;
   }
   // The leading wheelsets rest where the flank takes over.

@@ -85,7 +85,7 @@ struct WheelsetContact {
   double left_shift = 0.0;
   double right_shift = 0.0;     ///< as left_shift, for the right wheel [m]
   double centre_height = 0.0;   ///< height of the wheelset centre above the top of the rails
-                                ///< at first touch on both sides [m]
+                                ///< with both wheels at rest (resting_gap) [m]
   bool roll_converged = false;  ///< the roll iteration met its tolerance
   int touch_evaluations = 0;    ///< first-touch evaluations of both wheels (roll iteration)
   int contact_solves = 0;       ///< wheel/rail contact solves, lateral searches included
@@ -104,8 +104,9 @@ struct WheelsetContact {
 /// dy_left = dy + (cos(roll) - 1) Y_left - sin(roll) r_left, roll_left = roll, yaw_left = yaw;
 /// dy_right = -dy + (cos(roll) - 1) Y_right + sin(roll) r_right, roll_right = -roll,
 /// yaw_right = -yaw (the right wheel mirrored).
-/// The roll is such that both wheels touch their rails with undeformed surfaces (the minimum gap
-/// is zero on both sides): sin(roll) (Y_left + Y_right) + cos(roll) (r_left - r_right) =
+/// The roll is such that both wheels rest on their rails with undeformed surfaces (the minimum
+/// gap zero on both sides, but where a steep flank shares the load, below): sin(roll) (Y_left +
+/// Y_right) + cos(roll) (r_left - r_right) =
 /// Z_left - Z_right, with Z = z_tape + WheelRailTouch::resting_gap - z_top(rail) the depth below
 /// the top of rail at which each taping point rests (z down): the gap's lowest minimum, or where
 /// a minimum on a flank nearly as steep as atan(D/r) lies within an elastic approach of it, a
