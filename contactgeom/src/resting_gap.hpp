@@ -6,7 +6,7 @@
 // minimum overtakes the first (a flank taking over from the tread), the roll then changes its
 // law at once: on a flank as steep as the wheelset's lever allows (r tan(angle) near the
 // distance D between the wheels' taping points) the height of the new minimum hardly changes
-// with the roll, and the roll ran away by 2e-5 rad within 20 nm of shift (a measured wheel on a
+// with the roll, and the roll ran away by 2.3e-5 rad within 5 nm of shift (a measured wheel on a
 // measured rail, Car7216 on avg_HR), taking the flank's load with it: no balance lay on either
 // side. An elastic wheel shares its load between the regions within its approach. So the wheel
 // rests at the height H where the minima, taken as equal Hertzian springs, carry what one alone
@@ -15,15 +15,21 @@
 // - by the roll's lever (lever_share): only where a minimum lies on such a flank does the rigid
 //   roll need the sharing; on the tread and the flange root it passes from one minimum to the
 //   next with a kink only, and sharing there cost more Newton iterations on worn profiles than
-//   it saved (measured over the built-in route on 16 worn wheels);
-// - by its rise to the ridge towards a deeper minimum: one behind a ridge lower than the
-//   approach lies in the same region once loaded (a ripple of a worn tread), none behind no
-//   ridge (where a minimum is born).
-// The resting gap H - approach is the touch's gap while no other minimum with weight is within
-// reach (the single-basin result is unchanged, bit for bit), and moves continuously as another
-// comes within reach and overtakes it: the weights depend on the minima's depths and angles
-// only, not on which one is the touch, and two minima's weights are equal where their depths
-// cross.
+//   it saved (measured over the built-in route on 16 worn wheels). A minimum's lever is the
+//   lesser of its own and the one that pairs all minima within reach: the least of theirs, each
+//   raised by its depth above the lowest and by what it lacks in standing (below), so that a
+//   minimum entering reach, born or leaving as too steep changes it continuously;
+// - by its own standing: its rise to the ridge towards a deeper minimum (one behind a ridge
+//   lower than the approach lies in the same region once loaded, a ripple of a worn tread; none
+//   behind no ridge, where a minimum is born), and its distance from the steepest contact.
+// The resting gap H - approach is the touch's gap while no other minimum has weight (the
+// single-basin result is unchanged, bit for bit), and is continuous as a flank's minimum comes
+// within reach and overtakes the tread's: the weights depend on the minima's depths, angles and
+// ridges, not on which one is the touch, and the two swap their weights as their depths cross.
+// Two small steps remain: where two minima that are both above the lowest cross (their rises
+// swap, a step where their own levers or tapers differ: three minima within 50 um, one of them
+// on such a flank), and where sharing starts while the touch, chosen by its sample, is not the
+// lowest refined minimum (their difference, below 0.03 um on the measured pairs swept).
 
 #include <algorithm>
 #include <cmath>
@@ -52,18 +58,24 @@ inline double roll_lever(double angle, double steepest) {
   return 1.0 - std::tan(angle) / std::tan(steepest);
 }
 
-// The share a minimum takes by the roll's lever: none from 0.6 up (tread and flange root, up to
-// 0.92 rad for a 0.46 m wheel on standard gauge), all below 0.3 (from 1.16 rad), and tapering
-// to none again over the last 0.05 before the steepest contact (a minimum steeper still is not
-// eligible as the touch: rigid contact there has no roll).
+// The share a minimum takes by the roll's lever (its own or the one that pairs it, below): none
+// from 0.6 up (tread and flange root, up to 0.92 rad for a 0.46 m wheel on standard gauge), all
+// below 0.3 (from 1.16 rad).
 inline double lever_share(double lever) {
-  return smoothstep((0.6 - lever) / 0.3) * smoothstep(lever / 0.05);
+  return smoothstep((0.6 - lever) / 0.3);
+}
+
+// A minimum's own fade as its lever nears 0, over the last 0.05 (from 1.26 rad here): a minimum
+// steeper than atan(D/r) is not eligible as the touch (rigid contact there has no roll), and
+// leaves the sharing with no weight.
+inline double steep_taper(double lever) {
+  return smoothstep(lever / 0.05);
 }
 
 struct RestingMinimum {
   double h = 0.0;      // gap [m]
   double rise = 0.0;   // from it to the lowest ridge towards a deeper minimum [m] (inf: none)
-  double share = 0.0;  // by the roll's lever, in [0, 1]
+  double share = 0.0;  // by the roll's levers: lever_share of its lever times its steep_taper
 };
 
 // A minimum's weight in the resting gap (the lowest's is 1 whatever this says).
@@ -132,42 +144,57 @@ double resting_gap(const GapSamples& g, std::size_t k, double touch_gap, double 
     if (j != k && !(a < steepest)) continue;
     candidates.push_back({j, roll_lever(a, steepest), {h, inf, 0.0}});
   }
-  double lowest = inf;
-  for (const Candidate& c : candidates) lowest = std::min(lowest, c.m.h);
-  // The lever that pairs share: the least over the candidates, each raised by its depth above
-  // the lowest in approaches, so that it changes continuously as minima come within reach and
-  // cross, whichever one is the touch.
-  double paired = inf;
-  for (const Candidate& c : candidates)
-    paired = std::min(paired, c.lever + (c.m.h - lowest) / approach);
-  for (Candidate& c : candidates) c.m.share = lever_share(std::min(c.lever, paired));
-  // Bit for bit the touch's gap where no other minimum shares (the tread's).
-  if (std::none_of(candidates.begin(), candidates.end(),
-                   [&](const Candidate& c) { return c.sample != k && c.m.share > 0.0; }))
+  // Tread and flange root alone: no lever pairs them (the common case, at once).
+  if (std::all_of(candidates.begin(), candidates.end(),
+                  [](const Candidate& c) { return lever_share(c.lever) == 0.0; }))
     return touch_gap;
-  std::vector<RestingMinimum> minima;
+  // Each candidate's rise to the lowest ridge towards a deeper one (ties: the earlier sample is
+  // the deeper), on either side.
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     Candidate& c = candidates[i];
-    // The rise to the lowest ridge towards a deeper candidate, on either side.
+    const auto deeper = [&](std::size_t m) {
+      return candidates[m].m.h < c.m.h || (candidates[m].m.h == c.m.h && m < i);
+    };
     const auto rise_towards = [&](std::ptrdiff_t step) {
       double ridge = -inf;
       std::size_t s = c.sample;
       for (std::ptrdiff_t m = static_cast<std::ptrdiff_t>(i) + step;
            m >= 0 && m < static_cast<std::ptrdiff_t>(candidates.size()); m += step) {
-        const Candidate& other = candidates[static_cast<std::size_t>(m)];
-        while (s != other.sample) {
+        const std::size_t other = candidates[static_cast<std::size_t>(m)].sample;
+        while (s != other) {
           const std::size_t next = step > 0 ? s + 1 : s - 1;
           if (!joined(std::max(s, next))) return inf;
           s = next;
           ridge = std::max(ridge, g.h[s]);
         }
-        if (other.m.h < c.m.h) return ridge - c.m.h;
+        if (deeper(static_cast<std::size_t>(m))) return ridge - c.m.h;
       }
       return inf;
     };
     c.m.rise = std::min(rise_towards(-1), rise_towards(+1));
-    minima.push_back(c.m);
   }
+  double lowest = inf;
+  for (const Candidate& c : candidates) lowest = std::min(lowest, c.m.h);
+  // A candidate's own standing: its rise and its distance from the steepest contact.
+  const auto own = [&](const Candidate& c) {
+    return steep_taper(c.lever) * smoothstep(c.m.rise / approach);
+  };
+  // The lever that pairs share: the least over the candidates, each raised by its depth above
+  // the lowest in approaches and by what it lacks in standing, so that it changes continuously
+  // as minima come within reach, are born or cross, whichever one is the touch.
+  double paired = inf;
+  for (const Candidate& c : candidates)
+    paired = std::min(paired, c.lever + (c.m.h - lowest) / approach + 0.6 * (1.0 - own(c)));
+  for (Candidate& c : candidates)
+    c.m.share = lever_share(std::min(c.lever, paired)) * steep_taper(c.lever);
+  // Bit for bit the touch's gap where no other minimum shares (the tread's).
+  if (std::none_of(candidates.begin(), candidates.end(), [&](const Candidate& c) {
+        return c.sample != k && resting_weight(c.m, approach) > 0.0;
+      }))
+    return touch_gap;
+  thread_local std::vector<RestingMinimum> minima;
+  minima.clear();
+  for (const Candidate& c : candidates) minima.push_back(c.m);
   return resting_gap(minima, approach);
 }
 

@@ -248,12 +248,13 @@ TEST(QuasiStaticCurving, AWavyMeasuredWheelFindsItsBalanceWhenFittedSmoother) {
 // steeper than the wheel's flank (80 against 74 deg): in R 500 m the leading wheelsets rest
 // where the flank takes over from the tread (5.23 mm). There the wheelset's roll ran away while
 // each wheel rested at its gap's lowest minimum, the lateral force jumped across the balance (by
-// 56 kN within 20 nm), and neither hand found one. Resting where the minima within an elastic
-// approach share the load (WheelRailTouch::resting_gap), every body is in equilibrium, and the
-// hands mirror (to the solver's tolerance: 1e-7 m g on a flank stiffness of 1e10 N/m leaves the
-// shifts 3e-12 m apart, measured 4e-12 m; bound 1e-10 m). (In R 3000 m on this model the trailing
-// bogie's leading wheelset still stalls 70 N short, where a flank patch two strips wide jumps by
-// 100 N of its normal force within 0.1 nm of shift: the flank's normal problem, not the roll.)
+// 56 kN across Newton's last step, 29 nm), and neither hand found one. Resting where the minima
+// within an elastic approach share the load (WheelRailTouch::resting_gap), every body is in
+// equilibrium, and the hands mirror (to the solver's tolerance: 1e-7 m g on a flank stiffness of
+// 1e10 N/m leaves the shifts 3e-12 m apart, measured 4e-12 m; bound 1e-10 m). (In R 3000 m on this
+// model the trailing bogie's leading wheelset still stalls 70 N short, where a flank patch two
+// strips wide jumps by 100 N of its normal force within 0.1 nm of shift: the flank's normal
+// problem, not the roll.)
 TEST(QuasiStaticCurving, AMeasuredWheelOnAMeasuredRailFindsItsBalanceWhereItsFlankTakesOver) {
   const Vehicle v = default_vehicle();
   // As a scene with this wheel and rail reads and solves them (`wheelwear curving SCENE`): the

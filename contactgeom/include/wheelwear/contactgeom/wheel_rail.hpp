@@ -169,12 +169,12 @@ struct WheelRailTouch {
   double gap = 0.0;    ///< minimum vertical gap [m]: how far the wheel moves down (+z)
                        ///< from the profiles' common datum to touch its rail
   /// Where the wheel of a wheelset rests [m]: `gap`, unless a minimum of the gap on a flank so
-  /// steep that the roll hardly lifts the wheel off it (from about 0.9 rad, fully from 1.16 rad
-  /// for a 0.46 m wheel on standard gauge) lies within an elastic approach (50 um) of the
-  /// lowest; then smaller (the minima sharing the load as equal Hertzian springs, the wheel sinks
-  /// less than into one), so that the wheelset's roll (solve_wheelset puts each wheel at this
-  /// depth) moves continuously as the flank's minimum overtakes the tread's. first_touch,
-  /// without a wheelset: `gap`.
+  /// steep that the roll hardly lifts the wheel off it (for a 0.46 m wheel on standard gauge:
+  /// from about 0.9 rad, fully from 1.16 rad, fading again from 1.26 rad to none at atan(D/r) =
+  /// 1.273 rad) lies within an elastic approach (50 um) of the touch; then smaller (the minima
+  /// sharing the load as equal Hertzian springs, the wheel sinks less than into one), so that the
+  /// wheelset's roll (solve_wheelset puts each wheel at this depth) moves continuously as the
+  /// flank's minimum overtakes the tread's. first_touch, without a wheelset: `gap`.
   double resting_gap = 0.0;
   double y_rail = 0.0;          ///< touch point on the rail profile, + towards the gauge side [m]
   double y_wheel = 0.0;         ///< touch point on the wheel profile, + towards the flange [m]
