@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <limits>
 #include <utility>
-#include <vector>
 
 #include "resting_gap.hpp"
 #include "wheel_rail_gap.hpp"

@@ -105,13 +105,13 @@ struct WheelsetContact {
 /// dy_right = -dy + (cos(roll) - 1) Y_right + sin(roll) r_right, roll_right = -roll,
 /// yaw_right = -yaw (the right wheel mirrored).
 /// The roll is such that both wheels rest on their rails with undeformed surfaces (the minimum
-/// gap zero on both sides, but where a steep flank shares the load, below): sin(roll) (Y_left +
-/// Y_right) + cos(roll) (r_left - r_right) =
-/// Z_left - Z_right, with Z = z_tape + WheelRailTouch::resting_gap - z_top(rail) the depth below
-/// the top of rail at which each taping point rests (z down): the gap's lowest minimum, or where
-/// a minimum on a flank nearly as steep as atan(D/r) lies within an elastic approach of it, a
-/// depth between them that moves smoothly as one overtakes the other (without it the roll ran
-/// away where such a flank's minimum overtook the tread's).
+/// gap zero on both sides, but where a steep flank shares the load, below):
+/// sin(roll) (Y_left + Y_right) + cos(roll) (r_left - r_right) = Z_left - Z_right, with
+/// Z = z_tape + WheelRailTouch::resting_gap - z_top(rail) the depth below the top of rail at
+/// which each taping point rests (z down): the gap's lowest minimum, or where a minimum on a
+/// flank nearly as steep as atan(D/r) lies within an elastic approach of it, a depth between
+/// them that moves continuously as one overtakes the other (without it the roll ran away where
+/// such a flank's minimum overtook the tread's).
 /// The difference of the two wheels' elastic approaches is neglected (each ~0.1 mm at 55 kN, the
 /// same for equal loads and contacts, 0.01 mm apart for 60 against 48 kN): it would tilt the
 /// wheelset by 1e-5 rad, below 1e-4 rad even between tread and flange contact. The
