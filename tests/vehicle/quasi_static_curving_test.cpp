@@ -253,8 +253,8 @@ TEST(QuasiStaticCurving, AWavyMeasuredWheelFindsItsBalanceWhenFittedSmoother) {
 // equilibrium, and the hands mirror (to the solver's tolerance: 1e-7 m g on a flank stiffness of
 // 1e10 N/m leaves the shifts 3e-12 m apart, measured 4e-12 m; bound 1e-10 m). (In R 3000 m on this
 // model the trailing bogie's leading wheelset still stalls 70 N short, where a flank patch two
-// strips wide jumps by 100 N of its normal force within 0.1 nm of shift: the flank's normal
-// problem, not the roll.)
+// strips wide jumps by 100 N of its normal force within 0.1 nm of shift, its O moving by 0.12 mm:
+// the flank's normal problem, not the roll.)
 TEST(QuasiStaticCurving, AMeasuredWheelOnAMeasuredRailFindsItsBalanceWhereItsFlankTakesOver) {
   const Vehicle v = default_vehicle();
   // As a scene with this wheel and rail reads and solves them (`wheelwear curving SCENE`): the
