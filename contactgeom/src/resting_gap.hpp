@@ -110,17 +110,18 @@ inline double resting_gap(const std::vector<RestingMinimum>& minima,
   return 0.5 * (lo + hi) - approach;
 }
 
-// The resting gap [m] of the sampled gap `g` whose touch is sample `k`, refined to `touch_gap`,
-// on a wheelset whose steepest touching contact is `steepest` (atan(D/r)) [rad]. `angle(j)`
-// gives the contact angle at sample j, `refined(j)` the gap of the local minimum at sample j
-// refined by its neighbours. The candidates are the local minima (the touch and those less
+// The resting gap [m] of the sampled gap `g` whose touch is sample `k`, on a wheelset whose
+// steepest touching contact is `steepest` (atan(D/r)) [rad]. `angle(j)` gives the contact angle
+// at sample j, `refined(j)` the gap of the local minimum at sample j refined by its neighbours
+// (the touch's gap is refined(k)). The candidates are the local minima (the touch and those less
 // steep than `steepest` whose refined gap lies within reach of the touch's); a ridge is the
 // highest sample between two minima, across windows that touch (a gap in the samples is a
 // ridge of +inf).
 template <class Angle, class Refined>
-double resting_gap(const GapSamples& g, std::size_t k, double touch_gap, double steepest,
-                   const Angle& angle, const Refined& refined, double approach = kSharedApproach) {
+double resting_gap(const GapSamples& g, std::size_t k, double steepest, const Angle& angle,
+                   const Refined& refined, double approach = kSharedApproach) {
   constexpr double inf = std::numeric_limits<double>::infinity();
+  const double touch_gap = refined(k);
   const std::size_t n = g.h.size();
   // Whether samples i - 1 and i are neighbours: the same window, or windows that touch.
   const auto joined = [&](std::size_t i) {

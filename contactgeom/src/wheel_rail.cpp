@@ -123,7 +123,7 @@ WheelRailTouch first_touch_at(const WheelRailPair& pair, const WheelsetPose& pos
   touch.resting_gap =
       std::isfinite(steepest)
           ? resting_gap(
-                g, k, m.h, steepest, [&](std::size_t j) { return geometry.contact_angle(g.y[j]); },
+                g, k, steepest, [&](std::size_t j) { return geometry.contact_angle(g.y[j]); },
                 [&](std::size_t j) { return refined_minimum(g, j, j).h; })
           : m.h;
   touch.y_rail = -m.y;

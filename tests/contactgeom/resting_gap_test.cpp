@@ -100,7 +100,7 @@ struct SampledGap {
   double touch_gap() const { return refined_minimum(g, touch(), touch()).h; }
   double resting() const {
     return resting_gap(
-        g, touch(), touch_gap(), steepest, [&](std::size_t j) { return angle[j]; },
+        g, touch(), steepest, [&](std::size_t j) { return angle[j]; },
         [&](std::size_t j) { return refined_minimum(g, j, j).h; });
   }
 };

@@ -10,7 +10,6 @@
 
 #include "support/reference_profiles.hpp"
 #include "wheelwear/core/input_error.hpp"
-#include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/rail_60e1.hpp"
 #include "wheelwear/profiles/s1002.hpp"
 #include "wheelwear/profiles/track.hpp"
@@ -271,15 +270,9 @@ TEST(Wheelset, AFlankDipBetweenTheCoarseScansPointsLoadsContinuously) {
 // carries the wheel (2.15e-5 rad per um over 5.232-5.25 mm; bound 2.2e-5 with half again as
 // margin), and by 1.6e-4 rad in all.
 TEST(Wheelset, AMeasuredFlankTakesOverFromTheTreadWithoutARunawayRoll) {
-  profiles::LoadOptions wheel_options;
-  wheel_options.read.body = profiles::Body::wheel;
-  wheel_options.curve.smoothing_length = 2e-3;
-  profiles::LoadOptions rail_options;
-  rail_options.read.body = profiles::Body::rail;
   WheelRailPair pair(
-      profiles::load_profile(testing::test_data("measured/Car7216_0001r.whl"), wheel_options)
-          .profile,
-      profiles::load_profile(testing::test_data("measured/avg_HR.BAN"), rail_options).profile);
+      testing::test_profile("measured/Car7216_0001r.whl", profiles::Body::wheel, 2e-3),
+      testing::test_profile("measured/avg_HR.BAN", profiles::Body::rail));
   pair.wheel_radius = 0.46;
   const WheelsetOnTrack t{pair, pair};
   double previous = std::nan(""), previous_step = std::nan(""), first = 0.0, last = 0.0;

@@ -10,17 +10,23 @@
 
 namespace wheelwear::testing {
 
-inline profiles::Profile load_reference_profile(const std::string& file, profiles::Body body) {
+/// tests/data/`path`, read as a `body` and fitted with the smoothing length `smoothing` [m].
+inline profiles::Profile test_profile(
+    const std::string& path, profiles::Body body,
+    double smoothing = profiles::LoadOptions{}.curve.smoothing_length) {
   profiles::LoadOptions options;
   options.read.body = body;
-  return profiles::load_profile(test_data("contact/profiles/" + file), options).profile;
+  options.curve.smoothing_length = smoothing;
+  return profiles::load_profile(test_data(path), options).profile;
+}
+
+inline profiles::Profile load_reference_profile(const std::string& file, profiles::Body body) {
+  return test_profile("contact/profiles/" + file, body);
 }
 
 /// A wheel worn by this program, tests/data/profiles/`file` (y, z in mm).
 inline profiles::Profile worn_wheel(const std::string& file) {
-  profiles::LoadOptions options;
-  options.read.body = profiles::Body::wheel;
-  return profiles::load_profile(test_data("profiles/" + file), options).profile;
+  return test_profile("profiles/" + file, profiles::Body::wheel);
 }
 
 /// The pair of CONTACT's set d, built once.

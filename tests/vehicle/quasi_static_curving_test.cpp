@@ -15,7 +15,6 @@
 #include "standard_wheelset.hpp"
 #include "support/csv_table.hpp"
 #include "support/reference_profiles.hpp"
-#include "wheelwear/profiles/profile_loader.hpp"
 #include "wheelwear/profiles/profile_source.hpp"
 #include "wheelwear/vehicle/vehicle_file.hpp"
 
@@ -25,6 +24,7 @@ namespace {
 using testing::four;
 using testing::standard_wheelset;
 using wheelwear::testing::test_data;
+using wheelwear::testing::test_profile;
 using wheelwear::testing::worn_wheel;
 
 SteadyCurve curve_of(double radius, double cant, double speed) {
@@ -233,11 +233,8 @@ TEST(QuasiStaticCurving, AWornWheelWithAShelfBelowASteepFlankFindsItsBalance) {
 // whole route with the scene's chain: route_command_test.cpp).
 TEST(QuasiStaticCurving, AWavyMeasuredWheelFindsItsBalanceWhenFittedSmoother) {
   const Vehicle v = default_vehicle();
-  profiles::LoadOptions options;
-  options.read.body = profiles::Body::wheel;
-  options.curve.smoothing_length = 2e-3;
-  const auto models = four(standard_wheelset(
-      profiles::load_profile(test_data("measured/Car7216_0001r.whl"), options).profile));
+  const auto models = four(
+      standard_wheelset(test_profile("measured/Car7216_0001r.whl", profiles::Body::wheel, 2e-3)));
   int compared = 0;
   for (double radius : {3000.0, 1000.0})
     solved_in_equilibrium(v, models, curve_of(radius, 0.1, 25.0), compared);
