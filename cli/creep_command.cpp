@@ -186,11 +186,11 @@ void add_creep_command(CLI::App& app) {
          "adhesion_fraction, adhesion_elements, N_grid, frictional_work, exact_grid;\n"
          "cells and slip_cells count contact and slipping elements),\n"
          "table (the book of exact-theory tables, data/creep_table.h5: Fx, Fy, Mz within 1 % of\n"
-         "muN of the exact theory on its grid in about 1 us; a/b 0.2-10, |psi| <= 0.8, nu\n"
-         "0.25-0.28; an error outside its range) or best (the table inside its\n"
-         "range; outside it, as --beyond-table says, the exact theory on a grid that\n"
-         "resolves the patch's long axis (default) or fastsim-sdec; the JSON's \"source\"\n"
-         "says which)")
+         "muN of the exact theory on its grid in about 1 us; a/b 0.2-10, |psi| <= 0.8,\n"
+         "nu 0.25-0.28, normalised creepage up to 20 and beyond it near full sliding; an\n"
+         "error outside its range) or best (the table inside its range; outside it, as\n"
+         "--beyond-table says, the exact theory on a grid that resolves the patch's long\n"
+         "axis (default) or fastsim-sdec; the JSON's \"source\" says which)")
       ->check(CLI::IsMember(core::all_names(tangential::kMethodNames)));
   cmd->add_option("--a", args->sdec.a, "semi-length along x [m]")->required();
   cmd->add_option("--b", args->sdec.b, "semi-width along y [m]")->required();
@@ -235,10 +235,11 @@ void add_creep_command(CLI::App& app) {
       cmd->add_option(
              "--beyond-table", args->beyond_table,
              "--method best, for a patch outside the book of tables (a/b below 0.2 or above\n"
-             "10, |psi| above 0.8, other nu): exact (default: Kalker's exact theory, 40\n"
-             "elements across the patch and elements at most twice as long as wide, 0.05-2 s\n"
-             "for a/b 0.05 ... 25; within about 0.5 % of muN of its converged answer) or\n"
-             "fastsim-sdec (what runs use: well under 1 ms, about 7 % of muN off at a/b 10-25)")
+             "10, |psi| above 0.8, other nu, spin-dominated creepage beyond the table's):\n"
+             "exact (default: Kalker's exact theory, 40 elements across the patch and\n"
+             "elements at most twice as long as wide, 0.05-2 s for a/b 0.05 ... 25; within\n"
+             "about 0.5 % of muN of its converged answer) or fastsim-sdec (what runs use: well\n"
+             "under 1 ms, 2-14 % of muN off on slender or very wide patches)")
           ->check(CLI::IsMember(std::vector<std::string>(std::begin(kBeyondTableChoices),
                                                          std::end(kBeyondTableChoices))));
   cmd->add_flag("--json", args->json, "print one JSON object (forces in N, normalised by muN)");

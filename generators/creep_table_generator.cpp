@@ -25,16 +25,24 @@
 //
 // Usage: wheelwear_creep_table_generator [--n 30] [--threads 2] [--out data/creep_table.h5]
 //   [--nu 0.25,0.28] [--g 0.2,0.25,...] [--psi 0,0.2,...] [--theta-count 33] [--beta-count 19]
-//   [--r 0,0.25,...,6] [--spin-scale 3] [--max-aspect 5] [--reuse OLD.h5]
-// --reuse takes the nodes of every a/b that OLD.h5 holds with the same other axes, grid rule
-// and nu from it instead of solving them again (to add a/b nodes to a table).
-// The defaults are the shipped table: 2 x 652 080 nodes (567 360 solves per nu), about 75 min
-// on two cores (35 min for a/b 0.2 ... 5, 37 min for 6 ... 10), 21 MB. The nodes are where
-// interpolating (creep_table.cpp) needs them to stay within 1 % of mu N of fresh solves
-// (tests/tangential/creep_table_test.cpp): the forces turn fastest with theta where the patch
-// begins to slide fully, and with a/b below 0.3 and above 3 (with nodes at 5, 7 and 10 alone the
-// worst of the 190 of 1000 test points beyond a/b = 5 reached 0.98 %). A finer solver grid (--n 40)
-// or more nodes cost in proportion (see the printed count).
+//   [--r 0,0.25,...,20] [--spin-scale 3] [--max-aspect 5] [--reuse OLD.h5,...]
+// --reuse OLD.h5[,OLDER.h5...] takes every node the files hold (the same nu, grid rule and spin
+// scale, and each of the node's axis values among the file's) from the first that holds it
+// instead of solving it again: to add nodes along any axis (a/b, psi, theta, beta, r) to a
+// table, also one nu at a time (--nu 0.25 into one file, then both nu reusing it and the old
+// table).
+// The defaults are the shipped table: 2 x 1 003 200 nodes (898 320 solves per nu), about 90 min on
+// two cores: 35 min for a/b 0.2 ... 5 and 37 min for 6 ... 10 with r up to 6, 10 min for r 7 ...
+// 12 and 5 min for 14 ... 20 (solves near full sliding take fewer sweeps), 33 MB. The nodes are
+// where interpolating (creep_table.cpp) needs them to stay within 1 % of mu N of fresh solves
+// (tests/tangential/creep_table_test.cpp; but for a corner of wide patches near full sliding,
+// docs/validation.md): the forces turn fastest with theta where the patch begins to slide fully,
+// and with a/b below 0.3 and above 3 (with nodes at 5, 7 and 10 alone the worst of the 190 of 1000
+// test points beyond a/b = 5 reached 0.98 %). A finer solver grid (--n 40) or more nodes cost in
+// proportion to their elements and sweeps (see the printed count): nodes at a/b 12, 14.5, 17.5, 21
+// and 25 (72 x 30 ... 150 x 30 elements) take 1.8 ... 6.4 times as long a solve as those at 8.5
+// (105 ... 187 sweeps against 85, on a sample of 96 creepages at r up to 5), about 111 min per nu
+// on two cores where 6 and 8.5 took 8.6 min.
 
 #include <hdf5.h>
 
@@ -142,16 +150,15 @@ double read_number(hid_t object, const char* key, double absent) {
   return value;
 }
 
-// The solved nodes of one nu block of an earlier table, to reuse where the axes agree.
+// The solved nodes of one nu block of an earlier table, to reuse where they are nodes of the new
+// one too (same nu, grid rule and spin scale; each axis value of the node among the old axis's).
 struct Reused {
-  std::vector<double> gs, fx, fy, mz;
+  std::vector<double> gs, psis, thetas, betas, rs, fx, fy, mz;
   bool square_only = false;  // written before the grid rule: n x n nodes only
 };
 
 Reused reusable(const std::string& path, const char* group_name, double nu, int n,
-                double max_aspect, double spin_scale, const std::vector<double>& psis,
-                const std::vector<double>& thetas, const std::vector<double>& betas,
-                const std::vector<double>& rs) {
+                double max_aspect, double spin_scale) {
   Reused out;
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file < 0) throw std::runtime_error("--reuse: " + path + " is not an HDF5 file");
@@ -161,28 +168,73 @@ Reused reusable(const std::string& path, const char* group_name, double nu, int 
     // for a/b within [1/max_aspect, max_aspect] only.
     out.square_only = H5Aexists(group, "max_element_aspect") <= 0;
     const double old_aspect = read_number(group, "max_element_aspect", max_aspect);
-    const auto same = [](const std::vector<double>& a, const std::vector<double>& b) {
-      if (a.size() != b.size()) return false;
-      for (std::size_t i = 0; i < a.size(); ++i)
-        if (std::abs(a[i] - b[i]) > 1e-12) return false;
-      return true;
-    };
     if (read_number(group, "nu", -1.0) == nu && read_number(group, "grid", 0) == n &&
-        old_aspect == max_aspect && read_number(group, "spin_scale", 1.0) == spin_scale &&
-        same(read_doubles(group, "psi"), psis) && same(read_doubles(group, "theta"), thetas) &&
-        same(read_doubles(group, "beta"), betas) && same(read_doubles(group, "r"), rs)) {
+        old_aspect == max_aspect && read_number(group, "spin_scale", 1.0) == spin_scale) {
       out.gs = read_doubles(group, "a_over_b");
+      out.psis = read_doubles(group, "psi");
+      out.thetas = read_doubles(group, "theta");
+      out.betas = read_doubles(group, "beta");
+      out.rs = read_doubles(group, "r");
       out.fx = read_doubles(group, "Fx_muN");
       out.fy = read_doubles(group, "Fy_muN");
       out.mz = read_doubles(group, "Mz_muNc");
-      const std::size_t per_g = psis.size() * thetas.size() * betas.size() * rs.size();
+      const std::size_t nodes =
+          out.gs.size() * out.psis.size() * out.thetas.size() * out.betas.size() * out.rs.size();
       for (const auto* values : {&out.fx, &out.fy, &out.mz})
-        if (values->size() != out.gs.size() * per_g) out.gs.clear();  // not a whole table
+        if (values->size() != nodes) out.gs.clear();  // not a whole table: reuse nothing
     }
     H5Gclose(group);
   }
   H5Fclose(file);
   return out;
+}
+
+// For each value of `now`, its index in `old` (equal within 1e-12, relative above 1), or -1.
+std::vector<long> indices_in(const std::vector<double>& old, const std::vector<double>& now) {
+  std::vector<long> out(now.size(), -1);
+  for (std::size_t k = 0; k < now.size(); ++k)
+    for (std::size_t m = 0; m < old.size(); ++m)
+      if (std::abs(old[m] - now[k]) <= 1e-12 * std::max(1.0, std::abs(now[k])))
+        out[k] = static_cast<long>(m);
+  return out;
+}
+
+// The axes of the table being made.
+struct Axes {
+  std::vector<double> gs, psis, thetas, betas, rs;
+};
+
+// Copies into (fx, fy, mz) every node of `axes` that `old` holds and `reused` does not mark
+// yet, and marks it; returns how many.
+std::size_t copy_reused(const Reused& old, const Axes& axes, double max_aspect,
+                        std::vector<double>& fx, std::vector<double>& fy, std::vector<double>& mz,
+                        std::vector<char>& reused) {
+  const std::vector<long> og = indices_in(old.gs, axes.gs), op = indices_in(old.psis, axes.psis),
+                          ot = indices_in(old.thetas, axes.thetas),
+                          ob = indices_in(old.betas, axes.betas), orr = indices_in(old.rs, axes.rs);
+  const std::size_t n_r = axes.rs.size(), n_b = axes.betas.size(), n_t = axes.thetas.size(),
+                    n_p = axes.psis.size();
+  std::size_t copied = 0;
+  for (std::size_t i = 0; i < reused.size(); ++i) {
+    const std::size_t ir = i % n_r, ib = i / n_r % n_b, it = i / (n_r * n_b) % n_t,
+                      ip = i / (n_r * n_b * n_t) % n_p, ig = i / (n_r * n_b * n_t * n_p);
+    if (reused[i] || og[ig] < 0 || op[ip] < 0 || ot[it] < 0 || ob[ib] < 0 || orr[ir] < 0) continue;
+    const double g = axes.gs[ig];
+    if (old.square_only && !(g <= max_aspect && g >= 1.0 / max_aspect)) continue;
+    const std::size_t from =
+        (((static_cast<std::size_t>(og[ig]) * old.psis.size() + op[ip]) * old.thetas.size() +
+          ot[it]) *
+             old.betas.size() +
+         ob[ib]) *
+            old.rs.size() +
+        orr[ir];
+    fx[i] = old.fx[from];
+    fy[i] = old.fy[from];
+    mz[i] = old.mz[from];
+    reused[i] = 1;
+    ++copied;
+  }
+  return copied;
 }
 
 }  // namespace
@@ -195,10 +247,11 @@ int main(int argc, char** argv) {
   std::vector<double> gs = {0.2, 0.25, 0.3, 0.4, 0.5, 0.7, 1.0, 1.4,
                             2.0, 3.0,  4.0, 5.0, 6.0, 7.0, 8.5, 10.0};
   double max_aspect = 5.0;
-  std::string reuse_path;
+  std::vector<std::string> reuse_paths;
   std::vector<double> psis = {0.0, 0.2, 0.4, 0.6, 0.8};
   int theta_count = 33, beta_count = 19;
-  std::vector<double> rs = {0.0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0};
+  std::vector<double> rs = {0.0, 0.25, 0.5, 0.75, 1.0, 1.5,  2.0,  2.5,  3.0,  3.5,
+                            4.0, 5.0,  6.0, 7.0,  8.0, 10.0, 12.0, 14.0, 17.0, 20.0};
   double spin_scale = 3.0;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
@@ -225,7 +278,8 @@ int main(int argc, char** argv) {
     } else if (key == "--max-aspect") {
       max_aspect = std::stod(value);
     } else if (key == "--reuse") {
-      reuse_path = value;
+      std::stringstream list(value);
+      for (std::string path; std::getline(list, path, ',');) reuse_paths.push_back(path);
     } else {
       std::cerr << "unknown option " << key
                 << "; options: --n --threads --out --nu --g --psi --theta-count --beta-count "
@@ -237,9 +291,11 @@ int main(int argc, char** argv) {
     std::cerr << "need a finite --max-aspect >= 1\n";
     return 2;
   }
-  if (!reuse_path.empty() && !std::filesystem::exists(reuse_path)) {
-    std::cerr << "--reuse " << reuse_path << ": no such file\n";
-    return 2;
+  for (const std::string& path : reuse_paths) {
+    if (!std::filesystem::exists(path)) {
+      std::cerr << "--reuse " << path << ": no such file\n";
+      return 2;
+    }
   }
   if (n < 8 || theta_count < 3 || beta_count < 3 || rs.empty() || rs[0] != 0.0 || psis.empty() ||
       psis[0] != 0.0) {
@@ -252,6 +308,7 @@ int main(int argc, char** argv) {
   const std::vector<double> betas = uniform(-pi / 2, pi / 2, beta_count);
   const std::size_t per_g = psis.size() * thetas.size() * betas.size() * rs.size();
   const std::size_t total = gs.size() * per_g;
+  const Axes axes{gs, psis, thetas, betas, rs};
 
   // Written beside the output and renamed over it when complete: a failed or interrupted run
   // leaves the table it would replace (which --reuse may be reading) as it was.
@@ -292,29 +349,21 @@ int main(int argc, char** argv) {
       c23[k] = kc.c23;
     }
     std::vector<double> fx(total, 0.0), fy(total, 0.0), mz(total, 0.0);
-    // Nodes of a/b values an earlier table holds (--reuse) are copied, not solved.
-    std::vector<char> reused_g(gs.size(), 0);
-    if (!reuse_path.empty()) {
+    // Nodes earlier tables hold (--reuse) are copied, not solved: from the first that has it.
+    std::vector<char> reused(total, 0);
+    for (const std::string& path : reuse_paths) {
       Reused old;
       try {
-        old = reusable(reuse_path, name, nu, n, max_aspect, spin_scale, psis, thetas, betas, rs);
+        old = reusable(path, name, nu, n, max_aspect, spin_scale);
       } catch (const std::exception& e) {
         std::cerr << e.what() << '\n';
         H5Fclose(file);
         std::filesystem::remove(partial_path);
         return 1;
       }
-      for (std::size_t k = 0; k < gs.size(); ++k)
-        for (std::size_t m = 0; m < old.gs.size(); ++m)
-          if (std::abs(old.gs[m] - gs[k]) <= 1e-12 * gs[k] &&
-              (!old.square_only || (gs[k] <= max_aspect && gs[k] >= 1.0 / max_aspect))) {
-            std::copy_n(old.fx.begin() + m * per_g, per_g, fx.begin() + k * per_g);
-            std::copy_n(old.fy.begin() + m * per_g, per_g, fy.begin() + k * per_g);
-            std::copy_n(old.mz.begin() + m * per_g, per_g, mz.begin() + k * per_g);
-            reused_g[k] = 1;
-          }
-      std::cout << name << ": " << std::count(reused_g.begin(), reused_g.end(), 1) << " of "
-                << gs.size() << " a/b values reused from " << reuse_path << std::endl;
+      const auto copied = copy_reused(old, axes, max_aspect, fx, fy, mz, reused);
+      std::cout << name << ": " << copied << " of " << total << " nodes reused from " << path
+                << std::endl;
     }
     std::atomic<std::size_t> next{0};
     std::atomic<int> unconverged{0};
@@ -335,7 +384,7 @@ int main(int argc, char** argv) {
           rest /= thetas.size();
           const std::size_t ip = rest % psis.size();
           const std::size_t ig = rest / psis.size();
-          if (rs[ir] == 0.0 || reused_g[ig]) continue;
+          if (rs[ir] == 0.0 || reused[i]) continue;
           // The poles (theta = 0, pi) are one direction for every beta: solve it once.
           const bool pole = it == 0 || it + 1 == thetas.size();
           if (pole && ib != 0) continue;

@@ -356,9 +356,29 @@ def validation_table_coverage():
             sig(r["abs_psi_p99"], 2),
         ])
     return table(["collective", "patches", "work from the table", "outside its a/b range",
-                  "outside its creepages (full sliding)",
+                  "beyond its creepages, short of full sliding",
                   "a/b, 1st / 50th / 99th percentile of the work", "99th percentile of \\|ψ\\|"],
                  out)
+
+
+# ---------------------------------------------------------------------------------------------
+# bench/results/table_interpolation.csv (studies/table_interpolation_study.cpp)
+
+
+def validation_table_interpolation():
+    out = []
+    for r in read_csv("table_interpolation.csv"):
+        if int(r["points_drawn"]) == 0:
+            continue
+        answered, drawn = int(r["points_answered"]), int(r["points_drawn"])
+        points = str(answered) if answered == drawn else f"{answered} of {drawn}"
+        out.append([
+            r["set"].replace("r_max", "r_max (to 40)").replace("-", " … "), points,
+            f"{percent(r['worst_F_muN'])} % / {percent(r['mean_F_muN'])} %",
+            f"{percent(r['worst_Mz_muNc'])} % / {percent(r['mean_Mz_muNc'])} %",
+        ])
+    return table(["points", "answered by the table", "F: worst / mean, of μN",
+                  "Mz: worst / mean, of μN c"], out)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -458,6 +478,7 @@ GENERATORS = {
     "validation-linear": ("docs/validation.md", validation_linear),
     "validation-slender-patches": ("docs/validation.md", validation_slender_patches),
     "validation-table-coverage": ("docs/validation.md", validation_table_coverage),
+    "validation-table-interpolation": ("docs/validation.md", validation_table_interpolation),
     "performance-target-error": ("docs/performance.md", performance_target_error),
     "performance-exact-grids": ("docs/performance.md", performance_exact_grids),
     "performance-grid-constants": ("docs/performance.md", performance_grid_constants),

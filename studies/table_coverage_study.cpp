@@ -9,10 +9,10 @@
 //     55 kN per wheel, 30 m/s, 5 mrad of yaw (an angle of attack of a leading wheelset in a
 //     tight curve).
 // Per collective: the patches, their frictional work per metre, the share of it the table
-// answered, the shares outside its a/b range (0.2 ... 10), outside its |psi| range (0.8) and
-// inside both but outside its creepages (full sliding beyond the normalised creepage 6, or nu),
-// the work-weighted 1st, 50th and 99th percentiles of a/b and the 99th of |psi|, and the share
-// of the work on patches with 0.05 <= a/b <= 25 and |psi| <= 0.9. Writes
+// answered, the shares outside its a/b range, outside its |psi| range and inside both but outside
+// what it answers of the creepages (beyond its largest normalised creepage and short of full
+// sliding there, or nu), the work-weighted 1st, 50th and 99th percentiles of a/b and the 99th of
+// |psi|, and the share of the work on patches with 0.05 <= a/b <= 25 and |psi| <= 0.9. Writes
 // bench/results/table_coverage.csv (or the file given as the first argument).
 //
 //   build/studies/wheelwear_table_coverage_study [CSV]

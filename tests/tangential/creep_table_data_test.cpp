@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 const fs::path kShippedTable = fs::path(WHEELWEAR_SOURCE_DIR) / "data" / "creep_table.h5";
 
 // `sha256sum data/creep_table.h5` (GNU coreutils) of the shipped table; a new table changes it.
-const char kShippedSha256[] = "53bfa7a042deb95295fe742a99dc3f6a8e856aa743c2f2d3391217b05b8be818";
+const char kShippedSha256[] = "b303abfafad2522752032cdd09381503acb82808858f5e3187bd8b6238f4efbd";
 
 struct Point {
   contactgeom::Sdec sdec;
@@ -177,7 +177,8 @@ TEST(CreepTableData, ForcesMatchTheRecordedValues) {
   EXPECT_EQ(range.a_over_b_max, 10.0);
   EXPECT_EQ(range.max_element_aspect, 5.0);
   EXPECT_EQ(range.psi_max, 0.8);
-  EXPECT_EQ(range.r_max, 6.0);
+  EXPECT_EQ(range.r_max, 20.0);
+  EXPECT_EQ(range.full_sliding_margin, 0.04);
   EXPECT_EQ(range.grid, 30);
   EXPECT_EQ(range.spin_scale, 3.0);
   EXPECT_TRUE(contains(creep_table_provenance(), "Book of creep-force tables"));
@@ -241,6 +242,23 @@ TEST_F(CreepTableFile, ReadsTheElementAspectOfItsGrid) {
   const auto message = input_error([&] { load_creep_table(rewrite("bad.h5", 0.5)); });
   ASSERT_TRUE(message);
   EXPECT_TRUE(contains(*message, "max_element_aspect")) << *message;
+}
+
+// The range, grid and extrapolation beyond r_max are the first group's, and nu is interpolated
+// node by node: a group whose spin scale (so its normalised axes) differs is refused.
+TEST_F(CreepTableFile, RefusesGroupsThatDoNotShareTheirAxes) {
+  const fs::path file = copy("mixed.h5");
+  {
+    H5::H5File h5(file.string(), H5F_ACC_RDWR);
+    H5::Group g = h5.openGroup("nu_0.28");
+    g.removeAttr("spin_scale");
+    const double other = 2.0;
+    g.createAttribute("spin_scale", H5::PredType::IEEE_F64LE, H5::DataSpace())
+        .write(H5::PredType::NATIVE_DOUBLE, &other);
+  }
+  const auto message = input_error([&] { load_creep_table(file); });
+  ASSERT_TRUE(message);
+  EXPECT_TRUE(contains(*message, "differ in their axes")) << *message;
 }
 
 TEST_F(CreepTableFile, EnvironmentFolderWithoutTheTableIsAnError) {

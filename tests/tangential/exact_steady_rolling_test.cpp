@@ -68,6 +68,36 @@ TEST(ExactSteadyRolling, SaturatesAtMuTimesTheNormalForce) {
   EXPECT_NEAR(s.normal_force / kLoad.N, 1.0, 0.01);
 }
 
+// full_sliding_sdec is the limit of large creepage in a fixed direction:
+// - pure spin on a circle (Hertz pressure): the tractions circle O, Mz = -mu int p rho dA =
+//   -(3 pi / 16) mu N a (p0 pi^2 a^3 / 8 with N = 2 pi a^2 p0 / 3), no force; bound 1 % of
+//   mu N a, the grid's quadrature of the pressure (the sum of the sampled pressure is within 1 %
+//   of N) and the spin's offset dx/6;
+// - creepages far beyond saturation (about 1e4 times the saturating creepage) whose spin pole
+//   lies outside the patch: exact_sdec within 1e-3 of mu N of it (its elastic slip adds a
+//   term falling as 1/|w|; 2.3e-5 measured); the same pressure and grid, so the comparison is
+//   element by element.
+TEST(ExactSteadyRolling, FullSlidingIsTheLimitOfLargeCreepage) {
+  const Sdec circle{5e-3, 5e-3, 0.0};
+  const CreepForces spin = full_sliding_sdec(circle, {0, 0, 1.0}, kLoad, grid(80));
+  const double mu_n = kLoad.mu * kLoad.N;
+  EXPECT_NEAR(*spin.Mz / (mu_n * circle.a), -3 * std::numbers::pi / 16, 0.01);
+  EXPECT_LT(std::hypot(spin.Fx, spin.Fy), 0.01 * mu_n);
+  // Independent of the creepages' magnitude.
+  const CreepForces doubled = full_sliding_sdec(circle, {0, 0, 2.0}, kLoad, grid(80));
+  EXPECT_DOUBLE_EQ(*doubled.Mz, *spin.Mz);
+
+  for (const Creepages& v :
+       {Creepages{50.0, 0.0, 0.0}, Creepages{20.0, -40.0, 1e3}, Creepages{-30.0, 10.0, -2e3}}) {
+    const ExactSolution exact = exact_sdec(kPatch, v, kLoad, kSteel, grid(40));
+    ASSERT_EQ(exact.status, ExactStatus::converged);
+    const CreepForces limit = full_sliding_sdec(kPatch, v, kLoad, grid(40));
+    EXPECT_NEAR(exact.forces.Fx, limit.Fx, 1e-3 * mu_n) << v.vx << " " << v.vy << " " << v.phi;
+    EXPECT_NEAR(exact.forces.Fy, limit.Fy, 1e-3 * mu_n) << v.vx << " " << v.vy << " " << v.phi;
+    EXPECT_NEAR(*exact.forces.Mz, *limit.Mz, 1e-3 * mu_n * kPatch.c());
+  }
+}
+
 // Mirroring y maps psi to -psi, vy to -vy and phi to -phi; Fx is even, Fy and Mz are odd.
 TEST(ExactSteadyRolling, MirrorImageInPsi) {
   const Creepages v{2e-4, 1e-4, 0.5};
@@ -203,6 +233,9 @@ TEST(ExactSteadyRolling, RejectsBadInput) {
   bad = {};
   bad.shift_x = 0.7;
   EXPECT_THROW(exact_sdec(kPatch, {}, kLoad, kSteel, bad), InputError);
+  EXPECT_THROW(full_sliding_sdec(kPatch, {std::nan(""), 0, 0}, kLoad), InputError);
+  EXPECT_THROW(full_sliding_sdec(kPatch, {1, 0, 0}, {-1.0, 0.3}), InputError);
+  EXPECT_THROW(full_sliding_sdec({4e-3, 4e-3, 1.0}, {1, 0, 0}, kLoad), InputError);
 }
 
 }  // namespace

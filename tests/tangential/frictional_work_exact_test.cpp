@@ -127,11 +127,25 @@ TEST(FrictionalWorkBest, InsideTheTableBalancesToRounding) {
   EXPECT_EQ(compared, 2 * 8 * 2);
 }
 
-// Outside the table best is FASTSIM-SDEC and balances as it does: to rounding under a
-// translational creepage (here vx = 2e-2, beyond the table's normalised creepage 6); under spin
-// it carries FASTSIM-SDEC's gap (SdecSpinBalancesTheRigidSlipsWork).
-TEST(FrictionalWorkBest, OutsideTheTableBalancesAsFastsimSdec) {
+// Beyond the table's creepages, near full sliding (vx = 2e-2: normalised creepage about 20),
+// the table answers towards full sliding and best's cells carry those totals' rigid-slip work:
+// to rounding, as inside.
+TEST(FrictionalWorkBest, TowardsFullSlidingBalancesToRounding) {
   for (const Sdec& patch : kPatches) {
+    const Creepages v{2e-2, 0, 0};
+    const Balance b = balance(Method::best, patch, v, grid_options(kDefaultGrid));
+    ASSERT_TRUE(b.solution.from_table) << b.solution.table_outside.value_or("");
+    ASSERT_GT(b.rigid, 0.0);
+    EXPECT_NEAR(b.error(), 0.0, kRounding) << "psi " << patch.psi;
+    EXPECT_NEAR(b.reported / b.rigid, 1.0, kRounding) << "psi " << patch.psi;
+  }
+}
+
+// Outside the table best is FASTSIM-SDEC and balances as it does: to rounding under a
+// translational creepage (here vx = 2e-2 on patches whose |psi| lies beyond the table's 0.8);
+// under spin it carries FASTSIM-SDEC's gap (SdecSpinBalancesTheRigidSlipsWork).
+TEST(FrictionalWorkBest, OutsideTheTableBalancesAsFastsimSdec) {
+  for (const Sdec& patch : {Sdec{4.25e-3, 6.0e-3, 0.9}, Sdec{4.25e-3, 4.25e-3, -0.85}}) {
     const Creepages v{2e-2, 0, 0};
     const Balance b = balance(Method::best, patch, v, grid_options(kDefaultGrid));
     const Balance fast = balance(Method::fastsim_sdec, patch, v, grid_options(kDefaultGrid));

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "creep_table_data.hpp"
@@ -19,6 +21,12 @@ using detail::CreepTableBlock;
 using detail::CreepTableData;
 
 constexpr double kSlack = 1e-12;  // relative slack on the range's ends (rounding of inputs)
+// Beyond r_max the table extrapolates towards full sliding (towards_full_sliding) where the
+// patch at r_max is within this fraction of mu N of it. Set when r_max was 6: over 1000 points
+// beyond it the answers stayed within 0.34 % of mu N of fresh exact solves, where 0.05 let Mz
+// reach 1.3 % of mu N c and 0.1 let F reach 3 %; beyond r_max = 20, 0.41 % and 0.90 % of
+// mu N c (studies/table_interpolation_study.cpp).
+constexpr double kFullSlidingMargin = 0.04;
 
 // Four-node (or fewer, on short axes) Lagrange stencil of q on increasing nodes x[0..n-1].
 struct Stencil {
@@ -96,15 +104,19 @@ std::string range_text(double lo, double hi) {
 // best, which has already moved on).
 const std::string kFallback = "; use --method best (or fastsim-sdec) there";
 
-// Empty message when covered, else the reason.
-std::string check(const CreepTableData& table, const contactgeom::Sdec& sdec, const Creepages& v,
-                  const ContactLoad& load, const Material& material, NuBlocks* out) {
+// Throws InputError naming the first invalid input.
+void validate(const contactgeom::Sdec& sdec, const Creepages& v, const ContactLoad& load,
+              const Material& material) {
   sdec.validate();
   load.validate();
   material.validate();
-  require_finite("vx", v.vx);
-  require_finite("vy", v.vy);
-  require_finite("phi", v.phi);
+  v.validate();
+}
+
+// Empty message when the table covers the patch's shape and material (nu, a/b, psi), else the
+// reason; `out` receives the blocks for nu. The inputs are valid.
+std::string check_shape(const CreepTableData& table, const contactgeom::Sdec& sdec,
+                        const Material& material, NuBlocks* out) {
   const int count = static_cast<int>(table.blocks.size());
   const CreepTableBlock* blocks = table.blocks.data();
   const double nu_lo = blocks[0].nu, nu_hi = blocks[count - 1].nu;
@@ -132,13 +144,6 @@ std::string check(const CreepTableData& table, const contactgeom::Sdec& sdec, co
     }
     if (std::abs(sdec.psi) > psi_max(*b) + kSlack) {
       why << "psi = " << sdec.psi << ": the creep table covers |psi| <= " << psi_max(*b);
-      return why.str();
-    }
-    const double r = normalise(*b, sdec, v, load, material).r();
-    if (r > r_max(*b) * (1 + kSlack)) {
-      why << "normalised creepage |(xi, eta, chi)| = " << r
-          << " (xi = G c^2 C11 vx/(mu N), eta = G c^2 C22 vy/(mu N), chi = " << b->spin_scale
-          << " G c^3 C23 phi/(mu N)): the creep table covers up to " << r_max(*b);
       return why.str();
     }
   }
@@ -214,6 +219,112 @@ const CreepTableData& data(const CreepTable& table) {
   return detail::CreepTableAccess::data(table);
 }
 
+// The normalised creepage's magnitude: the larger of the two blocks' (their C's differ).
+double magnitude(const NuBlocks& nb, const contactgeom::Sdec& sdec, const Creepages& v,
+                 const ContactLoad& load, const Material& material) {
+  double r = normalise(*nb.lower, sdec, v, load, material).r();
+  if (nb.upper) r = std::max(r, normalise(*nb.upper, sdec, v, load, material).r());
+  return r;
+}
+
+// Fx/(mu N), Fy/(mu N), Mz/(mu N c) interpolated in the blocks, linear in nu between them.
+std::array<double, 3> interpolate(const NuBlocks& nb, const contactgeom::Sdec& sdec,
+                                  const Creepages& v, const ContactLoad& load,
+                                  const Material& material) {
+  std::array<double, 3> f = evaluate(*nb.lower, sdec, v, load, material);
+  if (nb.upper && nb.t > 0.0) {
+    const std::array<double, 3> u = evaluate(*nb.upper, sdec, v, load, material);
+    for (std::size_t k = 0; k < f.size(); ++k) f[k] = (1 - nb.t) * f[k] + nb.t * u[k];
+  }
+  return f;
+}
+
+SdecGridOptions table_grid(const CreepTableRange& range, const contactgeom::Sdec& sdec) {
+  if (range.max_element_aspect >= 1.0)
+    return aspect_sdec_grid(sdec, range.grid, range.max_element_aspect);
+  SdecGridOptions grid;
+  grid.nx = grid.ny = range.grid;
+  return grid;
+}
+
+// Beyond r_max, towards full sliding. The exact theory's forces approach their full-sliding
+// limit S (every element sliding against its rigid slip, full_sliding_sdec) as 1/r: the
+// elastic part of the slip is bounded by the tractions while the rigid slip grows with r. S
+// depends on the direction of the creepages alone, so F(r) = S + (F_table(r_max) - S) r_max / r
+// in the same direction, on the table's grid. `deficit` is how far the patch at r_max is from
+// full sliding, |F_table - S| / (mu N) (and |Mz_table - S_Mz| / (mu N c)): where spin
+// dominates, the patch is far from it at r_max and the 1/r term alone does not hold.
+struct TowardsSliding {
+  std::array<double, 3> f{};
+  double deficit = 0.0;
+};
+
+TowardsSliding towards_full_sliding(const CreepTableData& table, const CreepTableRange& range,
+                                    const NuBlocks& nb, const contactgeom::Sdec& sdec,
+                                    const Creepages& v, const ContactLoad& load,
+                                    const Material& material, double r) {
+  const double k = range.r_max / r;
+  const Creepages at_max{v.vx * k, v.vy * k, v.phi * k};
+  const std::array<double, 3> tabled = interpolate(nb, sdec, at_max, load, material);
+  const CreepForces limit = full_sliding_sdec(sdec, v, load, table_grid(range, sdec));
+  const double mu_n = load.mu * load.N, moment = mu_n * sdec.c();
+  const bool with_moment = has_moment(table);
+  const std::array<double, 3> d = {tabled[0] - limit.Fx / mu_n, tabled[1] - limit.Fy / mu_n,
+                                   with_moment ? tabled[2] - limit.Mz.value_or(0.0) / moment : 0.0};
+  TowardsSliding out;
+  out.deficit = std::max(std::hypot(d[0], d[1]), std::abs(d[2]));
+  out.f = {limit.Fx / mu_n + k * d[0], limit.Fy / mu_n + k * d[1],
+           with_moment ? limit.Mz.value_or(0.0) / moment + k * d[2] : 0.0};
+  return out;
+}
+
+// Where the table answers: inside its creepages by interpolation, beyond them towards full
+// sliding where the patch is within kFullSlidingMargin of it at r_max; else why it does not.
+struct Answer {
+  std::string why;  // empty when the table answers
+  std::array<double, 3> f{};
+};
+
+Answer answer(const CreepTable& table, const contactgeom::Sdec& sdec, const Creepages& v,
+              const ContactLoad& load, const Material& material) {
+  validate(sdec, v, load, material);
+  const CreepTableData& d = data(table);
+  NuBlocks nb;
+  Answer out;
+  out.why = check_shape(d, sdec, material, &nb);
+  if (!out.why.empty()) return out;
+  const CreepTableRange range = table.range();
+  const double r = magnitude(nb, sdec, v, load, material);
+  if (r <= range.r_max * (1 + kSlack)) {
+    out.f = interpolate(nb, sdec, v, load, material);
+    return out;
+  }
+  const TowardsSliding beyond = towards_full_sliding(d, range, nb, sdec, v, load, material, r);
+  if (beyond.deficit <= range.full_sliding_margin) {
+    out.f = beyond.f;
+    return out;
+  }
+  std::ostringstream why;
+  why << "normalised creepage |(xi, eta, chi)| = " << r
+      << " (xi = G c^2 C11 vx/(mu N), eta = G c^2 C22 vy/(mu N), chi = " << range.spin_scale
+      << " G c^3 C23 phi/(mu N)): the creep table covers up to " << range.r_max
+      << ", and beyond only patches within " << range.full_sliding_margin
+      << " of mu N of full sliding there (this one: " << beyond.deficit << ")";
+  out.why = why.str();
+  return out;
+}
+
+// Forces [N] and moment [N m] from the normalised answer.
+CreepForces to_forces(const CreepTable& table, const std::array<double, 3>& f,
+                      const contactgeom::Sdec& sdec, const ContactLoad& load) {
+  const double mu_n = load.mu * load.N;
+  CreepForces forces;
+  forces.Fx = f[0] * mu_n;
+  forces.Fy = f[1] * mu_n;
+  if (has_moment(data(table))) forces.Mz = f[2] * mu_n * sdec.c();
+  return forces;
+}
+
 }  // namespace
 
 CreepTableRange CreepTable::range() const {
@@ -229,6 +340,7 @@ CreepTableRange CreepTable::range() const {
   range.grid = first.grid;
   range.spin_scale = first.spin_scale;
   range.max_element_aspect = first.max_element_aspect;
+  range.full_sliding_margin = kFullSlidingMargin;
   return range;
 }
 
@@ -237,30 +349,34 @@ CreepTableRange creep_table_range() {
 }
 
 SdecGridOptions creep_table_grid(const contactgeom::Sdec& sdec) {
-  const CreepTableRange range = creep_table_range();
-  if (range.max_element_aspect >= 1.0)
-    return aspect_sdec_grid(sdec, range.grid, range.max_element_aspect);
-  SdecGridOptions grid;
-  grid.nx = grid.ny = range.grid;
-  return grid;
+  return table_grid(creep_table_range(), sdec);
 }
 
 double creep_table_magnitude(const contactgeom::Sdec& sdec, const Creepages& creepages,
                              const ContactLoad& load, const Material& material) {
+  validate(sdec, creepages, load, material);
   NuBlocks nb;
-  const std::string why = check(data(creep_table()), sdec, {0, 0, 0}, load, material, &nb);
+  const std::string why = check_shape(data(creep_table()), sdec, material, &nb);
   if (!why.empty()) throw InputError(why + kFallback);
-  double r = normalise(*nb.lower, sdec, creepages, load, material).r();
-  if (nb.upper) r = std::max(r, normalise(*nb.upper, sdec, creepages, load, material).r());
-  return r;
+  return magnitude(nb, sdec, creepages, load, material);
+}
+
+CreepTableLookup creep_table_lookup(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                                    const ContactLoad& load, const Material& material) {
+  const CreepTable& table = creep_table();
+  Answer a = answer(table, sdec, creepages, load, material);
+  CreepTableLookup out;
+  if (a.why.empty())
+    out.forces = to_forces(table, a.f, sdec, load);
+  else
+    out.outside = std::move(a.why);
+  return out;
 }
 
 std::optional<std::string> creep_table_outside(const contactgeom::Sdec& sdec,
                                                const Creepages& creepages, const ContactLoad& load,
                                                const Material& material) {
-  std::string reason = check(data(creep_table()), sdec, creepages, load, material, nullptr);
-  if (reason.empty()) return std::nullopt;
-  return reason;
+  return creep_table_lookup(sdec, creepages, load, material).outside;
 }
 
 bool creep_table_covers(const contactgeom::Sdec& sdec, const Creepages& creepages,
@@ -271,21 +387,9 @@ bool creep_table_covers(const contactgeom::Sdec& sdec, const Creepages& creepage
 CreepForces creep_table_forces(const CreepTable& table, const contactgeom::Sdec& sdec,
                                const Creepages& creepages, const ContactLoad& load,
                                const Material& material) {
-  const CreepTableData& d = data(table);
-  NuBlocks nb;
-  const std::string why = check(d, sdec, creepages, load, material, &nb);
-  if (!why.empty()) throw InputError(why + kFallback);
-  std::array<double, 3> f = evaluate(*nb.lower, sdec, creepages, load, material);
-  if (nb.upper && nb.t > 0.0) {
-    const std::array<double, 3> u = evaluate(*nb.upper, sdec, creepages, load, material);
-    for (std::size_t k = 0; k < f.size(); ++k) f[k] = (1 - nb.t) * f[k] + nb.t * u[k];
-  }
-  const double mu_n = load.mu * load.N;
-  CreepForces forces;
-  forces.Fx = f[0] * mu_n;
-  forces.Fy = f[1] * mu_n;
-  if (has_moment(d)) forces.Mz = f[2] * mu_n * sdec.c();
-  return forces;
+  const Answer a = answer(table, sdec, creepages, load, material);
+  if (!a.why.empty()) throw InputError(a.why + kFallback);
+  return to_forces(table, a.f, sdec, load);
 }
 
 CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& creepages,

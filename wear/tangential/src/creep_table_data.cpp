@@ -259,6 +259,14 @@ std::shared_ptr<CreepTableData> read_table(const std::string& bytes, const fs::p
   for (std::size_t i = 1; i < table->blocks.size(); ++i) {
     if (table->blocks[i].nu == table->blocks[i - 1].nu)
       damaged(file, "two groups tabulate nu = " + std::to_string(table->blocks[i].nu));
+    // The range, the grid and the extrapolation beyond r_max are the first group's: every
+    // group must share them (and nodes, so that nu is interpolated between equal axes).
+    const CreepTableBlock &a = table->blocks.front(), &b = table->blocks[i];
+    if (a.grid != b.grid || a.max_element_aspect != b.max_element_aspect ||
+        a.spin_scale != b.spin_scale || a.a_over_b != b.a_over_b || a.psi != b.psi ||
+        a.theta != b.theta || a.beta != b.beta || a.r != b.r)
+      damaged(file, "its groups for nu = " + std::to_string(a.nu) + " and " + std::to_string(b.nu) +
+                        " differ in their axes, grid or spin scale");
   }
   return table;
 }

@@ -20,12 +20,17 @@ double rigid_slip_work(const CreepForces& forces, const Creepages& creepages) {
 bool correct_with_creep_table(const contactgeom::Sdec& sdec, const Creepages& creepages,
                               const ContactLoad& load, const Material& material,
                               TangentialSolution& solution) {
-  if (!creep_table_covers(sdec, creepages, load, material)) return false;
-  const CreepForces exact = creep_table_forces(sdec, creepages, load, material);
-  if (!exact.Mz) return false;  // a table without Mz cannot give the spin's work
+  const CreepTableLookup lookup = creep_table_lookup(sdec, creepages, load, material);
+  return lookup.forces && correct_with_table_totals(*lookup.forces, creepages, solution);
+}
+
+bool correct_with_table_totals(const CreepForces& table, const Creepages& creepages,
+                               TangentialSolution& solution) {
+  creepages.validate();
+  if (!table.Mz) return false;  // a table without Mz cannot give the spin's work
   // Interpolation can leave a tiny negative work near zero creepage; work is never negative.
-  const double work = std::max(0.0, rigid_slip_work(exact, creepages));
-  solution.forces = exact;
+  const double work = std::max(0.0, rigid_slip_work(table, creepages));
+  solution.forces = table;
   if (solution.fields && solution.frictional_work > 0.0) {
     const double factor = work / solution.frictional_work;
     CellFields& f = *solution.fields;

@@ -1,6 +1,7 @@
 #include "wheelwear/tangential/tangential.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
@@ -67,11 +68,12 @@ void solve_exact(const contactgeom::Sdec& sdec, const Creepages& creepages, cons
 void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages, const ContactLoad& load,
                 const Material& material, const SolveOptions& options,
                 TangentialSolution& solution) {
-  solution.table_outside = creep_table_outside(sdec, creepages, load, material);
+  CreepTableLookup lookup = creep_table_lookup(sdec, creepages, load, material);
+  solution.table_outside = std::move(lookup.outside);
   constexpr const char* kNoMoment =
       "the table has no spin moment Mz, which the frictional work needs";
-  if (!solution.table_outside && !options.fastsim.cell_fields) {
-    const CreepForces forces = creep_table_forces(sdec, creepages, load, material);
+  if (lookup.forces && !options.fastsim.cell_fields) {
+    const CreepForces& forces = *lookup.forces;
     if (forces.Mz) {
       totals_only(forces, solution);
       solution.from_table = true;
@@ -93,8 +95,8 @@ void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages, const
     return;
   }
   fastsim(FastsimMethod::sdec, sdec, creepages, load, material, options.fastsim, solution);
-  if (!solution.table_outside) {
-    solution.from_table = correct_with_creep_table(sdec, creepages, load, material, solution);
+  if (lookup.forces) {
+    solution.from_table = correct_with_table_totals(*lookup.forces, creepages, solution);
     if (!solution.from_table) solution.table_outside = kNoMoment;
   }
 }

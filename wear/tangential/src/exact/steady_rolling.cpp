@@ -118,6 +118,33 @@ ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepag
   return solution;
 }
 
+CreepForces full_sliding_sdec(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                              const ContactLoad& load, const SdecGridOptions& grid_options) {
+  creepages.validate();
+  load.validate();
+  const ElementGrid grid = sdec_grid(sdec, grid_options);
+  const double x_offset = grid.dx / 6.0;  // the spin's offset of solve_and_sum's rigid slip
+  double fx = 0.0, fy = 0.0, mz = 0.0;
+  for (int j = 0; j < grid.ny; ++j)
+    for (int i = 0; i < grid.nx; ++i) {
+      const double pn = sdec.pressure(grid.x(i), grid.y(j), load.N);
+      const double wx = creepages.vx - creepages.phi * grid.y(j);
+      const double wy = creepages.vy + creepages.phi * (grid.x(i) + x_offset);
+      const double w = std::hypot(wx, wy);
+      if (pn <= 0.0 || w == 0.0) continue;
+      const double px = -load.mu * pn * wx / w, py = -load.mu * pn * wy / w;
+      fx += px;
+      fy += py;
+      mz += grid.x(i) * py - grid.y(j) * px;
+    }
+  const double da = grid.area();
+  CreepForces forces;
+  forces.Fx = fx * da;
+  forces.Fy = fy * da;
+  forces.Mz = mz * da;
+  return forces;
+}
+
 ExactSolution exact_rolling(const ElementGrid& grid, const std::vector<double>& h,
                             const Creepages& creepages, const ContactLoad& load,
                             const Material& material, const ExactSolverOptions& options,

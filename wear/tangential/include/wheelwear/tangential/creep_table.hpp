@@ -34,13 +34,18 @@ struct CreepTableRange {
   double nu_min = 0.0, nu_max = 0.0;              ///< Poisson's ratio [-]
   double a_over_b_min = 0.0, a_over_b_max = 0.0;  ///< ellipticity a/b [-]
   double psi_max = 0.0;                           ///< |psi| <= psi_max [-]
-  /// Largest magnitude of the normalised creepage (xi, eta, chi) [-] (see creep_table_forces).
+  /// Largest tabulated magnitude of the normalised creepage (xi, eta, chi) [-] (beyond it the
+  /// table answers near full sliding only: creep_table_forces).
   double r_max = 0.0;
   int grid = 0;  ///< elements across the patch of the exact solver's grid the table was made with
   double spin_scale = 1.0;  ///< s of the normalised spin (creep_table_magnitude) [-]
   /// Its elements at most this many times as long as wide (0: grid x grid at every a/b);
   /// creep_table_grid gives the grid of a patch.
   double max_element_aspect = 0.0;
+  /// Beyond r_max the table answers where the patch is nearly sliding fully: where its forces
+  /// at r_max (same direction) lie within this fraction of mu N (and of mu N c for Mz) of the
+  /// full-sliding limit, it extrapolates towards that limit (creep_table_forces) [-].
+  double full_sliding_margin = 0.0;
 };
 
 /// A book of creep-force tables read from its file (load_creep_table): immutable; copies share
@@ -102,18 +107,32 @@ SdecGridOptions creep_table_grid(const contactgeom::Sdec& sdec);
 /// (CreepTableRange::spin_scale: spin saturates the patch at a fraction of the normalised
 /// creepage translation needs); returns
 /// sqrt(xi^2 + eta^2 + chi^2) [-] (the larger of the two tabulated nu around `material.nu`),
-/// which the table covers up to creep_table_range().r_max. Throws InputError unless a/b, psi
-/// and nu are inside the table's range.
+/// which the table tabulates up to creep_table_range().r_max. Throws InputError on invalid
+/// input and unless a/b, psi and nu are inside the table's range.
 double creep_table_magnitude(const contactgeom::Sdec& sdec, const Creepages& creepages,
                              const ContactLoad& load, const Material& material);
 
-/// True when (sdec, creepages, load, material) lie inside the table's range. Throws
-/// InputError when there is no table (an installation without it is broken, not "outside").
+/// The table's answer for one patch in one evaluation: its forces where it answers
+/// (creep_table_forces), else why not (creep_table_outside).
+struct CreepTableLookup {
+  std::optional<CreepForces> forces;
+  std::optional<std::string> outside;
+};
+
+/// Looks (sdec, creepages, load, material) up in the table: forces or the reason, never both.
+/// Throws InputError on invalid input and when there is no table.
+CreepTableLookup creep_table_lookup(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                                    const ContactLoad& load, const Material& material);
+
+/// True when the table answers for (sdec, creepages, load, material): inside its range, or
+/// beyond r_max near full sliding (creep_table_forces). Throws InputError on invalid input and
+/// when there is no table (an installation without it is broken, not "outside").
 bool creep_table_covers(const contactgeom::Sdec& sdec, const Creepages& creepages,
                         const ContactLoad& load, const Material& material);
 
-/// Why the table does not cover (sdec, creepages, load, material): which parameter is outside
-/// and the table's range; std::nullopt when it covers them. Throws InputError when there is no
+/// Why the table does not answer for (sdec, creepages, load, material): which parameter is
+/// outside and the table's range (beyond r_max: how far the patch is from full sliding);
+/// std::nullopt when it answers. Throws InputError on invalid input and when there is no
 /// table.
 std::optional<std::string> creep_table_outside(const contactgeom::Sdec& sdec,
                                                const Creepages& creepages, const ContactLoad& load,
@@ -125,9 +144,13 @@ std::optional<std::string> creep_table_outside(const contactgeom::Sdec& sdec,
 /// log(a/b), psi, the direction (theta, beta) and the magnitude r of the normalised creepage, and
 /// linear in nu between the tabulated ratios. psi < 0 uses the mirror image (vy, phi, Fy change
 /// sign) and creepages with vx < 0 the reversed ones (forces change sign). Mz is tabulated as
-/// Mz/(mu N c) (none for a table written without it). Throws InputError naming the
-/// parameter when the input is invalid or outside the table's range (creep_table_range): use
-/// FASTSIM-SDEC there.
+/// Mz/(mu N c) (none for a table written without it). Beyond r_max, where the patch at r_max
+/// (same direction) is within full_sliding_margin of its full-sliding limit S
+/// (full_sliding_sdec on the table's grid), the exact theory's approach to that limit as 1/r
+/// carries the table on: F(r) = S + (F(r_max) - S) r_max / r (S depends on the creepages'
+/// direction alone). Throws InputError naming the parameter when the input is invalid or
+/// outside what the table answers (creep_table_range, creep_table_outside): use FASTSIM-SDEC
+/// there.
 CreepForces creep_table_forces(const contactgeom::Sdec& sdec, const Creepages& creepages,
                                const ContactLoad& load, const Material& material);
 

@@ -30,4 +30,9 @@ bool correct_with_creep_table(const contactgeom::Sdec& sdec, const Creepages& cr
                               const ContactLoad& load, const Material& material,
                               TangentialSolution& solution);
 
+/// The same with the table's totals `table` already looked up (creep_table_lookup): false,
+/// leaving `solution` untouched, when they have no Mz. Throws InputError on invalid creepages.
+bool correct_with_table_totals(const CreepForces& table, const Creepages& creepages,
+                               TangentialSolution& solution);
+
 }  // namespace wheelwear::tangential

@@ -70,8 +70,8 @@ struct SolveOptions {
   /// best, for a patch outside the book of tables: Kalker's exact theory on aspect_sdec_grid
   /// (its own grid: exact_grid is not used; at least 3000 sweeps allowed; 0.05-2 s a patch for
   /// a/b 0.05 ... 25; for single evaluations) instead of FASTSIM-SDEC (tens of microseconds,
-  /// about 7 % of mu N off the exact theory at a/b 10 ... 25 and up to 14 % at a/b 5 ... 7 or
-  /// 0.05; for runs).
+  /// 2-14 % of mu N off the exact theory on patches of a/b 0.05 ... 0.1 and 5 ... 25; for
+  /// runs).
   bool exact_beyond_table = false;
 
   void validate() const;  ///< throws InputError naming the bad field

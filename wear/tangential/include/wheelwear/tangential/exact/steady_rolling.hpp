@@ -37,6 +37,15 @@ ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepag
                          const ContactLoad& load, const Material& material,
                          const SdecGridOptions& grid = {}, const ExactSolverOptions& options = {});
 
+/// The limit of exact_sdec as the creepages grow in a fixed direction: every element slides
+/// with |p| = mu p_n against its rigid slip w. The elastic part of the slip is bounded by the
+/// tractions, so exact_sdec's forces approach these as 1/|w|. Same grid, pressure and rigid
+/// slip as exact_sdec, without iteration: forces on the wheel (Kalker's convention), Mz about O.
+/// An element whose rigid slip vanishes exactly carries no traction. Throws InputError on
+/// invalid input.
+CreepForces full_sliding_sdec(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                              const ContactLoad& load, const SdecGridOptions& grid = {});
+
 /// Steady rolling for a given undeformed distance `h` [m] per element of `grid` (index
 /// j*nx + i, before the approach; the contact area follows from the normal problem,
 /// exact_normal) with normal force load.N and friction load.mu. Creepages are at the origin
