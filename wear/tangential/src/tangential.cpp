@@ -69,19 +69,17 @@ void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages, const
                 const Material& material, const SolveOptions& options,
                 TangentialSolution& solution) {
   CreepTableLookup lookup = creep_table_lookup(sdec, creepages, load, material);
+  if (lookup.forces && !lookup.forces->Mz) {  // a table without Mz cannot give the work
+    lookup.forces.reset();
+    lookup.outside = "the table has no spin moment Mz, which the frictional work needs";
+  }
   solution.table_outside = std::move(lookup.outside);
-  constexpr const char* kNoMoment =
-      "the table has no spin moment Mz, which the frictional work needs";
   if (lookup.forces && !options.fastsim.cell_fields) {
-    const CreepForces& forces = *lookup.forces;
-    if (forces.Mz) {
-      totals_only(forces, solution);
-      solution.from_table = true;
-      // The work of the rigid slip, as correct_with_creep_table gives it with cells.
-      solution.frictional_work = std::max(0.0, rigid_slip_work(forces, creepages));
-      return;
-    }
-    solution.table_outside = kNoMoment;
+    totals_only(*lookup.forces, solution);
+    solution.from_table = true;
+    // The work of the rigid slip, as correct_with_creep_table gives it with cells.
+    solution.frictional_work = std::max(0.0, rigid_slip_work(*lookup.forces, creepages));
+    return;
   }
   if (solution.table_outside && options.exact_beyond_table) {
     SolveOptions beyond = options;
@@ -95,10 +93,8 @@ void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages, const
     return;
   }
   fastsim(FastsimMethod::sdec, sdec, creepages, load, material, options.fastsim, solution);
-  if (lookup.forces) {
+  if (lookup.forces)
     solution.from_table = correct_with_table_totals(*lookup.forces, creepages, solution);
-    if (!solution.from_table) solution.table_outside = kNoMoment;
-  }
 }
 
 }  // namespace
