@@ -6,7 +6,10 @@
 // the psi < 0 and vx < 0 symmetry branches are taken, as in a run over many contacts.
 // BM_CreepTableTowardsSliding: the same call beyond the table's creepages, where it extrapolates
 // towards full sliding (two lookups and one sum over the table's grid for the patch): wheel
-// tread and flange patches (a/b 0.5 ... 25) under translational creepage at r = 8 ... 30.
+// tread and flange patches (a/b 0.5 ... 25) under translational creepage at 1.2 ... 2.5 times
+// the table's r_max. Inside the table, calls near full sliding (|F| above half the full-sliding
+// limit's) also sum that limit over the table's grid: among BM_CreepTable's inputs, those at
+// r = 2 and 4 in translation.
 // The machine may be shared: run with --benchmark_repetitions=5 and read the "min" row.
 
 #include <benchmark/benchmark.h>
@@ -109,8 +112,9 @@ std::vector<TableInput> sliding_inputs() {
     for (const double psi : {-0.4, 0.0, 0.6}) {
       const contactgeom::Sdec patch{c * std::sqrt(a_over_b), c / std::sqrt(a_over_b), psi};
       for (const tangential::Creepages& d : directions)
-        for (const double r : {8.0, 15.0, 30.0}) {
-          const double s = r / tangential::creep_table_magnitude(patch, d, load, kSteel);
+        for (const double beyond : {1.2, 1.6, 2.5}) {
+          const double s =
+              beyond * range.r_max / tangential::creep_table_magnitude(patch, d, load, kSteel);
           const TableInput in{patch, {s * d.vx, s * d.vy, s * d.phi}, load};
           if (tangential::creep_table_covers(in.patch, in.creepages, in.load, kSteel))
             inputs.push_back(in);

@@ -16,7 +16,9 @@
 //   xi >= 0 (beta in [-pi/2, pi/2]): reversing all creepages reverses the forces.
 // Stored: Fx/(mu N), Fy/(mu N) and the spin moment about O, Mz/(mu N c),
 // [g][psi][theta][beta][r], r = 0 included (zero forces). Mz changes sign with Fy under both
-// symmetries.
+// symmetries. Per direction node [g][psi][theta][beta] also the full-sliding limit of the three
+// (full_sliding_sdec on the node's grid; Fx_sliding_muN ...), which the interpolation uses near
+// full sliding (creep_table.cpp): no iteration, under a second for the whole table.
 //
 // Grid: n elements across the patch, elements at most --max-aspect (5) times as long as wide
 // (aspect_sdec_grid): n x n up to a/b = 5, as the table was first made; beyond, elements no
@@ -26,6 +28,9 @@
 // Usage: wheelwear_creep_table_generator [--n 30] [--threads 2] [--out data/creep_table.h5]
 //   [--nu 0.25,0.28] [--g 0.2,0.25,...] [--psi 0,0.2,...] [--theta-count 33] [--beta-count 19]
 //   [--r 0,0.25,...,20] [--spin-scale 3] [--max-aspect 5] [--reuse OLD.h5,...]
+//   or: wheelwear_creep_table_generator --add-sliding TABLE.h5 [--threads 2]
+// --add-sliding writes (or rewrites) the full-sliding limits into an existing table in place,
+// its forces untouched (how the shipped table, solved before the limits were stored, got them).
 // --reuse OLD.h5[,OLDER.h5...] takes every node the files hold (the same nu, grid rule and spin
 // scale, and each of the node's axis values among the file's) from the first that holds it
 // instead of solving it again: to add nodes along any axis (a/b, psi, theta, beta, r) to a
@@ -33,7 +38,7 @@
 // table).
 // The defaults are the shipped table: 2 x 1 003 200 nodes (898 320 solves per nu), about 90 min on
 // two cores: 35 min for a/b 0.2 ... 5 and 37 min for 6 ... 10 with r up to 6, 10 min for r 7 ...
-// 12 and 5 min for 14 ... 20 (solves near full sliding take fewer sweeps), 33 MB. The nodes are
+// 12 and 5 min for 14 ... 20 (solves near full sliding take fewer sweeps), 35 MB. The nodes are
 // where interpolating (creep_table.cpp) needs them to stay within 1 % of mu N of fresh solves
 // (tests/tangential/creep_table_test.cpp; but for a corner of wide patches near full sliding,
 // docs/validation.md): the forces turn fastest with theta where the patch begins to slide fully,
@@ -52,6 +57,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <numbers>
@@ -61,6 +67,7 @@
 #include <thread>
 #include <vector>
 
+#include "wheelwear/tangential/creep_table.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 #include "wheelwear/tangential/kalker_coefficients.hpp"
 
@@ -82,32 +89,64 @@ std::vector<double> uniform(double lo, double hi, int count) {
   return out;
 }
 
+// An HDF5 identifier or status, or std::runtime_error naming `what` where the call failed.
+template <class Id>
+Id checked(Id id, const std::string& what) {
+  if (id < 0) throw std::runtime_error("HDF5 failed to " + what);
+  return id;
+}
+
+// Closes an HDF5 object when it leaves scope (on the error paths too).
+class Handle {
+ public:
+  Handle(hid_t id, herr_t (*closer)(hid_t)) : id_(id), close_(closer) {}
+  ~Handle() {
+    if (id_ >= 0) close_(id_);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  hid_t get() const { return id_; }
+  // Closes now, so that a failure to flush is seen.
+  void close(const std::string& what) {
+    const hid_t id = id_;
+    id_ = -1;
+    checked(close_(id), what);
+  }
+
+ private:
+  hid_t id_;
+  herr_t (*close_)(hid_t);
+};
+
 void write(hid_t group, const char* name, const std::vector<double>& data,
            const std::vector<hsize_t>& dims, const char* units, const char* description) {
-  const hid_t space = H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr);
-  const hid_t plist = H5Pcreate(H5P_DATASET_CREATE);
+  const std::string what = std::string("write ") + name;
+  const Handle space(
+      checked(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), what),
+      H5Sclose);
+  const Handle plist(checked(H5Pcreate(H5P_DATASET_CREATE), what), H5Pclose);
   if (dims.size() > 1) {
     std::vector<hsize_t> chunk = dims;
     chunk[0] = 1;
-    H5Pset_chunk(plist, static_cast<int>(chunk.size()), chunk.data());
-    H5Pset_shuffle(plist);
-    H5Pset_deflate(plist, 9);
+    checked(H5Pset_chunk(plist.get(), static_cast<int>(chunk.size()), chunk.data()), what);
+    checked(H5Pset_shuffle(plist.get()), what);
+    checked(H5Pset_deflate(plist.get(), 9), what);
   }
-  const hid_t set = H5Dcreate2(group, name, H5T_IEEE_F64LE, space, H5P_DEFAULT, plist, H5P_DEFAULT);
-  H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
+  const Handle set(checked(H5Dcreate2(group, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
+                                      plist.get(), H5P_DEFAULT),
+                           what),
+                   H5Dclose);
+  checked(H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), what);
   for (const auto& [key, value] : {std::pair{"units", units}, {"description", description}}) {
-    const hid_t type = H5Tcopy(H5T_C_S1);
-    H5Tset_size(type, std::string(value).size() + 1);
-    const hid_t scalar = H5Screate(H5S_SCALAR);
-    const hid_t attr = H5Acreate2(set, key, type, scalar, H5P_DEFAULT, H5P_DEFAULT);
-    H5Awrite(attr, type, value);
-    H5Aclose(attr);
-    H5Sclose(scalar);
-    H5Tclose(type);
+    const Handle type(checked(H5Tcopy(H5T_C_S1), what), H5Tclose);
+    checked(H5Tset_size(type.get(), std::string(value).size() + 1), what);
+    const Handle scalar(checked(H5Screate(H5S_SCALAR), what), H5Sclose);
+    const Handle attr(
+        checked(H5Acreate2(set.get(), key, type.get(), scalar.get(), H5P_DEFAULT, H5P_DEFAULT),
+                what),
+        H5Aclose);
+    checked(H5Awrite(attr.get(), type.get(), value), what);
   }
-  H5Dclose(set);
-  H5Pclose(plist);
-  H5Sclose(space);
 }
 
 void write_attribute(hid_t object, const char* key, const std::string& value) {
@@ -237,9 +276,131 @@ std::size_t copy_reused(const Reused& old, const Axes& axes, double max_aspect,
   return copied;
 }
 
-}  // namespace
+// The full-sliding limit (full_sliding_sdec) at every direction node [g][psi][theta][beta] of a
+// group, normalised as its forces: the table's interpolation takes it out of its error near
+// full sliding (creep_table.cpp). No iteration: a second on two threads for the whole table.
+struct Sliding {
+  std::vector<double> fx, fy, mz;
+};
 
-int main(int argc, char** argv) {
+Sliding sliding_limits(const Axes& axes, const std::vector<double>& c11,
+                       const std::vector<double>& c22, const std::vector<double>& c23, int n,
+                       double max_aspect, double spin_scale, unsigned threads) {
+  const std::size_t n_b = axes.betas.size(), n_t = axes.thetas.size(), n_p = axes.psis.size();
+  const std::size_t total = axes.gs.size() * n_p * n_t * n_b;
+  Sliding out{std::vector<double>(total), std::vector<double>(total), std::vector<double>(total)};
+  std::atomic<std::size_t> next{0};
+  std::vector<std::thread> pool;
+  std::vector<std::exception_ptr> failed(threads);
+  for (unsigned t = 0; t < threads; ++t) {
+    pool.emplace_back([&, t] {
+      const tangential::ContactLoad load{1e4, 0.3};
+      const double mu_n = load.mu * load.N, shear = 80e9;  // as the solves' G
+      try {
+        for (std::size_t i = next++; i < total; i = next++) {
+          const std::size_t ib = i % n_b, it = i / n_b % n_t, ip = i / (n_b * n_t) % n_p,
+                            ig = i / (n_b * n_t * n_p);
+          const double a = 5e-3, b = a / axes.gs[ig], c = std::sqrt(a * b), gc2 = shear * c * c;
+          const double th = axes.thetas[it], be = axes.betas[ib];
+          // A unit normalised creepage: S depends on its direction alone.
+          const tangential::Creepages v{std::sin(th) * std::cos(be) * mu_n / (gc2 * c11[ig]),
+                                        std::sin(th) * std::sin(be) * mu_n / (gc2 * c22[ig]),
+                                        std::cos(th) * mu_n / (spin_scale * gc2 * c * c23[ig])};
+          const contactgeom::Sdec patch{a, b, axes.psis[ip]};
+          const tangential::CreepForces s = tangential::full_sliding_sdec(
+              patch, v, load, tangential::aspect_sdec_grid(patch, n, max_aspect));
+          out.fx[i] = s.Fx / mu_n;
+          out.fy[i] = s.Fy / mu_n;
+          out.mz[i] = *s.Mz / (mu_n * c);
+        }
+      } catch (...) {  // e.g. an axis value full_sliding_sdec refuses: reported after the join
+        failed[t] = std::current_exception();
+        next = total;
+      }
+    });
+  }
+  for (auto& t : pool) t.join();
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+  return out;
+}
+
+void write_sliding(hid_t group, const Sliding& s, const Axes& axes) {
+  const std::vector<hsize_t> dims = {axes.gs.size(), axes.psis.size(), axes.thetas.size(),
+                                     axes.betas.size()};
+  write(group, "Fx_sliding_muN", s.fx, dims, "1",
+        "full-sliding limit of Fx/(mu N) in the node's direction (full_sliding_sdec) "
+        "[a_over_b][psi][theta][beta]");
+  write(group, "Fy_sliding_muN", s.fy, dims, "1",
+        "full-sliding limit of Fy/(mu N) in the node's direction [a_over_b][psi][theta][beta]");
+  write(group, "Mz_sliding_muNc", s.mz, dims, "1",
+        "full-sliding limit of Mz/(mu N c) in the node's direction [a_over_b][psi][theta][beta]");
+}
+
+// --add-sliding: writes (or rewrites) the full-sliding limits into every group of an existing
+// table, leaving its forces as they are. Through a copy, which the library must read back as a
+// table before it is renamed over the file: any failure leaves the file as it was.
+void add_sliding_to_copy(const std::string& copy, unsigned threads) {
+  Handle file(H5Fopen(copy.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
+  if (file.get() < 0) throw std::runtime_error("it is not an HDF5 file");
+  H5G_info_t info;
+  checked(H5Gget_info(file.get(), &info), "list the file's groups");
+  int groups = 0;
+  for (hsize_t k = 0; k < info.nlinks; ++k) {
+    char name[64] = {};
+    checked(H5Lget_name_by_idx(file.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name, sizeof name,
+                               H5P_DEFAULT),
+            "list the file's groups");
+    if (std::string(name).rfind("nu_", 0) != 0) continue;
+    const Handle group(
+        checked(H5Gopen2(file.get(), name, H5P_DEFAULT), "open " + std::string(name)), H5Gclose);
+    const Axes axes{read_doubles(group.get(), "a_over_b"), read_doubles(group.get(), "psi"),
+                    read_doubles(group.get(), "theta"), read_doubles(group.get(), "beta"),
+                    read_doubles(group.get(), "r")};
+    const std::vector<double> c11 = read_doubles(group.get(), "C11"),
+                              c22 = read_doubles(group.get(), "C22"),
+                              c23 = read_doubles(group.get(), "C23");
+    const std::size_t n_g = axes.gs.size();
+    if (n_g == 0 || axes.psis.empty() || axes.thetas.empty() || axes.betas.empty() ||
+        c11.size() != n_g || c22.size() != n_g || c23.size() != n_g)
+      throw std::runtime_error("group " + std::string(name) +
+                               " lacks the axes or C11, C22, C23 of a creep table");
+    const int n = static_cast<int>(read_number(group.get(), "grid", 30));
+    const double aspect = read_number(group.get(), "max_element_aspect", 1e9);
+    const double spin_scale = read_number(group.get(), "spin_scale", 1.0);
+    const Sliding limits = sliding_limits(axes, c11, c22, c23, n, aspect, spin_scale, threads);
+    for (const char* set : {"Fx_sliding_muN", "Fy_sliding_muN", "Mz_sliding_muNc"})
+      if (H5Lexists(group.get(), set, H5P_DEFAULT) > 0)
+        checked(H5Ldelete(group.get(), set, H5P_DEFAULT), std::string("remove the old ") + set);
+    write_sliding(group.get(), limits, axes);
+    ++groups;
+  }
+  file.close("close the table");
+  if (groups == 0) throw std::runtime_error("it holds no group nu_* of a creep table");
+  tangential::load_creep_table(copy);  // read back as the library reads it, or say why not
+}
+
+int add_sliding(const std::string& path, unsigned threads) {
+  const std::string partial_path = path + ".sliding.partial";
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // the messages below say what failed
+  try {
+    std::filesystem::copy_file(path, partial_path,
+                               std::filesystem::copy_options::overwrite_existing);
+    add_sliding_to_copy(partial_path, threads);
+    std::filesystem::rename(partial_path, path);
+  } catch (const std::exception& e) {
+    std::error_code ignored;
+    std::filesystem::remove(partial_path, ignored);
+    std::cerr << "--add-sliding " << path << ": " << e.what() << "; the file is unchanged\n";
+    return 1;
+  }
+  std::cout << "full-sliding limits written into every group of " << path << '\n';
+  return 0;
+}
+
+// The generator's work; throws where writing the table failed (the table it would replace, which
+// --reuse may be reading, stays as it was: the new one is renamed over it only when complete).
+int generate(int argc, char** argv) {
   int n = 30;
   unsigned threads = 2;
   std::string out_path = "data/creep_table.h5";
@@ -253,6 +414,7 @@ int main(int argc, char** argv) {
   std::vector<double> rs = {0.0, 0.25, 0.5, 0.75, 1.0, 1.5,  2.0,  2.5,  3.0,  3.5,
                             4.0, 5.0,  6.0, 7.0,  8.0, 10.0, 12.0, 14.0, 17.0, 20.0};
   double spin_scale = 3.0;
+  std::string add_sliding_to;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--n") {
@@ -277,16 +439,19 @@ int main(int argc, char** argv) {
       spin_scale = std::stod(value);
     } else if (key == "--max-aspect") {
       max_aspect = std::stod(value);
+    } else if (key == "--add-sliding") {
+      add_sliding_to = value;
     } else if (key == "--reuse") {
       std::stringstream list(value);
       for (std::string path; std::getline(list, path, ',');) reuse_paths.push_back(path);
     } else {
       std::cerr << "unknown option " << key
                 << "; options: --n --threads --out --nu --g --psi --theta-count --beta-count "
-                   "--r --spin-scale --max-aspect --reuse\n";
+                   "--r --spin-scale --max-aspect --reuse --add-sliding\n";
       return 2;
     }
   }
+  if (!add_sliding_to.empty()) return add_sliding(add_sliding_to, threads);
   if (!(std::isfinite(max_aspect) && max_aspect >= 1.0)) {
     std::cerr << "need a finite --max-aspect >= 1\n";
     return 2;
@@ -441,6 +606,8 @@ int main(int argc, char** argv) {
     write(group, "Fy_muN", fy, dims, "1", "Fy/(mu N) [a_over_b][psi][theta][beta][r]");
     write(group, "Mz_muNc", mz, dims, "1",
           "Mz/(mu N c), spin moment about O, c = sqrt(ab) [a_over_b][psi][theta][beta][r]");
+    write_sliding(group, sliding_limits(axes, c11, c22, c23, n, max_aspect, spin_scale, threads),
+                  axes);
     H5Gclose(group);
     std::cout << name << ": " << total << " nodes on grids of " << n << " elements across in "
               << seconds << " s (" << threads << " threads), " << unconverged << " not converged"
@@ -456,4 +623,15 @@ int main(int argc, char** argv) {
   }
   std::cout << "-> " << out_path << " in " << seconds_total << " s\n";
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return generate(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << '\n';
+    return 1;
+  }
 }

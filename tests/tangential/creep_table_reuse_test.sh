@@ -2,7 +2,9 @@
 # The creep-table generator's --reuse (generators/creep_table_generator.cpp): a small table
 # extended with more a/b, theta and r nodes, reusing earlier tables (one per nu, as a long
 # extension is made one nu at a time), reuses exactly the earlier nodes and equals the same
-# table solved from scratch bit for bit (the exact solve is deterministic), for both nu.
+# table solved from scratch bit for bit (the exact solve is deterministic), for both nu, with
+# its full-sliding limits per direction node; --add-sliding writes those limits into a table
+# without them, the same bits, and refuses a file that is no table, leaving it as it was.
 # Usage: creep_table_reuse_test.sh GENERATOR
 set -euo pipefail
 generator="$1"
@@ -29,8 +31,41 @@ for expected in "nu_0.25: 300 of 1080 nodes reused from $dir/old25.h5" \
 done
 "$generator" "${common[@]}" "${new[@]}" --nu 0.25,0.28 --out "$dir/fresh.h5" > /dev/null
 for nu in nu_0.25 nu_0.28; do
-  for values in Fx_muN Fy_muN Mz_muNc; do
+  for values in Fx_muN Fy_muN Mz_muNc Fx_sliding_muN Fy_sliding_muN Mz_sliding_muNc; do
     h5diff "$dir/reused.h5" "$dir/fresh.h5" "$nu/$values" "$nu/$values"
   done
 done
-echo "--reuse: 300 of 1080 nodes per nu reused, each from its file; equal to a fresh table bit for bit"
+# A table without the limits (as the shipped one was solved) gets them from --add-sliding, the
+# same bits as the generator writes, its forces untouched. (Debian's python3-h5py removes them.)
+cp "$dir/fresh.h5" "$dir/added.h5"
+/usr/bin/python3 - "$dir/added.h5" << 'EOF'
+import sys
+import h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    for group in ("nu_0.25", "nu_0.28"):
+        for name in ("Fx_sliding_muN", "Fy_sliding_muN", "Mz_sliding_muNc"):
+            del f[group][name]
+EOF
+"$generator" --add-sliding "$dir/added.h5" > "$dir/log"
+grep -qxF "full-sliding limits written into every group of $dir/added.h5" "$dir/log"
+for nu in nu_0.25 nu_0.28; do
+  for values in Fx_muN Fy_muN Mz_muNc Fx_sliding_muN Fy_sliding_muN Mz_sliding_muNc; do
+    h5diff "$dir/added.h5" "$dir/fresh.h5" "$nu/$values" "$nu/$values"
+  done
+done
+# A file that is no table, and an HDF5 file without a table's groups: refused, left as they were.
+echo "not a table" > "$dir/junk.h5"
+/usr/bin/python3 -c "import h5py, sys; h5py.File(sys.argv[1], 'w')['x'] = [1.0]" "$dir/other.h5"
+cp "$dir/other.h5" "$dir/other_before.h5"
+for bad in junk other; do
+  if "$generator" --add-sliding "$dir/$bad.h5" 2> "$dir/err"; then
+    echo "--add-sliding accepted $bad.h5, which holds no creep table" >&2
+    exit 1
+  fi
+  grep -q "the file is unchanged" "$dir/err"
+  [[ ! -e "$dir/$bad.h5.sliding.partial" ]]
+done
+[[ "$(cat "$dir/junk.h5")" == "not a table" ]]
+cmp "$dir/other.h5" "$dir/other_before.h5"
+echo "--reuse: 300 of 1080 nodes per nu reused, each from its file; equal to a fresh table bit for bit;"
+echo "--add-sliding: the same limits in place; a file that is no table refused and left as it was"

@@ -176,7 +176,8 @@ std::vector<double> read_values(const H5::Group& group, const std::string& name,
                                 const std::vector<hsize_t>& expected, const fs::path& file,
                                 const std::string& where) {
   if (dims_of(group.openDataSet(name)) != expected)
-    damaged(file, where + ": " + name + " is not shaped [a_over_b][psi][theta][beta][r]");
+    damaged(file, where + ": " + name + " is not shaped [a_over_b][psi][theta][beta]" +
+                      (expected.size() == 5 ? "[r]" : ""));
   std::vector<double> values = read_doubles(group, name);
   for (const double v : values)
     if (!std::isfinite(v)) damaged(file, where + ": " + name + " holds a value that is not finite");
@@ -230,6 +231,17 @@ CreepTableBlock read_block(const H5::Group& group, const fs::path& file, const s
     b.values.push_back(static_cast<float>(fy[i]));
     b.values.push_back(b.has_mz ? static_cast<float>(mz[i]) : 0.0f);
   }
+  // The full-sliding limit per direction, where the table holds it (with Mz only: the
+  // correction near full sliding takes all three).
+  if (b.has_mz && group.nameExists("Fx_sliding_muN")) {
+    const std::vector<hsize_t> directions(dims.begin(), dims.end() - 1);
+    const std::vector<double> sx = read_values(group, "Fx_sliding_muN", directions, file, where);
+    const std::vector<double> sy = read_values(group, "Fy_sliding_muN", directions, file, where);
+    const std::vector<double> sm = read_values(group, "Mz_sliding_muNc", directions, file, where);
+    b.sliding.reserve(3 * sx.size());
+    for (std::size_t i = 0; i < sx.size(); ++i)
+      for (const double v : {sx[i], sy[i], sm[i]}) b.sliding.push_back(static_cast<float>(v));
+  }
   b.log_a_over_b = b.a_over_b;
   for (double& g : b.log_a_over_b) g = std::log(g);
   return b;
@@ -267,6 +279,11 @@ std::shared_ptr<CreepTableData> read_table(const std::string& bytes, const fs::p
         a.theta != b.theta || a.beta != b.beta || a.r != b.r)
       damaged(file, "its groups for nu = " + std::to_string(a.nu) + " and " + std::to_string(b.nu) +
                         " differ in their axes, grid or spin scale");
+    // Between two groups the correction near full sliding needs the limits of both.
+    if (a.sliding.empty() != b.sliding.empty())
+      damaged(file, "one of its groups for nu = " + std::to_string(a.nu) + " and " +
+                        std::to_string(b.nu) +
+                        " holds the full-sliding limits (Fx_sliding_muN ...), the other not");
   }
   return table;
 }

@@ -33,7 +33,11 @@ struct CreepTableBlock {
   /// about O) [-], in single precision: its 6e-8 relative rounding is far below the
   /// interpolation's error (1e-3 of mu N) and halves the table's memory.
   std::vector<float> values;
-  bool has_mz = false;               ///< false for a table written without Mz (its values are 0)
+  bool has_mz = false;  ///< false for a table written without Mz (its values are 0)
+  /// Per direction node [g][psi][theta][beta] (beta fastest) three values: the full-sliding
+  /// limit's Fx/(mu N), Fy/(mu N), Mz/(mu N c) (full_sliding_sdec on the node's grid), in
+  /// single precision; empty for a table written without them.
+  std::vector<float> sliding;
   std::vector<double> log_a_over_b;  ///< n_g values log(a/b) (the interpolation's axis)
 };
 

@@ -55,8 +55,10 @@ ElementState solve_element(double rx, double ry, double dxx, double dyy, double 
 
 void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bound,
                       const std::vector<double>& wx, const std::vector<double>& wy,
-                      const ExactSolverOptions& options, ExactSolution& solution) {
+                      const ExactSolverOptions& options, ExactSolution& solution,
+                      bool with_near_rows) {
   const ElementGrid& grid = op.grid();
+  const int near_rows = with_near_rows ? op.near_rows() : 0;
   const int nx = grid.nx, ny = grid.ny;
   const auto n = static_cast<std::size_t>(grid.size());
   auto& px = solution.px;
@@ -116,7 +118,7 @@ void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bo
   std::vector<double> dpx(static_cast<std::size_t>(nx)), dpy(static_cast<std::size_t>(nx));
   auto update_near_rows = [&](int j) {
     const auto& src = rows[static_cast<std::size_t>(j)];
-    for (int up = 1; up <= op.near_rows() && j + up < ny; ++up) {
+    for (int up = 1; up <= near_rows && j + up < ny; ++up) {
       const auto& dst = rows[static_cast<std::size_t>(j + up)];
       if (dst.empty()) continue;
       const double* cxx = op.cxx_near(up);
@@ -161,7 +163,7 @@ void solve_tangential(const InfluenceOperator& op, const std::vector<double>& bo
     for (int j = 0; j < ny; ++j) {
       const auto& cols = rows[static_cast<std::size_t>(j)];
       const std::size_t row0 = static_cast<std::size_t>(j * nx);
-      const bool near = op.near_rows() > 0 && !cols.empty();
+      const bool near = near_rows > 0 && !cols.empty();
       if (near) {  // the row's tractions before
         for (const int i : cols) {
           dpx[static_cast<std::size_t>(i)] = -px[row0 + static_cast<std::size_t>(i)];

@@ -144,7 +144,12 @@ std::optional<std::string> creep_table_outside(const contactgeom::Sdec& sdec,
 /// log(a/b), psi, the direction (theta, beta) and the magnitude r of the normalised creepage, and
 /// linear in nu between the tabulated ratios. psi < 0 uses the mirror image (vy, phi, Fy change
 /// sign) and creepages with vx < 0 the reversed ones (forces change sign). Mz is tabulated as
-/// Mz/(mu N c) (none for a table written without it). Beyond r_max, where the patch at r_max
+/// Mz/(mu N c) (none for a table written without it). Near full sliding (|F| from 0.5 to 0.9
+/// of the full-sliding limit S's in Fx, Fy, faded in), where the forces turn with the
+/// creepages' direction faster than the direction nodes resolve, the interpolation's error of S
+/// is taken out: F + rho (S - S_interp), S (full_sliding_sdec on the table's grid) exact at the
+/// creepages and S_interp interpolated from the limits the table holds per direction node (a
+/// table written without them interpolates F alone). Beyond r_max, where the patch at r_max
 /// (same direction) is within full_sliding_margin of its full-sliding limit S
 /// (full_sliding_sdec on the table's grid), the exact theory's approach to that limit as 1/r
 /// carries the table on: F(r) = S + (F(r_max) - S) r_max / r (S depends on the creepages'

@@ -97,9 +97,9 @@ struct ExactSolution {
   /// of the creepages at O, -sum_j row_vx_j Fx_j over the rows' forces Fx_j [N]; 0 without.
   double row_creepage_work = 0.0;
   ExactStatus status = ExactStatus::no_contact;  ///< numerical outcome
-  int iterations = 0;                            ///< tangential iterations (sweeps)
-  double change = 0.0;                           ///< last rms|p_k - p_(k-1)| / rms|p_k| [-]
-  std::string message;                           ///< why, when not converged or without contact
+  int iterations = 0;   ///< tangential iterations (sweeps; of both tries on long elements)
+  double change = 0.0;  ///< last rms|p_k - p_(k-1)| / rms|p_k| [-]
+  std::string message;  ///< why, when not converged or without contact
 };
 
 }  // namespace wheelwear::tangential

@@ -41,7 +41,7 @@ ExactSolution exact_sdec(const contactgeom::Sdec& sdec, const Creepages& creepag
 /// with |p| = mu p_n against its rigid slip w. The elastic part of the slip is bounded by the
 /// tractions, so exact_sdec's forces approach these as 1/|w|. Same grid, pressure and rigid
 /// slip as exact_sdec, without iteration: forces on the wheel (Kalker's convention), Mz about O.
-/// An element whose rigid slip vanishes exactly carries no traction. Throws InputError on
+/// An element whose rigid slip vanishes (below 1e-150) carries no traction. Throws InputError on
 /// invalid input.
 CreepForces full_sliding_sdec(const contactgeom::Sdec& sdec, const Creepages& creepages,
                               const ContactLoad& load, const SdecGridOptions& grid = {});
