@@ -28,6 +28,17 @@ void check_options(const CreepOptions& o, tangential::Method method) {
   if (o.beyond_table)
     require_choice("--beyond-table", *o.beyond_table,
                    {std::begin(kBeyondTableChoices), std::end(kBeyondTableChoices)});
+  if (o.inside_table && method != tangential::Method::best)
+    throw InputError(
+        "--inside-table applies to --method best only: it says what answers where the book "
+        "of tables covers the patch (--method table is the table alone)");
+  if (o.inside_table)
+    require_choice("--inside-table", *o.inside_table,
+                   {std::begin(kInsideTableChoices), std::end(kInsideTableChoices)});
+  if (o.inside_table && o.beyond_table && o.exact_inside_table())
+    throw InputError("--beyond-table " + *o.beyond_table +
+                     " says what answers outside the book of tables, which --inside-table exact "
+                     "does not consult; give --inside-table table with it");
   if (method == tangential::Method::best && o.exact_beyond_table()) {
     // No FASTSIM runs: the table answers inside its range, the exact theory outside.
     const char* fastsim_option = o.nx             ? "--nx"
@@ -39,13 +50,13 @@ void check_options(const CreepOptions& o, tangential::Method method) {
     if (fastsim_option)
       throw InputError(std::string(fastsim_option) +
                        " sets FASTSIM-SDEC, which --method best runs only with --beyond-table "
-                       "fastsim-sdec (by default the exact theory answers outside the table)");
+                       "fastsim-sdec (by default the exact theory answers)");
   }
   if (method == tangential::Method::best && o.exact_grid)
     throw InputError(
         "--exact-grid applies to --method exact only; --method best solves the exact "
-        "theory beyond the book of tables on its own grid (40 elements across the "
-        "patch, elements at most twice as long as wide)");
+        "theory on its own grid (40 elements across the patch, elements at most twice as "
+        "long as wide)");
   if (!exact && o.exact_grid)
     throw InputError("--exact-grid applies to --method exact only; FASTSIM's grid is --nx --ny");
   if (o.target_error && (o.nx || o.ny))
@@ -100,6 +111,7 @@ CreepSolver::CreepSolver(CreepOptions options) : options_(std::move(options)) {
   // The exact theory on 1.02 times the patch (CONTACT's SDEC option).
   base_.exact_grid.nx = base_.exact_grid.ny = options_.exact_grid_or_default();
   base_.exact_beyond_table = options_.exact_beyond_table();
+  base_.exact_inside_table = method_ == tangential::Method::best && options_.exact_inside_table();
 }
 
 void check_creep_inputs(const contactgeom::Sdec& sdec, const tangential::Creepages& creepages,
@@ -118,8 +130,10 @@ tangential::TangentialSolution CreepSolver::solve(
     std::optional<tangential::GridChoice>* chosen) const {
   tangential::SolveOptions options = base_;
   // best answers from the table where it covers the patch: no FASTSIM grid to choose then.
-  if (options_.target_error && !(method_ == tangential::Method::best &&
-                                 tangential::creep_table_covers(sdec, creepages, load, material))) {
+  if (options_.target_error &&
+      !(method_ == tangential::Method::best &&
+        (base_.exact_inside_table ||
+         tangential::creep_table_covers(sdec, creepages, load, material)))) {
     tangential::GridChoice grid;
     try {
       grid = tangential::choose_grid(*tangential::fastsim_variant(method_), options.fastsim.scheme,

@@ -23,6 +23,8 @@ inline constexpr int kMaxExactGrid = 400;
 
 /// What --beyond-table may name.
 inline constexpr const char* kBeyondTableChoices[] = {"exact", "fastsim-sdec"};
+/// What --inside-table may name.
+inline constexpr const char* kInsideTableChoices[] = {"exact", "table"};
 
 /// The method and the options a user gave (an empty optional: not given, the default applies).
 struct CreepOptions {
@@ -35,9 +37,17 @@ struct CreepOptions {
   /// Method best, for a patch outside the book of tables: "exact" (default; Kalker's exact
   /// theory on a grid resolving the patch's long axis) or "fastsim-sdec" (as runs do).
   std::optional<std::string> beyond_table;
+  /// Method best, for a patch the book of tables covers: "exact" (the exact theory on the same
+  /// grid as outside it: the most accurate answer for one patch) or "table" (its totals, as
+  /// runs take them). Default: "exact", but "table" where --beyond-table is given (which asks
+  /// for the table's behaviour at its edge).
+  std::optional<std::string> inside_table;
 
   int exact_grid_or_default() const { return exact_grid.value_or(40); }
   bool exact_beyond_table() const { return beyond_table.value_or("exact") == "exact"; }
+  bool exact_inside_table() const {
+    return inside_table ? *inside_table == "exact" : !beyond_table.has_value();
+  }
 };
 
 /// Throws InputError for an impossible patch, load or creepage (core/plausibility.hpp) and

@@ -111,8 +111,8 @@ void bind_creep(py::module_& m) {
       [](const std::string& method, std::optional<int> nx, std::optional<int> ny,
          std::optional<std::string> bound, std::optional<std::string> scheme,
          std::optional<double> target_error, std::optional<int> exact_grid,
-         std::optional<std::string> beyond_table, const std::vector<Array>& arrays,
-         std::optional<int> threads) {
+         std::optional<std::string> beyond_table, std::optional<std::string> inside_table,
+         const std::vector<Array>& arrays, std::optional<int> threads) {
         cli::CreepOptions o;
         o.method = method;
         o.nx = nx;
@@ -122,13 +122,14 @@ void bind_creep(py::module_& m) {
         o.target_error = target_error;
         o.exact_grid = exact_grid;
         o.beyond_table = std::move(beyond_table);
+        o.inside_table = std::move(inside_table);
         if (arrays.size() != 10)
           throw InputError("creep_arrays: give a, b, psi, vx, vy, phi, N, G, nu, mu");
         return creep_arrays(o, arrays, threads);
       },
       py::arg("method"), py::arg("nx"), py::arg("ny"), py::arg("bound"), py::arg("scheme"),
-      py::arg("target_error"), py::arg("exact_grid"), py::arg("beyond_table"), py::arg("arrays"),
-      py::arg("threads"),
+      py::arg("target_error"), py::arg("exact_grid"), py::arg("beyond_table"),
+      py::arg("inside_table"), py::arg("arrays"), py::arg("threads"),
       "Creep forces of SDEC patches given as ten flat float64 arrays of one length (a, b, psi, "
       "vx, vy, phi, N, G, nu, mu): a dict of flat arrays. Use wheelwear.creep().");
 }

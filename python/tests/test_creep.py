@@ -56,6 +56,22 @@ def test_best_beyond_the_table_equals_the_command_line(cli):
         wheelwear.creep("fastsim-sdec", beyond_table="exact", **kw)
 
 
+def test_best_inside_the_table_is_the_exact_theory_unless_the_table_is_asked_for():
+    # a/b = 1 lies inside the book of tables: best solves the exact theory on the grid that
+    # resolves the patch (40 x 40 here, the exact method's default), the table's totals only
+    # with inside_table="table".
+    kw = dict(a=5e-3, b=5e-3, psi=0.4, vx=1e-3, vy=-2e-4, phi=0.4, N=40e3, mu=0.35)
+    best = wheelwear.creep("best", **kw)
+    exact = wheelwear.creep("exact", **kw)
+    assert (best.Fx, best.Fy, best.Mz) == (exact.Fx, exact.Fy, exact.Mz)
+    assert not best.from_table
+    tabled = wheelwear.creep("best", inside_table="table", **kw)
+    table = wheelwear.creep("table", **kw)
+    assert tabled.from_table and (tabled.Fx, tabled.Fy) == (table.Fx, table.Fy)
+    with pytest.raises(ValueError, match="--inside-table"):
+        wheelwear.creep("exact", inside_table="table", **kw)
+
+
 def test_rigid_slip_work_is_minus_the_power_of_the_creep_forces():
     # -(Fx vx + Fy vy + Mz phi) by definition, for every method with a spin moment.
     vx, vy, phi = 1e-3, -4e-4, 0.6

@@ -98,6 +98,7 @@ def creep(
     target_error: Optional[float] = ...,
     exact_grid: Optional[int] = ...,
     beyond_table: Optional[str] = ...,
+    inside_table: Optional[str] = ...,
     threads: Optional[int] = ...,
 ) -> CreepResult: ...
 def wheel_profile(

@@ -113,8 +113,9 @@ TEST(CreepCommand, RejectsBadInputWithAMessage) {
   }
 }
 
-// --method table prints the library's interpolated forces; --method best takes the table
-// inside its range and FASTSIM-SDEC (with the given grid) outside, and says which in "source".
+// --method table prints the library's interpolated forces; --method best with --inside-table
+// table takes the table inside its range and FASTSIM-SDEC (with the given grid) outside, and
+// says which in "source".
 TEST(CreepCommand, TableAndBestReportTheirSource) {
   const auto table = run_wheelwear(kCase + " --method table");
   ASSERT_EQ(table.exit_code, 0) << table.err;
@@ -125,7 +126,7 @@ TEST(CreepCommand, TableAndBestReportTheirSource) {
   EXPECT_NE(table.out.find("\"source\": \"table\""), std::string::npos) << table.out;
   EXPECT_FALSE(json_number(table.out, "cells").has_value());
 
-  const auto best = run_wheelwear(kCase + " --method best");
+  const auto best = run_wheelwear(kCase + " --method best --inside-table table");
   ASSERT_EQ(best.exit_code, 0) << best.err;
   EXPECT_EQ(json_number(best.out, "Fx"), f.Fx);
   EXPECT_NE(best.out.find("\"source\": \"table\""), std::string::npos) << best.out;
@@ -149,34 +150,52 @@ TEST(CreepCommand, TableAndBestReportTheirSource) {
   EXPECT_TRUE(json_number(outside.out, "slip_cells").has_value());
 }
 
-// Outside the table best answers with the exact theory on the grid that resolves the patch's
-// long axis (aspect_sdec_grid): a/b = 20 under pure spin, the library's solution to the last
-// digit; FASTSIM's options are refused there unless FASTSIM is asked to answer, and
-// --beyond-table belongs to best alone.
-TEST(CreepCommand, BestBeyondTheTableSolvesTheExactTheory) {
+// For one patch best answers with the exact theory on the grid that resolves the patch's long
+// axis (aspect_sdec_grid), inside the table's range as outside it: the library's solution to
+// the last digit, at a/b = 1 (inside) and, with the table's behaviour asked for, at a/b = 20
+// under pure spin (outside, saying why). FASTSIM's options are refused unless FASTSIM is asked
+// to answer, and --beyond-table and --inside-table belong to best alone.
+// The command's JSON `out` is the library's exact solution of the pure-spin patch on the grid
+// that resolves it, nx x ny elements, to the last digit.
+void expect_exact_on_resolving_grid(const std::string& out, const contactgeom::Sdec& patch,
+                                    double phi, double nx, double ny) {
+  const tangential::ExactSolution exact = tangential::exact_sdec(
+      patch, {0, 0, phi}, {37830, 0.35}, {80e9, 0.25}, tangential::aspect_sdec_grid(patch), {});
+  EXPECT_EQ(json_number(out, "Fx"), exact.forces.Fx);
+  EXPECT_EQ(json_number(out, "Fy"), exact.forces.Fy);
+  EXPECT_EQ(json_number(out, "exact_nx"), nx);
+  EXPECT_EQ(json_number(out, "exact_ny"), ny);
+  EXPECT_NE(out.find("\"source\": \"exact\""), std::string::npos) << out;
+}
+
+TEST(CreepCommand, BestSolvesTheExactTheoryOnTheResolvingGrid) {
+  const auto inside = run_wheelwear(kCase + " --method best");
+  ASSERT_EQ(inside.exit_code, 0) << inside.err;
+  expect_exact_on_resolving_grid(inside.out, {4.25e-3, 4.25e-3, 0.6}, 1.0, 40, 40);
+
   const std::string slender =
       "creep --a 19e-3 --b 0.95e-3 --phi 0.5 --N 37830 --mu 0.35 --json --method best";
-  const auto best = run_wheelwear(slender);
+  const auto best = run_wheelwear(slender + " --inside-table table");
   ASSERT_EQ(best.exit_code, 0) << best.err;
-  const contactgeom::Sdec patch{19e-3, 0.95e-3, 0.0};
-  const tangential::ExactSolution exact = tangential::exact_sdec(
-      patch, {0, 0, 0.5}, {37830, 0.35}, {80e9, 0.25}, tangential::aspect_sdec_grid(patch), {});
-  EXPECT_EQ(json_number(best.out, "Fy"), exact.forces.Fy);
-  EXPECT_EQ(json_number(best.out, "exact_nx"), 400.0);
-  EXPECT_EQ(json_number(best.out, "exact_ny"), 40.0);
-  EXPECT_NE(best.out.find("\"source\": \"exact\""), std::string::npos) << best.out;
+  expect_exact_on_resolving_grid(best.out, {19e-3, 0.95e-3, 0.0}, 0.5, 400, 40);
   EXPECT_NE(best.out.find("a/b = 20"), std::string::npos) << best.out;
   EXPECT_FALSE(json_number(best.out, "exact_grid").has_value()) << best.out;
 
-  for (const std::string& refused :
-       {slender + " --nx 30", slender + " --target-error 0.01",
-        std::string("creep --a 4.25e-3 --b 4.25e-3 --phi 0.5 --N 37830 --method table "
-                    "--beyond-table exact"),
-        slender + " --beyond-table fastsim"}) {
-    const auto r = run_wheelwear(refused);
-    EXPECT_EQ(r.exit_code, 2) << refused;
-    EXPECT_NE(r.err.find("--beyond-table"), std::string::npos) << refused << ": " << r.err;
-    EXPECT_TRUE(r.out.empty()) << refused;
+  const std::string round_patch = "creep --a 4.25e-3 --b 4.25e-3 --phi 0.5 --N 37830 ";
+  // Each refused command line and the option its message names.
+  const std::pair<std::string, std::string> refused[] = {
+      {slender + " --nx 30", "--beyond-table"},
+      {slender + " --target-error 0.01", "--beyond-table"},
+      {round_patch + "--method table --beyond-table exact", "--beyond-table"},
+      {slender + " --beyond-table fastsim", "--beyond-table"},
+      {slender + " --inside-table exact --beyond-table fastsim-sdec", "--beyond-table"},
+      {round_patch + "--method exact --inside-table table", "--inside-table"},
+      {slender + " --inside-table fastsim", "--inside-table"}};
+  for (const auto& [command, option] : refused) {
+    const auto r = run_wheelwear(command);
+    EXPECT_EQ(r.exit_code, 2) << command;
+    EXPECT_NE(r.err.find(option), std::string::npos) << command << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << command;
   }
 }
 

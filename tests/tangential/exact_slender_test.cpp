@@ -145,6 +145,41 @@ TEST(ExactSlender, ContactsOwnGridReproducesItsLinearLimitOnLongElements) {
               largest, compared);
 }
 
+// For one patch best solves the exact theory inside the table's range too
+// (exact_inside_table): at a/b 3 under the smallest mixed creepage of the slender-patch study,
+// where |F| is about a quarter of mu N, the table's totals (30 elements across, interpolated)
+// lie 0.51-0.62 % of mu N from the exact theory on 80 elements across, outside the bound
+// max(2 % of |F|, 0.5 % of mu N); best lies within 0.11 % there.
+TEST(ExactSlender, BestForOnePatchIsTheExactTheoryInsideTheTableToo) {
+  const Creepages creepages{2e-4, 2e-4, 0.05};
+  int table_outside_bound = 0;
+  for (const double psi : {-0.8, 0.0, 0.8}) {
+    const contactgeom::Sdec patch = reference_patch(3.0, psi);
+    const ContactLoad load = reference_load(patch);
+    const double mu_n = load.mu * load.N;
+    const ExactSolution fine = exact_sdec(patch, creepages, load, contact::kMaterial,
+                                          aspect_sdec_grid(patch, 80, 2.0), {});
+    ASSERT_EQ(fine.status, ExactStatus::converged);
+    const double bound = std::max(0.02 * std::hypot(fine.forces.Fx, fine.forces.Fy), 0.005 * mu_n);
+    const auto off = [&](const CreepForces& f) {
+      return std::hypot(f.Fx - fine.forces.Fx, f.Fy - fine.forces.Fy);
+    };
+    SolveOptions one_patch;
+    one_patch.exact_inside_table = true;
+    const TangentialSolution best =
+        solve_patch(Method::best, patch, creepages, load, contact::kMaterial, one_patch);
+    EXPECT_FALSE(best.from_table);
+    ASSERT_TRUE(best.exact.has_value());
+    EXPECT_EQ(best.exact->grid.nx, 60);  // aspect_sdec_grid: 40 across, at most 2:1
+    EXPECT_LT(off(best.forces), bound) << "psi " << psi;
+    const TangentialSolution table =
+        solve_patch(Method::best, patch, creepages, load, contact::kMaterial, {});
+    EXPECT_TRUE(table.from_table);
+    table_outside_bound += off(table.forces) > bound;
+  }
+  EXPECT_EQ(table_outside_bound, 3);  // why best does not take the table's totals here
+}
+
 // Without exact_beyond_table best gives FASTSIM-SDEC outside the table, as runs do; with it the
 // exact theory on aspect_sdec_grid, the very solution exact_sdec gives there.
 TEST(ExactSlender, BestBeyondTheTableIsTheExactSolveOnTheAspectGrid) {

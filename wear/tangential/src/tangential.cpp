@@ -63,11 +63,27 @@ void solve_exact(const contactgeom::Sdec& sdec, const Creepages& creepages, cons
   solution.exact = std::move(exact);
 }
 
+// The exact theory on a grid that resolves the patch's long axis (best for single evaluations).
+void solve_exact_resolved(const contactgeom::Sdec& sdec, const Creepages& creepages,
+                          const ContactLoad& load, const Material& material,
+                          const SolveOptions& options, TangentialSolution& solution) {
+  SolveOptions resolved = options;
+  resolved.exact_grid = aspect_sdec_grid(sdec);
+  // Slender patches under small mixed creepage took up to 700 sweeps on this grid in the
+  // slender-patch study: room above that.
+  resolved.exact_solver.max_iterations = std::max(options.exact_solver.max_iterations, 3000);
+  solve_exact(sdec, creepages, load, material, resolved, solution);
+}
+
 // best: the table's totals inside its range; with cell fields FASTSIM-SDEC's distribution
 // carried to them, without them the table alone (FASTSIM would only be thrown away).
 void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages, const ContactLoad& load,
                 const Material& material, const SolveOptions& options,
                 TangentialSolution& solution) {
+  if (options.exact_inside_table) {
+    solve_exact_resolved(sdec, creepages, load, material, options, solution);
+    return;
+  }
   CreepTableLookup lookup = creep_table_lookup(sdec, creepages, load, material);
   if (lookup.forces && !lookup.forces->Mz) {  // a table without Mz cannot give the work
     lookup.forces.reset();
@@ -82,13 +98,8 @@ void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages, const
     return;
   }
   if (solution.table_outside && options.exact_beyond_table) {
-    SolveOptions beyond = options;
-    beyond.exact_grid = aspect_sdec_grid(sdec);
-    // Slender patches under small mixed creepage took up to 700 sweeps on this grid in the
-    // slender-patch study: room above that.
-    beyond.exact_solver.max_iterations = std::max(options.exact_solver.max_iterations, 3000);
     const std::optional<std::string> why = std::move(solution.table_outside);
-    solve_exact(sdec, creepages, load, material, beyond, solution);
+    solve_exact_resolved(sdec, creepages, load, material, options, solution);
     solution.table_outside = why;
     return;
   }
