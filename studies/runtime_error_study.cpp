@@ -12,14 +12,14 @@
 //                     Bruni 2022, Eq. 4, prescribed as in CONTACT's reference runs; `wheelwear
 //                     creep --method exact`); table: the built-in book of exact-theory
 //                     tables (tangential::creep_table_forces); best: as `wheelwear creep
-//                     --method best` gives it, the table inside its range and the exact theory
-//                     on aspect_sdec_grid outside
+//                     --method best` gives it, the exact theory on aspect_sdec_grid inside the
+//                     table's range and outside it
 //     scheme          kalker | second-order (FASTSIM marching); none for the other methods
 //     bound           parabolic (Eq. 18 of Liu, Fu & Bruni 2022) | none (the non-FASTSIM
 //                     methods: exact applies Coulomb's |p| <= mu p_n itself)
 //     n               the grid is n x n cells (nx = ny = n; exact: elements over CONTACT's
 //                     potential contact area, 1.02 a by 1.02 b around O'); 0 for the grid-free
-//                     methods (linear-sdec, she-sdec, table, best)
+//                     methods (linear-sdec, she-sdec, table) and for best (its own grid)
 //     cells           n*n
 //     case_set        pure_spin: the 17 cases phi > 0 of tests/data/contact/b_pure_spin_mx80.csv
 //                     (g = 1, psi = 0.6 with phi = 0.2 ... 1.6 1/m, and phi = 1 1/m with
@@ -143,7 +143,8 @@ struct Solver {
   tangential::FastsimScheme fastsim_scheme = tangential::FastsimScheme::kalker;
   tangential::TractionBound traction_bound = tangential::TractionBound::parabolic;
 
-  // best answers with the table and the exact theory here (exact_beyond_table): no FASTSIM grid.
+  // best answers with the exact theory here (exact_inside_table, exact_beyond_table): no FASTSIM
+  // grid.
   bool fastsim() const {
     return method != tangential::Method::best && tangential::fastsim_variant(method).has_value();
   }
@@ -187,6 +188,7 @@ int solve_all(const Solver& s, int n, const CaseSet& set, std::vector<Forces>& o
   options.fastsim.bound = s.traction_bound;
   options.exact_grid.nx = options.exact_grid.ny = std::max(n, 2);
   options.exact_beyond_table = true;  // best as `wheelwear creep` gives it
+  options.exact_inside_table = true;
   int not_converged = 0;
   for (std::size_t k = 0; k < set.cases.size(); ++k) {
     const Case& c = set.cases[k];
