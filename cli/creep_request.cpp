@@ -40,7 +40,7 @@ void check_options(const CreepOptions& o, tangential::Method method) {
                      " says what answers outside the book of tables, which --inside-table exact "
                      "does not consult; give --inside-table table with it");
   if (method == tangential::Method::best && o.exact_beyond_table()) {
-    // No FASTSIM runs: the table answers inside its range, the exact theory outside.
+    // No FASTSIM runs: the exact theory answers (or the table inside its range).
     const char* fastsim_option = o.nx             ? "--nx"
                                  : o.ny           ? "--ny"
                                  : o.target_error ? "--target-error"

@@ -75,8 +75,10 @@ void solve_exact_resolved(const contactgeom::Sdec& sdec, const Creepages& creepa
   solve_exact(sdec, creepages, load, material, resolved, solution);
 }
 
-// best: the table's totals inside its range; with cell fields FASTSIM-SDEC's distribution
-// carried to them, without them the table alone (FASTSIM would only be thrown away).
+// best: for one patch (exact_inside_table) the exact theory on the resolving grid wherever the
+// patch lies; in runs the table's totals inside its range, with cell fields FASTSIM-SDEC's
+// distribution carried to them, without them the table alone (FASTSIM would only be thrown
+// away).
 void solve_best(const contactgeom::Sdec& sdec, const Creepages& creepages, const ContactLoad& load,
                 const Material& material, const SolveOptions& options,
                 TangentialSolution& solution) {
