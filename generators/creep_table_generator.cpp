@@ -67,6 +67,7 @@
 #include <thread>
 #include <vector>
 
+#include "table_hdf5.hpp"
 #include "wheelwear/tangential/creep_table.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 #include "wheelwear/tangential/kalker_coefficients.hpp"
@@ -74,6 +75,12 @@
 namespace {
 
 using namespace wheelwear;
+using generators::checked;
+using generators::Handle;
+using generators::read_doubles;
+using generators::read_number;
+using generators::write;
+using generators::write_attribute;
 
 std::vector<double> parse_list(const std::string& text) {
   std::vector<double> out;
@@ -87,106 +94,6 @@ std::vector<double> uniform(double lo, double hi, int count) {
   std::vector<double> out;
   for (int i = 0; i < count; ++i) out.push_back(lo + (hi - lo) * i / (count - 1));
   return out;
-}
-
-// An HDF5 identifier or status, or std::runtime_error naming `what` where the call failed.
-template <class Id>
-Id checked(Id id, const std::string& what) {
-  if (id < 0) throw std::runtime_error("HDF5 failed to " + what);
-  return id;
-}
-
-// Closes an HDF5 object when it leaves scope (on the error paths too).
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*closer)(hid_t)) : id_(id), close_(closer) {}
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-  // Closes now, so that a failure to flush is seen.
-  void close(const std::string& what) {
-    const hid_t id = id_;
-    id_ = -1;
-    checked(close_(id), what);
-  }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
-
-void write(hid_t group, const char* name, const std::vector<double>& data,
-           const std::vector<hsize_t>& dims, const char* units, const char* description) {
-  const std::string what = std::string("write ") + name;
-  const Handle space(
-      checked(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), what),
-      H5Sclose);
-  const Handle plist(checked(H5Pcreate(H5P_DATASET_CREATE), what), H5Pclose);
-  if (dims.size() > 1) {
-    std::vector<hsize_t> chunk = dims;
-    chunk[0] = 1;
-    checked(H5Pset_chunk(plist.get(), static_cast<int>(chunk.size()), chunk.data()), what);
-    checked(H5Pset_shuffle(plist.get()), what);
-    checked(H5Pset_deflate(plist.get(), 9), what);
-  }
-  const Handle set(checked(H5Dcreate2(group, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
-                                      plist.get(), H5P_DEFAULT),
-                           what),
-                   H5Dclose);
-  checked(H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), what);
-  for (const auto& [key, value] : {std::pair{"units", units}, {"description", description}}) {
-    const Handle type(checked(H5Tcopy(H5T_C_S1), what), H5Tclose);
-    checked(H5Tset_size(type.get(), std::string(value).size() + 1), what);
-    const Handle scalar(checked(H5Screate(H5S_SCALAR), what), H5Sclose);
-    const Handle attr(
-        checked(H5Acreate2(set.get(), key, type.get(), scalar.get(), H5P_DEFAULT, H5P_DEFAULT),
-                what),
-        H5Aclose);
-    checked(H5Awrite(attr.get(), type.get(), value), what);
-  }
-}
-
-void write_attribute(hid_t object, const char* key, const std::string& value) {
-  const hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, value.size() + 1);
-  const hid_t scalar = H5Screate(H5S_SCALAR);
-  const hid_t attr = H5Acreate2(object, key, type, scalar, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(attr, type, value.c_str());
-  H5Aclose(attr);
-  H5Sclose(scalar);
-  H5Tclose(type);
-}
-
-void write_attribute(hid_t object, const char* key, double value) {
-  const hid_t scalar = H5Screate(H5S_SCALAR);
-  const hid_t attr = H5Acreate2(object, key, H5T_IEEE_F64LE, scalar, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(attr, H5T_NATIVE_DOUBLE, &value);
-  H5Aclose(attr);
-  H5Sclose(scalar);
-}
-
-// A dataset of doubles, or empty when it is missing.
-std::vector<double> read_doubles(hid_t group, const char* name) {
-  if (H5Lexists(group, name, H5P_DEFAULT) <= 0) return {};
-  const hid_t set = H5Dopen2(group, name, H5P_DEFAULT);
-  const hid_t space = H5Dget_space(set);
-  std::vector<double> out(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
-  H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data());
-  H5Sclose(space);
-  H5Dclose(set);
-  return out;
-}
-
-double read_number(hid_t object, const char* key, double absent) {
-  if (H5Aexists(object, key) <= 0) return absent;
-  double value = absent;
-  const hid_t attr = H5Aopen(object, key, H5P_DEFAULT);
-  H5Aread(attr, H5T_NATIVE_DOUBLE, &value);
-  H5Aclose(attr);
-  return value;
 }
 
 // The solved nodes of one nu block of an earlier table, to reuse where they are nodes of the new
@@ -276,44 +183,18 @@ std::size_t copy_reused(const Reused& old, const Axes& axes, double max_aspect,
   return copied;
 }
 
-// The full-sliding limit (full_sliding_sdec) at every direction node [g][psi][theta][beta] of a
-// group, normalised as its forces: the table's interpolation takes it out of its error near
-// full sliding (creep_table.cpp). No iteration: a second on two threads for the whole table.
-struct Sliding {
-  std::vector<double> fx, fy, mz;
-};
-
-Sliding sliding_limits(const Axes& axes, const std::vector<double>& c11,
-                       const std::vector<double>& c22, const std::vector<double>& c23, int n,
-                       double max_aspect, double spin_scale, unsigned threads) {
-  const std::size_t n_b = axes.betas.size(), n_t = axes.thetas.size(), n_p = axes.psis.size();
-  const std::size_t total = axes.gs.size() * n_p * n_t * n_b;
-  Sliding out{std::vector<double>(total), std::vector<double>(total), std::vector<double>(total)};
+// Calls body(i) for i = 0 ... total - 1 on `threads` threads, each taking the next index; the
+// first exception a call throws stops the others' taking and is rethrown after the join.
+template <class Body>
+void parallel_for(std::size_t total, unsigned threads, const Body& body) {
   std::atomic<std::size_t> next{0};
-  std::vector<std::thread> pool;
   std::vector<std::exception_ptr> failed(threads);
+  std::vector<std::thread> pool;
   for (unsigned t = 0; t < threads; ++t) {
     pool.emplace_back([&, t] {
-      const tangential::ContactLoad load{1e4, 0.3};
-      const double mu_n = load.mu * load.N, shear = 80e9;  // as the solves' G
       try {
-        for (std::size_t i = next++; i < total; i = next++) {
-          const std::size_t ib = i % n_b, it = i / n_b % n_t, ip = i / (n_b * n_t) % n_p,
-                            ig = i / (n_b * n_t * n_p);
-          const double a = 5e-3, b = a / axes.gs[ig], c = std::sqrt(a * b), gc2 = shear * c * c;
-          const double th = axes.thetas[it], be = axes.betas[ib];
-          // A unit normalised creepage: S depends on its direction alone.
-          const tangential::Creepages v{std::sin(th) * std::cos(be) * mu_n / (gc2 * c11[ig]),
-                                        std::sin(th) * std::sin(be) * mu_n / (gc2 * c22[ig]),
-                                        std::cos(th) * mu_n / (spin_scale * gc2 * c * c23[ig])};
-          const contactgeom::Sdec patch{a, b, axes.psis[ip]};
-          const tangential::CreepForces s = tangential::full_sliding_sdec(
-              patch, v, load, tangential::aspect_sdec_grid(patch, n, max_aspect));
-          out.fx[i] = s.Fx / mu_n;
-          out.fy[i] = s.Fy / mu_n;
-          out.mz[i] = *s.Mz / (mu_n * c);
-        }
-      } catch (...) {  // e.g. an axis value full_sliding_sdec refuses: reported after the join
+        for (std::size_t i = next++; i < total; i = next++) body(i);
+      } catch (...) {
         failed[t] = std::current_exception();
         next = total;
       }
@@ -322,6 +203,63 @@ Sliding sliding_limits(const Axes& axes, const std::vector<double>& c11,
   for (auto& t : pool) t.join();
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
+}
+
+// Every node is solved at this load and shear modulus: the normalised forces do not depend on
+// them (the similarity of the exact theory).
+const tangential::ContactLoad kNodeLoad{1e4, 0.3};
+constexpr double kNodeShear = 80e9;
+
+// What maps a group's normalised creepages onto physical ones: Kalker's C11, C22, C23 at each
+// of its a/b nodes and its spin scale.
+struct Normalisation {
+  std::vector<double> c11, c22, c23;
+  double spin_scale = 1.0;
+};
+
+// The patch of node (ig, ip) (a = 5 mm) and the creepages of the normalised creepage
+// (r, theta, beta) on it.
+struct NodeProblem {
+  contactgeom::Sdec patch;
+  tangential::Creepages creepages;
+};
+
+NodeProblem node_problem(const Axes& axes, const Normalisation& k, std::size_t ig, std::size_t ip,
+                         double r, double theta, double beta) {
+  const double a = 5e-3, b = a / axes.gs[ig], c = std::sqrt(a * b);
+  const double mu_n = kNodeLoad.mu * kNodeLoad.N, gc2 = kNodeShear * c * c;
+  const double xi = r * std::sin(theta) * std::cos(beta);
+  const double eta = r * std::sin(theta) * std::sin(beta);
+  const double chi = r * std::cos(theta);
+  return {{a, b, axes.psis[ip]},
+          {xi * mu_n / (gc2 * k.c11[ig]), eta * mu_n / (gc2 * k.c22[ig]),
+           chi * mu_n / (k.spin_scale * gc2 * c * k.c23[ig])}};
+}
+
+// The full-sliding limit (full_sliding_sdec) at every direction node [g][psi][theta][beta] of a
+// group, normalised as its forces: the table's interpolation takes it out of its error near
+// full sliding (creep_table.cpp). No iteration: a second on two threads for the whole table.
+struct Sliding {
+  std::vector<double> fx, fy, mz;
+};
+
+Sliding sliding_limits(const Axes& axes, const Normalisation& k, int n, double max_aspect,
+                       unsigned threads) {
+  const std::size_t n_b = axes.betas.size(), n_t = axes.thetas.size(), n_p = axes.psis.size();
+  const std::size_t total = axes.gs.size() * n_p * n_t * n_b;
+  Sliding out{std::vector<double>(total), std::vector<double>(total), std::vector<double>(total)};
+  const double mu_n = kNodeLoad.mu * kNodeLoad.N;
+  parallel_for(total, threads, [&](std::size_t i) {
+    const std::size_t ib = i % n_b, it = i / n_b % n_t, ip = i / (n_b * n_t) % n_p,
+                      ig = i / (n_b * n_t * n_p);
+    // A unit normalised creepage: S depends on its direction alone.
+    const NodeProblem p = node_problem(axes, k, ig, ip, 1.0, axes.thetas[it], axes.betas[ib]);
+    const tangential::CreepForces s = tangential::full_sliding_sdec(
+        p.patch, p.creepages, kNodeLoad, tangential::aspect_sdec_grid(p.patch, n, max_aspect));
+    out.fx[i] = s.Fx / mu_n;
+    out.fy[i] = s.Fy / mu_n;
+    out.mz[i] = *s.Mz / (mu_n * p.patch.c());
+  });
   return out;
 }
 
@@ -346,9 +284,9 @@ void add_sliding_to_copy(const std::string& copy, unsigned threads) {
   H5G_info_t info;
   checked(H5Gget_info(file.get(), &info), "list the file's groups");
   int groups = 0;
-  for (hsize_t k = 0; k < info.nlinks; ++k) {
+  for (hsize_t link = 0; link < info.nlinks; ++link) {
     char name[64] = {};
-    checked(H5Lget_name_by_idx(file.get(), ".", H5_INDEX_NAME, H5_ITER_INC, k, name, sizeof name,
+    checked(H5Lget_name_by_idx(file.get(), ".", H5_INDEX_NAME, H5_ITER_INC, link, name, sizeof name,
                                H5P_DEFAULT),
             "list the file's groups");
     if (std::string(name).rfind("nu_", 0) != 0) continue;
@@ -357,18 +295,17 @@ void add_sliding_to_copy(const std::string& copy, unsigned threads) {
     const Axes axes{read_doubles(group.get(), "a_over_b"), read_doubles(group.get(), "psi"),
                     read_doubles(group.get(), "theta"), read_doubles(group.get(), "beta"),
                     read_doubles(group.get(), "r")};
-    const std::vector<double> c11 = read_doubles(group.get(), "C11"),
-                              c22 = read_doubles(group.get(), "C22"),
-                              c23 = read_doubles(group.get(), "C23");
+    const Normalisation k{read_doubles(group.get(), "C11"), read_doubles(group.get(), "C22"),
+                          read_doubles(group.get(), "C23"),
+                          read_number(group.get(), "spin_scale", 1.0)};
     const std::size_t n_g = axes.gs.size();
     if (n_g == 0 || axes.psis.empty() || axes.thetas.empty() || axes.betas.empty() ||
-        c11.size() != n_g || c22.size() != n_g || c23.size() != n_g)
+        k.c11.size() != n_g || k.c22.size() != n_g || k.c23.size() != n_g)
       throw std::runtime_error("group " + std::string(name) +
                                " lacks the axes or C11, C22, C23 of a creep table");
     const int n = static_cast<int>(read_number(group.get(), "grid", 30));
     const double aspect = read_number(group.get(), "max_element_aspect", 1e9);
-    const double spin_scale = read_number(group.get(), "spin_scale", 1.0);
-    const Sliding limits = sliding_limits(axes, c11, c22, c23, n, aspect, spin_scale, threads);
+    const Sliding limits = sliding_limits(axes, k, n, aspect, threads);
     for (const char* set : {"Fx_sliding_muN", "Fy_sliding_muN", "Mz_sliding_muNc"})
       if (H5Lexists(group.get(), set, H5P_DEFAULT) > 0)
         checked(H5Ldelete(group.get(), set, H5P_DEFAULT), std::string("remove the old ") + set);
@@ -506,12 +443,13 @@ int generate(int argc, char** argv) {
   for (const double nu : nus) {
     char name[32];
     std::snprintf(name, sizeof name, "nu_%.2f", nu);
-    std::vector<double> c11(gs.size()), c22(gs.size()), c23(gs.size());
-    for (std::size_t k = 0; k < gs.size(); ++k) {
-      const tangential::KalkerCoefficients kc = tangential::kalker_coefficients(gs[k], nu);
-      c11[k] = kc.c11;
-      c22[k] = kc.c22;
-      c23[k] = kc.c23;
+    Normalisation k;
+    k.spin_scale = spin_scale;
+    for (const double g : gs) {
+      const tangential::KalkerCoefficients kc = tangential::kalker_coefficients(g, nu);
+      k.c11.push_back(kc.c11);
+      k.c22.push_back(kc.c22);
+      k.c23.push_back(kc.c23);
     }
     std::vector<double> fx(total, 0.0), fy(total, 0.0), mz(total, 0.0);
     // Nodes earlier tables hold (--reuse) are copied, not solved: from the first that has it.
@@ -530,48 +468,32 @@ int generate(int argc, char** argv) {
       std::cout << name << ": " << copied << " of " << total << " nodes reused from " << path
                 << std::endl;
     }
-    std::atomic<std::size_t> next{0};
     std::atomic<int> unconverged{0};
     const auto start = std::chrono::steady_clock::now();
-    std::vector<std::thread> pool;
-    for (unsigned t = 0; t < threads; ++t) {
-      pool.emplace_back([&] {
-        const tangential::Material material{80e9, nu};
-        const tangential::ContactLoad load{1e4, 0.3};
-        const double mu_n = load.mu * load.N;
-        for (std::size_t i = next++; i < total; i = next++) {
-          std::size_t rest = i;
-          const std::size_t ir = rest % rs.size();
-          rest /= rs.size();
-          const std::size_t ib = rest % betas.size();
-          rest /= betas.size();
-          const std::size_t it = rest % thetas.size();
-          rest /= thetas.size();
-          const std::size_t ip = rest % psis.size();
-          const std::size_t ig = rest / psis.size();
-          if (rs[ir] == 0.0 || reused[i]) continue;
-          // The poles (theta = 0, pi) are one direction for every beta: solve it once.
-          const bool pole = it == 0 || it + 1 == thetas.size();
-          if (pole && ib != 0) continue;
-          const double a = 5e-3, b = a / gs[ig], c = std::sqrt(a * b);
-          const double r = rs[ir], th = thetas[it], be = betas[ib];
-          const double xi = r * std::sin(th) * std::cos(be);
-          const double eta = r * std::sin(th) * std::sin(be);
-          const double chi = r * std::cos(th);
-          const double gc2 = material.G * c * c;
-          const tangential::Creepages v{xi * mu_n / (gc2 * c11[ig]), eta * mu_n / (gc2 * c22[ig]),
-                                        chi * mu_n / (spin_scale * gc2 * c * c23[ig])};
-          const contactgeom::Sdec patch{a, b, psis[ip]};
-          const auto s = tangential::exact_sdec(patch, v, load, material,
-                                                tangential::aspect_sdec_grid(patch, n, max_aspect));
-          if (s.status != tangential::ExactStatus::converged) ++unconverged;
-          fx[i] = s.forces.Fx / mu_n;
-          fy[i] = s.forces.Fy / mu_n;
-          mz[i] = *s.forces.Mz / (mu_n * c);
-        }
-      });
-    }
-    for (auto& t : pool) t.join();
+    const tangential::Material material{kNodeShear, nu};
+    const double mu_n = kNodeLoad.mu * kNodeLoad.N;
+    parallel_for(total, threads, [&](std::size_t i) {
+      std::size_t rest = i;
+      const std::size_t ir = rest % rs.size();
+      rest /= rs.size();
+      const std::size_t ib = rest % betas.size();
+      rest /= betas.size();
+      const std::size_t it = rest % thetas.size();
+      rest /= thetas.size();
+      const std::size_t ip = rest % psis.size();
+      const std::size_t ig = rest / psis.size();
+      if (rs[ir] == 0.0 || reused[i]) return;
+      // The poles (theta = 0, pi) are one direction for every beta: solve it once.
+      const bool pole = it == 0 || it + 1 == thetas.size();
+      if (pole && ib != 0) return;
+      const NodeProblem p = node_problem(axes, k, ig, ip, rs[ir], thetas[it], betas[ib]);
+      const auto s = tangential::exact_sdec(p.patch, p.creepages, kNodeLoad, material,
+                                            tangential::aspect_sdec_grid(p.patch, n, max_aspect));
+      if (s.status != tangential::ExactStatus::converged) ++unconverged;
+      fx[i] = s.forces.Fx / mu_n;
+      fy[i] = s.forces.Fy / mu_n;
+      mz[i] = *s.forces.Mz / (mu_n * p.patch.c());
+    });
     // Copy each pole's solution to every beta.
     for (std::size_t i = 0; i < total; ++i) {
       std::size_t rest = i / rs.size();
@@ -597,17 +519,16 @@ int generate(int argc, char** argv) {
     write(group, "theta", thetas, {thetas.size()}, "rad", "polar angle of (xi, eta, chi) from chi");
     write(group, "beta", betas, {betas.size()}, "rad", "azimuth in the (xi, eta) plane");
     write(group, "r", rs, {rs.size()}, "1", "magnitude of the normalised creepage");
-    write(group, "C11", c11, {gs.size()}, "1", "normalisation: Kalker's C11 at a_over_b, nu");
-    write(group, "C22", c22, {gs.size()}, "1", "normalisation: Kalker's C22 at a_over_b, nu");
-    write(group, "C23", c23, {gs.size()}, "1", "normalisation: Kalker's C23 at a_over_b, nu");
+    write(group, "C11", k.c11, {gs.size()}, "1", "normalisation: Kalker's C11 at a_over_b, nu");
+    write(group, "C22", k.c22, {gs.size()}, "1", "normalisation: Kalker's C22 at a_over_b, nu");
+    write(group, "C23", k.c23, {gs.size()}, "1", "normalisation: Kalker's C23 at a_over_b, nu");
     const std::vector<hsize_t> dims = {gs.size(), psis.size(), thetas.size(), betas.size(),
                                        rs.size()};
     write(group, "Fx_muN", fx, dims, "1", "Fx/(mu N) [a_over_b][psi][theta][beta][r]");
     write(group, "Fy_muN", fy, dims, "1", "Fy/(mu N) [a_over_b][psi][theta][beta][r]");
     write(group, "Mz_muNc", mz, dims, "1",
           "Mz/(mu N c), spin moment about O, c = sqrt(ab) [a_over_b][psi][theta][beta][r]");
-    write_sliding(group, sliding_limits(axes, c11, c22, c23, n, max_aspect, spin_scale, threads),
-                  axes);
+    write_sliding(group, sliding_limits(axes, k, n, max_aspect, threads), axes);
     H5Gclose(group);
     std::cout << name << ": " << total << " nodes on grids of " << n << " elements across in "
               << seconds << " s (" << threads << " threads), " << unconverged << " not converged"
