@@ -39,15 +39,15 @@
 // The defaults are the shipped table: 2 x 1 003 200 nodes (898 320 solves per nu), about 90 min on
 // two cores: 35 min for a/b 0.2 ... 5 and 37 min for 6 ... 10 with r up to 6, 10 min for r 7 ...
 // 12 and 5 min for 14 ... 20 (solves near full sliding take fewer sweeps), 35 MB. The nodes are
-// where interpolating (creep_table.cpp) needs them to stay within 1 % of mu N of fresh solves
-// (tests/tangential/creep_table_test.cpp; but for a corner of wide patches near full sliding,
-// docs/validation.md): the forces turn fastest with theta where the patch begins to slide fully,
-// and with a/b below 0.3 and above 3 (with nodes at 5, 7 and 10 alone the worst of the 190 of 1000
-// test points beyond a/b = 5 reached 0.98 %). A finer solver grid (--n 40) or more nodes cost in
-// proportion to their elements and sweeps (see the printed count): nodes at a/b 12, 14.5, 17.5, 21
-// and 25 (72 x 30 ... 150 x 30 elements) take 1.8 ... 6.4 times as long a solve as those at 8.5
-// (105 ... 187 sweeps against 85, on a sample of 96 creepages at r up to 5), about 111 min per nu
-// on two cores where 6 and 8.5 took 8.6 min.
+// where interpolating (creep_table_interpolation.cpp) needs them to stay within 1 % of mu N of
+// fresh solves (tests/tangential/creep_table_test.cpp; but for a corner of wide patches near full
+// sliding, docs/validation.md): the forces turn fastest with theta where the patch begins to slide
+// fully, and with a/b below 0.3 and above 3 (with nodes at 5, 7 and 10 alone the worst of the 190
+// of 1000 test points beyond a/b = 5 reached 0.98 %). A finer solver grid (--n 40) or more nodes
+// cost in proportion to their elements and sweeps (see the printed count): nodes at a/b
+// 12, 14.5, 17.5, 21 and 25 (72 x 30 ... 150 x 30 elements) take 1.8 ... 6.4 times as long a solve
+// as those at 8.5 (105 ... 187 sweeps against 85, on a sample of 96 creepages at r up to 5), about
+// 111 min per nu on two cores where 6 and 8.5 took 8.6 min.
 
 #include <hdf5.h>
 

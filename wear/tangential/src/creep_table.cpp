@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include "creep_table_data.hpp"
+#include "creep_table_interpolation.hpp"
 #include "wheelwear/core/input_error.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 
@@ -20,6 +20,11 @@ namespace {
 
 using detail::CreepTableBlock;
 using detail::CreepTableData;
+using detail::has_sliding;
+using detail::interpolate;
+using detail::Interpolated;
+using detail::magnitude;
+using detail::NuBlocks;
 
 constexpr double kSlack = 1e-12;  // relative slack on the range's ends (rounding of inputs)
 // Beyond r_max the table extrapolates towards full sliding (towards_full_sliding) where the
@@ -29,71 +34,12 @@ constexpr double kSlack = 1e-12;  // relative slack on the range's ends (roundin
 // 0.65 % of mu N c in Mz (studies/table_interpolation_study.cpp).
 constexpr double kFullSlidingMargin = 0.04;
 
-// Four-node (or fewer, on short axes) Lagrange stencil of q on increasing nodes x[0..n-1].
-struct Stencil {
-  int start = 0, count = 0;
-  std::array<double, 4> w{};
-};
-
-Stencil stencil(const double* x, int n, double q) {
-  Stencil s;
-  s.count = std::min(n, 4);
-  int k = 0;
-  while (k + 2 < n && q > x[k + 1]) ++k;
-  s.start = std::clamp(k - 1, 0, n - s.count);
-  for (int j = 0; j < s.count; ++j) {
-    double w = 1.0;
-    for (int m = 0; m < s.count; ++m) {
-      if (m != j) w *= (q - x[s.start + m]) / (x[s.start + j] - x[s.start + m]);
-    }
-    s.w[static_cast<std::size_t>(j)] = w;
-  }
-  return s;
-}
-
-// The block's normalisation coefficients at a/b, by the same four-node stencils in log(a/b) as
-// the forces: a linear interpolation would kink the normalised forces at every node of a/b.
-struct Normalisation {
-  double c11, c22, c23;
-};
-
-Normalisation normalisation(const CreepTableBlock& b, double g) {
-  const Stencil s = stencil(b.log_a_over_b.data(), b.n_g, std::log(g));
-  Normalisation n{0.0, 0.0, 0.0};
-  for (int i = 0; i < s.count; ++i) {
-    n.c11 += s.w[i] * b.c11[s.start + i];
-    n.c22 += s.w[i] * b.c22[s.start + i];
-    n.c23 += s.w[i] * b.c23[s.start + i];
-  }
-  return n;
-}
-
-struct Normalised {
-  double xi, eta, chi;
-  double r() const { return std::sqrt(xi * xi + eta * eta + chi * chi); }
-};
-
-Normalised normalise(const CreepTableBlock& b, const contactgeom::Sdec& sdec, const Creepages& v,
-                     const ContactLoad& load, const Material& material) {
-  const Normalisation n = normalisation(b, sdec.ellipticity());
-  const double c = sdec.c(), mu_n = load.mu * load.N, gc2 = material.G * c * c;
-  return {gc2 * n.c11 * v.vx / mu_n, gc2 * n.c22 * v.vy / mu_n,
-          b.spin_scale * gc2 * c * n.c23 * v.phi / mu_n};
-}
-
 double r_max(const CreepTableBlock& b) {
   return b.r[b.n_r - 1];
 }
 double psi_max(const CreepTableBlock& b) {
   return b.psi[b.n_psi - 1];
 }
-
-// The blocks (one or two) and weights for nu; nullptr second when one block suffices.
-struct NuBlocks {
-  const CreepTableBlock* lower = nullptr;
-  const CreepTableBlock* upper = nullptr;
-  double t = 0.0;  // weight of upper
-};
 
 std::string range_text(double lo, double hi) {
   std::ostringstream text;
@@ -152,95 +98,6 @@ std::string check_shape(const CreepTableData& table, const contactgeom::Sdec& sd
   return {};
 }
 
-// Normalised forces interpolated in a block: Fx/(mu N), Fy/(mu N), Mz/(mu N c) (Mz 0 when the
-// block has none), and the full-sliding limit interpolated the same way from the block's
-// direction nodes (zero when the block has none).
-struct Interpolated {
-  std::array<double, 3> f{};
-  std::array<double, 3> sliding{};
-};
-
-Interpolated evaluate(const CreepTableBlock& b, const contactgeom::Sdec& sdec, const Creepages& v,
-                      const ContactLoad& load, const Material& material) {
-  Normalised n = normalise(b, sdec, v, load, material);
-  double psi = sdec.psi, sign_x = 1.0, sign_y = 1.0;
-  if (psi < 0) {  // mirror y -> -y: eta, chi, Fy and Mz change sign
-    psi = -psi;
-    n.eta = -n.eta;
-    n.chi = -n.chi;
-    sign_y = -sign_y;
-  }
-  if (n.xi < 0) {  // reversed creepages reverse the forces and the moment
-    n = {-n.xi, -n.eta, -n.chi};
-    sign_x = -sign_x;
-    sign_y = -sign_y;
-  }
-  const double r = n.r();
-  if (r == 0.0) return {};
-  const double theta = std::acos(std::clamp(n.chi / r, -1.0, 1.0));
-  const double beta = std::atan2(n.eta, n.xi);  // xi >= 0: in [-pi/2, pi/2]
-  const Stencil sg = stencil(b.log_a_over_b.data(), b.n_g, std::log(sdec.ellipticity()));
-  const Stencil sp = stencil(b.psi.data(), b.n_psi, psi);
-  const Stencil st = stencil(b.theta.data(), b.n_theta, theta);
-  const Stencil sb = stencil(b.beta.data(), b.n_beta, beta);
-  const Stencil sr = stencil(b.r.data(), b.n_r, r);
-  double fx = 0.0, fy = 0.0, mz = 0.0;
-  for (int ig = 0; ig < sg.count; ++ig) {
-    for (int ip = 0; ip < sp.count; ++ip) {
-      const double wgp = sg.w[ig] * sp.w[ip];
-      for (int it = 0; it < st.count; ++it) {
-        for (int ib = 0; ib < sb.count; ++ib) {
-          const double w4 = wgp * st.w[it] * sb.w[ib];
-          const std::size_t base =
-              ((((static_cast<std::size_t>(sg.start + ig) * b.n_psi + sp.start + ip) * b.n_theta +
-                 st.start + it) *
-                    b.n_beta +
-                sb.start + ib) *
-               b.n_r) +
-              sr.start;
-          // The r-stencil's weighted sum first: one weight per node of the other four axes.
-          const float* node = b.values.data() + 3 * base;
-          double sx = 0.0, sy = 0.0, sm = 0.0;
-          for (int ir = 0; ir < sr.count; ++ir) {
-            sx += sr.w[ir] * node[3 * ir];
-            sy += sr.w[ir] * node[3 * ir + 1];
-            sm += sr.w[ir] * node[3 * ir + 2];
-          }
-          fx += w4 * sx;
-          fy += w4 * sy;
-          mz += w4 * sm;
-        }
-      }
-    }
-  }
-  Interpolated out;
-  out.f = {sign_x * fx, sign_y * fy, sign_y * mz};
-  if (b.sliding.empty()) return out;
-  // The full-sliding limit from the direction nodes, with the same stencils.
-  double lx = 0.0, ly = 0.0, lm = 0.0;
-  for (int ig = 0; ig < sg.count; ++ig) {
-    for (int ip = 0; ip < sp.count; ++ip) {
-      const double wgp = sg.w[ig] * sp.w[ip];
-      for (int it = 0; it < st.count; ++it) {
-        const std::size_t row =
-            ((static_cast<std::size_t>(sg.start + ig) * b.n_psi + sp.start + ip) * b.n_theta +
-             st.start + it) *
-                b.n_beta +
-            sb.start;
-        const float* limit = b.sliding.data() + 3 * row;
-        for (int ib = 0; ib < sb.count; ++ib) {
-          const double w4 = wgp * st.w[it] * sb.w[ib];
-          lx += w4 * limit[3 * ib];
-          ly += w4 * limit[3 * ib + 1];
-          lm += w4 * limit[3 * ib + 2];
-        }
-      }
-    }
-  }
-  out.sliding = {sign_x * lx, sign_y * ly, sign_y * lm};
-  return out;
-}
-
 bool has_moment(const CreepTableData& table) {
   for (const CreepTableBlock& b : table.blocks)
     if (!b.has_mz) return false;
@@ -249,32 +106,6 @@ bool has_moment(const CreepTableData& table) {
 
 const CreepTableData& data(const CreepTable& table) {
   return detail::CreepTableAccess::data(table);
-}
-
-// The normalised creepage's magnitude: the larger of the two blocks' (their C's differ).
-double magnitude(const NuBlocks& nb, const contactgeom::Sdec& sdec, const Creepages& v,
-                 const ContactLoad& load, const Material& material) {
-  double r = normalise(*nb.lower, sdec, v, load, material).r();
-  if (nb.upper) r = std::max(r, normalise(*nb.upper, sdec, v, load, material).r());
-  return r;
-}
-
-// Interpolated in the blocks, linear in nu between them.
-Interpolated interpolate(const NuBlocks& nb, const contactgeom::Sdec& sdec, const Creepages& v,
-                         const ContactLoad& load, const Material& material) {
-  Interpolated f = evaluate(*nb.lower, sdec, v, load, material);
-  if (nb.upper && nb.t > 0.0) {
-    const Interpolated u = evaluate(*nb.upper, sdec, v, load, material);
-    for (std::size_t k = 0; k < 3; ++k) {
-      f.f[k] = (1 - nb.t) * f.f[k] + nb.t * u.f[k];
-      f.sliding[k] = (1 - nb.t) * f.sliding[k] + nb.t * u.sliding[k];
-    }
-  }
-  return f;
-}
-
-bool has_sliding(const NuBlocks& nb) {
-  return !nb.lower->sliding.empty() && (!nb.upper || !nb.upper->sliding.empty());
 }
 
 SdecGridOptions table_grid(const CreepTableRange& range, const contactgeom::Sdec& sdec) {

@@ -1,6 +1,6 @@
 // Reads the book of creep-force tables (data/creep_table.h5, layout of
 // generators/creep_table_generator.cpp) at run time: where it is, its bytes, their SHA-256 and
-// the arrays creep_table.cpp interpolates.
+// the arrays creep_table_interpolation.cpp interpolates.
 
 #include "creep_table_data.hpp"
 
