@@ -51,7 +51,9 @@ void solve_and_sum(const Creepages& v, std::span<const double> row_vx, double mu
     // 100-300 sweeps: the other iteration, where the first one did not converge. Its answer is
     // kept only where it converged: unconverged, it may wander far (46 % of Fx under mixed
     // creepage), whatever its last change.
-    ExactSolution other = solution;
+    ExactSolution other;  // the same problem: solve_tangential sets the rest
+    other.grid = solution.grid;
+    other.pn = solution.pn;
     detail::solve_tangential(op, bound, wx, wy, options, other, false);
     const int sweeps = solution.iterations + other.iterations;  // both count
     if (other.status == ExactStatus::converged) solution = std::move(other);

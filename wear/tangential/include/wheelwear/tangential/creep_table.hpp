@@ -145,7 +145,8 @@ std::optional<std::string> creep_table_outside(const contactgeom::Sdec& sdec,
 /// linear in nu between the tabulated ratios. psi < 0 uses the mirror image (vy, phi, Fy change
 /// sign) and creepages with vx < 0 the reversed ones (forces change sign). Mz is tabulated as
 /// Mz/(mu N c) (none for a table written without it). Near full sliding (|F| from 0.5 to 0.9
-/// of the full-sliding limit S's in Fx, Fy, faded in), where the forces turn with the
+/// of the full-sliding limit S's, Fx/(mu N), Fy/(mu N), Mz/(mu N c) together, faded in), where
+/// the forces turn with the
 /// creepages' direction faster than the direction nodes resolve, the interpolation's error of S
 /// is taken out: F + rho (S - S_interp), S (full_sliding_sdec on the table's grid) exact at the
 /// creepages and S_interp interpolated from the limits the table holds per direction node (a
