@@ -77,6 +77,7 @@ std::string patch_json(const contactgeom::WheelRailPair& pair, const contactgeom
       .add("y_rail", -p.y_rail)
       .add("contact_angle", p.contact_angle)
       .add("contact_angle_centre", p.contact_angle_centre)
+      .add("plane_angle", p.plane_angle)
       .add("N", p.normal_force)
       .add("pmax", p.pmax)
       .add("rolling_radius", p.rolling_radius)

@@ -40,6 +40,13 @@ void add_contact_options(CLI::App* cmd, ContactInputs& in) {
                   "kik-piotrowski (one factor, --epsilon, for every patch)")
       ->check(CLI::IsMember(core::all_names(contactgeom::kNormalMethodNames)))
       ->capture_default_str();
+  cmd->add_option("--contact-plane", in.contact_plane,
+                  "the plane each patch's strips are solved in: initial-point (the tangent plane\n"
+                  "at O, the gap the vertical one times its cosine) or weighted (CONTACT's planar\n"
+                  "contact: inclined by the rail's contact angle averaged over the\n"
+                  "interpenetration, both profiles turned into it; docs/normal-contact.md)")
+      ->check(CLI::IsMember(core::all_names(contactgeom::kContactPlaneNames)))
+      ->capture_default_str();
   cmd->add_option("--epsilon", in.epsilon,
                   "Kik-Piotrowski virtual penetration factor, with --normal-method kik-piotrowski")
       ->capture_default_str();
@@ -125,6 +132,7 @@ SolvedContact solve_contact(const ContactInputs& in) {
   options.strip_width = in.strip_width;
   options.kp.epsilon = in.epsilon;
   options.kp.penetration = *core::value_named(contactgeom::kNormalMethodNames, in.normal_method);
+  options.contact_plane = *core::value_named(contactgeom::kContactPlaneNames, in.contact_plane);
   out.contact = contactgeom::solve_wheel_rail(out.pair, in.pose, in.load, options);
   if (auto warning =
           core::plausibility_warning(core::kApproachLimit, "approach", out.contact.approach))

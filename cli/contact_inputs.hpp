@@ -32,6 +32,7 @@ struct ContactInputs {
   double nu = 0.25;
   double strip_width = 0.1e-3;
   std::string normal_method = "hertz-calibrated";  // a contactgeom::kNormalMethodNames name
+  std::string contact_plane = "initial-point";     // a contactgeom::kContactPlaneNames name
   double epsilon = 0.55;
   tangential::Creepages creepages;
   bool kinematic = false;                 // creepages from the motion below instead

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "parabola_vertex.hpp"
@@ -29,6 +30,10 @@ namespace wheelwear::contactgeom::detail {
 constexpr double kMinimumBlendDepth = 4e-6;
 // The prominence below which a minimum counts only in part [m]: a ripple of a smoothed profile.
 constexpr double kMinimumProminence = 0.05e-6;
+// Of a minimum's second difference, how far above it its lower neighbour still shares the
+// refinement (refine_minimum): narrow, so that a basin's refined minimum depends on its own three
+// samples but within a twentieth of their curvature of a tie.
+constexpr double kTieBlend = 0.05;
 
 struct BlendedMinimum {
   double index = 0.0;  // position in samples (fractional)
@@ -37,6 +42,54 @@ struct BlendedMinimum {
 
 // O of samples [first, last] of the gap `h(j)` (a callable; +inf for a sample that is missing
 // or must not serve as a neighbour). The samples around the range may serve as neighbours.
+// The vertex of the parabola through samples k - 1, k, k + 1 of `h`, as a position in samples;
+// none where a sample is missing or the parabola does not open upwards.
+template <class Gap>
+std::optional<ParabolaVertex> vertex_at(const Gap& h, std::ptrdiff_t k) {
+  const double left = h(k - 1), middle = h(k), right = h(k + 1);
+  if (!std::isfinite(left) || !std::isfinite(middle) || !std::isfinite(right)) return std::nullopt;
+  auto vertex = parabola_vertex(left, middle, right);
+  if (vertex) vertex->offset += static_cast<double>(k);
+  return vertex;
+}
+
+// The minimum at sample p (p == q) or between two equal samples p, q = p + 1, refined by the
+// parabola through its sample and both neighbours. Where its lower neighbour nearly ties with
+// it, that parabola is blended with the one through the neighbour (half each at a tie, none
+// once the neighbour lies kTieBlend of the three samples' second difference above): the
+// refined minimum then
+// moves continuously as the lowest sample passes to its neighbour, where either parabola alone
+// jumps by the basin's asymmetry (on coarse strips across a steep flank, 1.7 um of a 180 um
+// approach).
+template <class Gap>
+void refine_minimum(const Gap& h, std::ptrdiff_t p, std::ptrdiff_t q, double& index, double& gap) {
+  const auto own = vertex_at(h, p);
+  if (q == p + 1) {  // a tie: both parabolas, half each
+    const auto other = vertex_at(h, q);
+    if (own && other) {
+      index = 0.5 * (own->offset + other->offset);
+      gap = 0.5 * (own->h + other->h);
+    }
+    return;
+  }
+  if (!own) return;
+  index = own->offset;
+  gap = own->h;
+  const double left = h(p - 1), right = h(p + 1), middle = h(p);
+  const std::ptrdiff_t neighbour = right <= left ? p + 1 : p - 1;
+  const double rise = std::min(left, right) - middle;
+  const double scale = kTieBlend * (left - 2.0 * middle + right);
+  const auto other = vertex_at(h, neighbour);
+  // Its vertex lies between the two samples near a tie; beyond them (a flat gap past the
+  // neighbour) it is no refinement of this minimum.
+  const double lo = static_cast<double>(std::min(p, neighbour));
+  if (!other || !(rise < scale) || !(other->offset >= lo && other->offset <= lo + 1.0)) return;
+  const double t = rise / scale;
+  const double w = 0.5 * (1.0 - t * t * (3.0 - 2.0 * t));
+  index += w * (other->offset - index);
+  gap += w * (other->h - gap);
+}
+
 template <class Gap>
 BlendedMinimum blended_minimum(const Gap& h, std::ptrdiff_t first, std::ptrdiff_t last,
                                double depth = kMinimumBlendDepth,
@@ -59,11 +112,7 @@ BlendedMinimum blended_minimum(const Gap& h, std::ptrdiff_t first, std::ptrdiff_
     const double left = h(p - 1), right = h(q + 1);
     if (left > hp && right > hp) {
       Minimum m{0.5 * static_cast<double>(p + q), hp, hp};
-      if (p == q && std::isfinite(left) && std::isfinite(right))
-        if (const auto vertex = parabola_vertex(left, hp, right)) {
-          m.index += vertex->offset;
-          m.h = vertex->h;
-        }
+      if (q <= p + 1) refine_minimum(h, p, q, m.index, m.h);
       if (!minima.empty()) ridges.push_back(ridge);
       minima.push_back(m);
       ridge = -inf;

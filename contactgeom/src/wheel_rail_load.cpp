@@ -38,45 +38,68 @@ constexpr int kMaxFastCorrections = 6;
 // solving N closer only adds evaluations (one or two per solve).
 constexpr double kFirstGuessTolerance = 1e-4;
 
-// One contact region of the sampled gap as the Kik-Piotrowski solver sees it.
-struct Region {
-  const GapStrips& strips;  // strips_of() of samples [first, last]
-  std::size_t last;
-  double c;  // cosine of the contact angle at the region's gap minimum
-};
+// The samples of `window` about its minimum where the gap lies below the approach `a`: the run
+// patches_at() takes there (interpenetration_runs, where the window has no rise to cut), with
+// the window's minimum.
+Run below(const GapSamples& g, const Run& window, double a) {
+  const auto k =
+      static_cast<std::size_t>(std::clamp(std::llround((window.y_O - g.y[window.first]) / g.dy),
+                                          0LL, static_cast<long long>(window.last - window.first)));
+  Run run = window;
+  run.first = window.first + k;
+  run.last = run.first;
+  while (run.first > window.first && g.h[run.first - 1] < a) --run.first;
+  while (run.last < window.last && g.h[run.last + 1] < a) ++run.last;
+  return run;
+}
 
-// The fast path's single patch of `region` under the vertical force Fz, into kp and forces;
-// false unless the solve ends with one converged patch whose strip-wise vertical force meets
-// options.load_tolerance. The Kik-Piotrowski load solve at N = Fz/c misses Fz by the spread
-// of the contact angle over the patch; the approach is then corrected on the load residual of
-// load_residual.hpp, nearly linear in the approach: first a step that takes it as linear in
-// the local approach (Hertz, Fz ~ delta^(3/2)), then secant steps. The effective cosine Fz/N
-// hardly depends on the load, so two or three evaluations of the approach meet 1e-9.
+// The fast path's single patch of the gap's one region `window` under the vertical force Fz:
+// its strips, approach (vertical, the datum of g.h), patch and forces into strips, approach, kp
+// and forces; false unless the solve ends with one converged patch whose strip-wise vertical
+// force meets options.load_tolerance. The first guess is the Kik-Piotrowski load solve at
+// N = Fz/c on the strips in O's plane (no cut bounds the window: they do not depend on the
+// approach), which misses Fz by the spread of the contact angle over the patch; the approach is
+// then corrected on the load residual of load_residual.hpp, nearly linear in the approach: first
+// a step that takes it as linear in the local approach (Hertz, Fz ~ delta^(3/2)), then secant
+// steps. The effective cosine Fz/N hardly depends on the load, so two or three evaluations of
+// the approach meet 1e-9. In CONTACT's weighted plane (`weighted`) every evaluation takes the
+// strips at its own approach, the plane following the interpenetration.
 bool fast_path_approach(const WheelRailGap& geometry, const GapSamples& g,
-                        SampleDirections& directions, const Region& region, double E_star,
-                        double Fz, const WheelRailOptions& options, KpResult& kp,
+                        SampleDirections& directions, const Run& window, bool weighted,
+                        double E_star, double Fz, const WheelRailOptions& options,
+                        StripBuffers& buffers, RunStrips& strips, double& approach, KpResult& kp,
                         PatchForces& forces) {
   const LoadTolerance load_met{options.load_tolerance};
   KpOptions kp_options = options.kp;
   kp_options.load_tolerance = std::max(options.load_tolerance, kFirstGuessTolerance);
-  solve_kp_load(region.strips, E_star, Fz / region.c, kp_options, kp);
+  strips = strips_of(geometry, g, directions, window, 0.0, false, buffers);
+  const double c = strips.plane.cos;
+  solve_kp_load(strips.strips, E_star, Fz / c, kp_options, kp);
   const auto single = [&] { return kp.status == KpStatus::converged && kp.patches.size() == 1; };
   if (!single()) return false;
-  forces = strip_forces(geometry, g, directions, region.strips, region.last, kp.patches[0]);
+  const auto evaluate = [&](double a) {
+    // The window's samples below the approach (the strips of a longer run are the same where
+    // they overlap: both start from O, strips_of).
+    if (weighted)
+      strips = strips_of(geometry, g, directions, below(g, window, a), a, true, buffers);
+    solve_kp_approach(strips.strips, E_star, a * strips.plane.cos, options.kp, kp);
+    return single();
+  };
+  approach = kp.approach / c;
+  if (weighted && !evaluate(approach)) return false;
+  forces = strip_forces(geometry, g, directions, strips, kp.patches[0]);
   double f = load_residual(forces.vertical, Fz);
   if (load_met(f)) return true;
-  double delta = kp.approach;
-  double next = kp.patches[0].h_O + (delta - kp.patches[0].h_O) / (1.0 + f);
+  double next = window.h_O + (approach - window.h_O) / (1.0 + f);
   for (int i = 0; i < kMaxFastCorrections; ++i) {
-    const double previous = delta, f_previous = f;
-    delta = next;
-    solve_kp_approach(region.strips, E_star, delta, options.kp, kp);
-    if (!single()) return false;
-    forces = strip_forces(geometry, g, directions, region.strips, region.last, kp.patches[0]);
+    const double previous = approach, f_previous = f;
+    approach = next;
+    if (!evaluate(approach)) return false;
+    forces = strip_forces(geometry, g, directions, strips, kp.patches[0]);
     f = load_residual(forces.vertical, Fz);
     if (load_met(f)) return true;
     if (f == f_previous) return false;
-    next = delta - f * (delta - previous) / (f - f_previous);
+    next = approach - f * (approach - previous) / (f - f_previous);
   }
   return false;
 }
@@ -265,26 +288,29 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
     while (last + 1 < g.h.size() && g.window[last + 1] == g.window[k]) ++last;
     // The angle at the refined minimum, as patches_at() takes it for the region.
     const Run window = with_minimum(g, first, last);
-    const double y_O = window.y_O;
-    const double angle = geometry.contact_angle(y_O);
-    const double c = std::cos(angle);
-    thread_local std::vector<double> h, ax;
-    // No cut bounds the window: the approach does not enter its strips.
-    const GapStrips strips = strips_of(geometry, g, window, 0.0, c, h, ax);
+    const double angle = geometry.contact_angle(window.y_O);
+    const bool weighted = options.contact_plane == ContactPlane::weighted;
+    thread_local StripBuffers buffers;
     thread_local KpResult kp;
+    RunStrips strips;
     PatchForces forces;
-    if (fast_path_approach(geometry, g, directions, Region{strips, last, c}, E_star, vertical_force,
-                           options, kp, forces)) {
-      const double candidate = kp.approach / c - g.h_min;
+    double approach = 0.0;
+    if (fast_path_approach(geometry, g, directions, window, weighted, E_star, vertical_force,
+                           options, buffers, strips, approach, kp, forces)) {
+      const double candidate = approach - g.h_min;
       const std::vector<Run> regions = interpenetration_regions(g, g.h_min + candidate);
       if (regions.size() == 1 &&
           std::abs(geometry.contact_angle(regions[0].y_O) - angle) < 1e-3 * std::max(1.0, angle)) {
         fast_approach = candidate;
+        // O's plane does not depend on the approach, but the angle CONTACT reports does.
+        if (!weighted)
+          strips = strips_of(geometry, g, directions, window, approach, false, buffers);
         PatchSet e;
         e.vertical = forces.vertical;
         e.lateral = forces.lateral;
-        e.steepest = std::abs(angle);
-        e.patches.push_back(describe_patch(geometry, kp.patches[0], y_O, angle, forces, E_star));
+        e.steepest = std::abs(patch_contact_angle(geometry, g, strips, kp.patches[0]));
+        e.patches.push_back(
+            describe_patch(geometry, g, kp.patches[0], strips, approach, forces, E_star));
         fast = std::move(e);
         if (interpenetration_runs(g, g.h_min + candidate, kEveryRise).size() == 1) d = candidate;
       }

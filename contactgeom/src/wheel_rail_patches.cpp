@@ -224,48 +224,59 @@ void scale_loads(KpPatch& patch, double share) {
 }
 
 PatchForces strip_forces(const WheelRailGap& geometry, const GapSamples& g,
-                         SampleDirections& directions, const GapStrips& strips, std::size_t last,
+                         SampleDirections& directions, const RunStrips& strips,
                          const KpPatch& patch) {
   PatchForces f;
+  const std::size_t last = strips.plane.sample.size() - 1;
   for (const KpStrip& strip : patch.strips) {
     const double load = strip.line_load() * patch.ds;
-    const auto k = static_cast<std::size_t>(std::llround((strip.s - strips.s_first) / strips.ds));
-    const ContactDirection n = directions.at(geometry, g, last - k);
-    f.vertical += load * n.cos;
-    f.lateral += load * n.sin;
+    const auto k = static_cast<std::size_t>(
+        std::clamp<long long>(std::llround((strip.s - strips.strips.s_first) / strips.strips.ds), 0,
+                              static_cast<long long>(last)));
+    // Between the samples about the strip's centre: the strips move with the plane as the
+    // approach changes, and the nearest sample's direction would make the load jump.
+    const double at = strips.plane.sample[k];
+    const auto j = static_cast<std::size_t>(at);
+    const double u = at - static_cast<double>(j);
+    const ContactDirection n0 = directions.at(geometry, g, j);
+    const ContactDirection n1 = u > 0.0 ? directions.at(geometry, g, j + 1) : n0;
+    f.vertical += load * (n0.cos + u * (n1.cos - n0.cos));
+    f.lateral += load * (n0.sin + u * (n1.sin - n0.sin));
   }
   return f;
 }
 
-namespace {
-
-// The lateral centroid of the strips' line loads, s [m] (O where nothing is loaded).
-double load_centre(const KpPatch& patch) {
-  double load = 0.0, moment = 0.0;
-  for (const KpStrip& strip : patch.strips) {
-    load += strip.line_load();
-    moment += strip.line_load() * strip.s;
-  }
-  return load > 0.0 ? moment / load : patch.s_O;
+double patch_contact_angle(const WheelRailGap& geometry, const GapSamples& g,
+                           const RunStrips& strips, const KpPatch& patch) {
+  // Kik & Piotrowski's reduction keeps the run's angle (O lies within a strip of its minimum).
+  return strips.plane.weighted ? geometry.contact_angle(strips.plane.y_at(g, patch.s_O))
+                               : strips.plane.angle;
 }
 
-}  // namespace
-
-WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch, double y_O_run,
-                              double angle, PatchForces forces, double E_star, double share) {
+WheelRailPatch describe_patch(const WheelRailGap& geometry, const GapSamples& g,
+                              const KpPatch& patch, const RunStrips& strips, double approach,
+                              PatchForces forces, double E_star, double share) {
+  const double angle = patch_contact_angle(geometry, g, strips, patch);
   const double c = std::cos(angle);
   WheelRailPatch p;
   p.kp = patch;
   p.share = share;
   p.contact_angle = angle;
-  p.contact_angle_centre = geometry.contact_angle(y_O_run - load_centre(patch) * c);
+  p.plane_angle = strips.plane.angle;
+  p.contact_angle_centre = strips.plane.weighted_angle;
   p.normal_force = patch.normal_force;
   p.vertical_force = forces.vertical;
   p.lateral_force = forces.lateral;
   p.pmax = patch.pmax;
-  // O of the KP patch lies at s_O from the run's minimum, along the contact plane.
-  const double y_O = y_O_run - patch.s_O * c;
+  const double y_O = strips.plane.y_at(g, patch.s_O);
   p.y_rail = -y_O;
+  {
+    // The vertical gap at O, between the samples about it.
+    const double j = strips.plane.sample_at(patch.s_O);
+    const auto i = static_cast<std::size_t>(j);
+    const std::size_t i1 = std::min(i + 1, g.y.size() - 1);
+    p.rigid_penetration = approach - (g.h[i] + (j - static_cast<double>(i)) * (g.h[i1] - g.h[i]));
+  }
   const auto w = geometry.wheel_at(y_O);
   const auto r = geometry.pair().rail.surface_at(y_O);
   // The wheel's material point at O (the unrolled profile's, which a roll does not move).
@@ -287,52 +298,27 @@ WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch
   return p;
 }
 
-// The gap along the contact normal is the vertical gap times cos(angle), to second order.
-GapStrips strips_of(const WheelRailGap& geometry, const GapSamples& g, const Run& run,
-                    double approach, double c, std::vector<double>& h, std::vector<double>& ax) {
-  const std::size_t n = run.last - run.first + 1;
-  h.resize(n);
-  ax.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t j = run.last - k;
-    // Beyond a cut the gap rises to the rigid approach over one sample, linearly in the cut's
-    // position: a sample half a sample or more beyond it lies as a sample beyond the run does,
-    // and the patch's loads and edges follow the cut's position continuously.
-    const double beyond =
-        std::max(run.cut_before - static_cast<double>(j), static_cast<double>(j) - run.cut_after);
-    const double rise = std::clamp(beyond + 0.5, 0.0, 1.0) * std::max(0.0, approach - g.h[j]);
-    h[k] = (g.h[j] + rise) * c;
-    ax[k] = c / (2.0 * geometry.rolling_radius(g.z_wheel[j]));
-  }
-  GapStrips strips;
-  strips.ds = g.dy / c;
-  strips.s_first = -(g.y[run.last] - run.y_O) / c;
-  strips.h = h;
-  strips.ax = ax;
-  return strips;
-}
-
 PatchSet patches_at(const WheelRailGap& geometry, const GapSamples& g, SampleDirections& directions,
                     double approach, double reference, double E_star,
                     const WheelRailOptions& options, bool describe) {
   PatchSet out;
-  thread_local std::vector<double> h, ax;
+  thread_local StripBuffers buffers;
   thread_local KpResult kp;
+  const bool weighted = options.contact_plane == ContactPlane::weighted;
   for (const Run& run : interpenetration_runs(g, approach, reference)) {
-    const double angle = geometry.contact_angle(run.y_O);
-    const double c = std::cos(angle);
-    const GapStrips strips = strips_of(geometry, g, run, approach, c, h, ax);
-    solve_kp_approach(strips, E_star, approach * c, options.kp, kp);
+    const RunStrips strips = strips_of(geometry, g, directions, run, approach, weighted, buffers);
+    solve_kp_approach(strips.strips, E_star, approach * strips.plane.cos, options.kp, kp);
     if (kp.status != KpStatus::converged) continue;
     for (KpPatch& patch : kp.patches) {
       if (run.share < 1.0) scale_loads(patch, run.share);
-      const PatchForces f = strip_forces(geometry, g, directions, strips, run.last, patch);
+      const PatchForces f = strip_forces(geometry, g, directions, strips, patch);
       out.vertical += f.vertical;
       out.lateral += f.lateral;
-      out.steepest = std::max(out.steepest, std::abs(angle));
+      out.steepest =
+          std::max(out.steepest, std::abs(patch_contact_angle(geometry, g, strips, patch)));
       if (describe)
         out.patches.push_back(
-            describe_patch(geometry, patch, run.y_O, angle, f, E_star, run.share));
+            describe_patch(geometry, g, patch, strips, approach, f, E_star, run.share));
     }
   }
   return out;

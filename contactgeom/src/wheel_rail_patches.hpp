@@ -3,29 +3,19 @@
 // regions of the sampled gap, their strips and the description of each patch (internal to the
 // wheel/rail contact).
 
+#include <cmath>
 #include <cstddef>
 #include <limits>
+#include <span>
 #include <vector>
 
+#include "gap_run.hpp"
+#include "strip_plane.hpp"
 #include "wheel_rail_gap.hpp"
 #include "wheelwear/contactgeom/kik_piotrowski.hpp"
 #include "wheelwear/contactgeom/wheel_rail.hpp"
 
 namespace wheelwear::contactgeom::detail {
-
-// One run of samples where the surfaces interpenetrate at the rigid approach.
-struct Run {
-  std::size_t first = 0, last = 0;  // sample indices, inclusive
-  double y_O = 0.0, h_O = 0.0;      // gap minimum (parabola through the lowest sample)
-  double share = 1.0;               // weight of this contact in a blend (interpenetration_runs)
-  // Where a cut bounds the run: its position in samples (fractional), the gap rising to the
-  // approach beyond it over one sample (strips_of); -inf, +inf: the run's own ends.
-  double cut_before = -std::numeric_limits<double>::infinity();
-  double cut_after = std::numeric_limits<double>::infinity();
-};
-
-// The run of samples [first, last] with its refined gap minimum.
-Run with_minimum(const GapSamples& g, std::size_t first, std::size_t last);
 
 // Rises of the gap smaller than this between two minima [m] are ripples of a sampled or
 // measured profile within one contact, never a cut.
@@ -71,56 +61,32 @@ constexpr double kEveryRise = -std::numeric_limits<double>::infinity();
 // rise is as firm a cut at this approach as it can be (r >= kSeparateAbove).
 bool splits_at_every_rise(const GapSamples& g, double approach);
 
-// The strips of `run` for the Kik-Piotrowski solver at the rigid approach `approach`, in
-// increasing s (towards the gauge side, -y in the profile frame), s measured from run.y_O along
-// the contact plane, whose cosine is c. h and ax hold the strips' values (the result views
-// them).
-GapStrips strips_of(const WheelRailGap& geometry, const GapSamples& g, const Run& run,
-                    double approach, double c, std::vector<double>& h, std::vector<double>& ax);
-
 // The vertical and lateral force of one patch [N].
 struct PatchForces {
   double vertical = 0.0;
   double lateral = 0.0;
 };
 
-// The contact direction at the gap's samples, each looked up on the rail once per sampling:
-// the load iterations project mostly the same strips at every approach they try.
-class SampleDirections {
- public:
-  // Forgets every direction: the samples are those of a new sampling, `samples` of them.
-  void reset(std::size_t samples) {
-    known_.assign(samples, 0);
-    direction_.resize(samples);
-  }
-  // The rail's contact direction at sample j (rail-frame y = g.y[j]), from its arc length there.
-  ContactDirection at(const WheelRailGap& geometry, const GapSamples& g, std::size_t j) {
-    if (!known_[j]) {
-      direction_[j] = geometry.rail_direction(g.s_rail[j]);
-      known_[j] = 1;
-    }
-    return direction_[j];
-  }
-
- private:
-  std::vector<unsigned char> known_;
-  std::vector<ContactDirection> direction_;
-};
-
-// The forces of a Kik-Piotrowski patch solved on `strips`, the strips_of() of samples
-// [first, last]: each strip's line load projected with the contact angle gamma at its centre,
-// the sample last - (s - s_first)/ds, sum q(s) ds (cos gamma(s), sin gamma(s)). One angle for
+// The forces of a Kik-Piotrowski patch solved on strips_of() `strips`: each strip's line load
+// projected with the contact angle gamma at its centre's nearest sample, sum q(s) ds
+// (cos gamma(s), sin gamma(s)). One angle for
 // the whole patch would project a patch spread over a curved rail wrongly (a patch over the
 // flange root and the flank misses the load by half with the flank's angle).
 PatchForces strip_forces(const WheelRailGap& geometry, const GapSamples& g,
-                         SampleDirections& directions, const GapStrips& strips, std::size_t last,
+                         SampleDirections& directions, const RunStrips& strips,
                          const KpPatch& patch);
 
-// The details of one Kik-Piotrowski patch of the region whose gap minimum lies at rail-frame
-// y_O, with contact angle `angle` and forces `forces` (strip_forces); its strips' s is measured
-// from y_O along the contact plane; `share` its weight in a blend (Run::share).
-WheelRailPatch describe_patch(const WheelRailGap& geometry, const KpPatch& patch, double y_O_run,
-                              double angle, PatchForces forces, double E_star, double share = 1.0);
+// The details of one Kik-Piotrowski patch solved on `strips` at the rigid approach `approach`
+// (vertical, the datum of g.h), with forces `forces` (strip_forces); `share` its weight in a
+// blend (Run::share).
+WheelRailPatch describe_patch(const WheelRailGap& geometry, const GapSamples& g,
+                              const KpPatch& patch, const RunStrips& strips, double approach,
+                              PatchForces forces, double E_star, double share = 1.0);
+
+// The contact angle at the patch's O: the rail's there, or with Kik & Piotrowski's reduction
+// the plane's (O lies within a strip of the run's gap minimum).
+double patch_contact_angle(const WheelRailGap& geometry, const GapSamples& g,
+                           const RunStrips& strips, const KpPatch& patch);
 
 // Scales the patch's pressures and load by its share of a blend.
 void scale_loads(KpPatch& patch, double share);

@@ -157,6 +157,7 @@ WheelRailContact scaled(const std::vector<TablePatch>& patches, WheelRailStatus 
     p.pmax = t.pmax;
     p.contact_angle = t.contact_angle;
     p.contact_angle_centre = t.contact_angle;  // not tabulated: O's
+    p.plane_angle = t.contact_angle;           // the same
     p.rolling_radius = t.rolling_radius;
     p.y_wheel = t.y_wheel;
     p.y_rail = t.y_rail;

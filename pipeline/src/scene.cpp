@@ -247,6 +247,10 @@ Scene parse_scene(std::string_view toml_text, const fs::path& base_directory,
              [&](const auto& n, const auto& k) {
                s.normal_method = named(n, k, contactgeom::kNormalMethodNames, "normal method");
              }},
+            {"contact_plane",
+             [&](const auto& n, const auto& k) {
+               s.contact_plane = named(n, k, contactgeom::kContactPlaneNames, "contact plane");
+             }},
             {"virtual_penetration",
              [&](const auto& n, const auto& k) {
                s.virtual_penetration = number(n, k, 0.05, 1.0, "Kik-Piotrowski's epsilon");

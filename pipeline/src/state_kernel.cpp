@@ -118,6 +118,7 @@ StateKernel::StateKernel(const Scene& scene)
   options_.strip_width = scene.strip_width;
   options_.kp.epsilon = scene.virtual_penetration;
   options_.kp.penetration = scene.normal_method;
+  options_.contact_plane = scene.contact_plane;
   options_.max_contact_angle = scene.max_contact_angle;
   options_.validate();
   tangential::FastsimOptions& fastsim = solve_options_.fastsim;

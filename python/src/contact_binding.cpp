@@ -49,6 +49,7 @@ cli::ContactInputs contact_inputs(const py::dict& kw) {
   get("nu", in.nu);
   get("strip_width", in.strip_width);
   get("normal_method", in.normal_method);
+  get("contact_plane", in.contact_plane);
   get("epsilon", in.epsilon);
   get("vx", in.creepages.vx);
   get("vy", in.creepages.vy);
@@ -64,6 +65,8 @@ cli::ContactInputs contact_inputs(const py::dict& kw) {
   in.files = profile_file_args(files, in.wheel != "S1002", in.rail != "60E1" && in.rail != "UIC60");
   cli::require_choice("--normal-method", in.normal_method,
                       core::all_names(contactgeom::kNormalMethodNames));
+  cli::require_choice("--contact-plane", in.contact_plane,
+                      core::all_names(contactgeom::kContactPlaneNames));
   return in;
 }
 
@@ -84,6 +87,7 @@ py::dict patch_dict(const contactgeom::WheelRailPatch& p) {
   o["s_wheel"] = p.s_wheel;
   o["contact_angle"] = p.contact_angle;
   o["contact_angle_centre"] = p.contact_angle_centre;
+  o["plane_angle"] = p.plane_angle;
   o["N"] = p.normal_force;
   o["pmax"] = p.pmax;
   o["rolling_radius"] = p.rolling_radius;

@@ -58,7 +58,7 @@ def test_contact_equals_the_command_line(cli, dy, method):
     compared = 0
     for mine, theirs in zip(got.patches, expected["patches"]):
         for key in ("area", "length", "width", "a", "b", "psi", "y_wheel", "y_rail",
-                    "contact_angle", "contact_angle_centre", "N", "pmax", "rolling_radius"):
+                    "contact_angle", "contact_angle_centre", "plane_angle", "N", "pmax", "rolling_radius"):
             assert mine[key] == theirs[key], key
             compared += 1
         # The strips carry the patch: their line loads pi/2 p x_lead ds sum to N.

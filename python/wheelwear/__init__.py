@@ -293,6 +293,7 @@ def contact(
     nu: float = 0.25,
     strip_width: float = 0.1e-3,
     normal_method: str = "hertz-calibrated",
+    contact_plane: str = "initial-point",
     epsilon: float = 0.55,
     origin: Optional[str] = None,
     taping_line_distance: Optional[float] = None,
@@ -306,7 +307,9 @@ def contact(
     ``back_to_back`` [m], Young's modulus ``E`` [Pa], ``nu``, the gap's lateral sampling
     ``strip_width`` [m], and the normal problem: ``normal_method`` "hertz-calibrated" (each
     patch's virtual penetration from Hertz's ellipse for its curvature ratio; the default) or
-    "kik-piotrowski" (one factor ``epsilon``). Profile files are read as :func:`wheel_profile`
+    "kik-piotrowski" (one factor ``epsilon``), solved in ``contact_plane`` "initial-point" (the
+    tangent plane at O; the default) or "weighted" (CONTACT's planar contact). Profile files are
+    read as :func:`wheel_profile`
     and :func:`rail_profile` read them: ``origin``, ``taping_line_distance`` (wheel files),
     ``gauge_side`` (rail files), ``max_drop`` and ``smoothing`` (either), refused for the
     standard profiles.
@@ -314,7 +317,8 @@ def contact(
     Returns a record with ``status`` ("ok", or why not: a status, not an exception), ``message``,
     ``vertical_force``, ``lateral_force`` [N], ``approach`` [m] and ``patches``: each with
     ``area`` [m^2], ``length``, ``width``, SDEC ``a``, ``b``, ``psi``, ``y_wheel``, ``y_rail``
-    (profile frames, + towards the field side), ``contact_angle``, ``contact_angle_centre``
+    (profile frames, + towards the field side), ``contact_angle`` (at O),
+    ``contact_angle_centre`` (as CONTACT reports it), ``plane_angle`` (the planar contact's)
     [rad], ``N`` [N], ``pmax`` [Pa], ``rolling_radius`` [m], and its Kik-Piotrowski ``strips``
     (arrays ``s`` [m] from O, + towards the gauge side; half-length ``x_lead`` [m]; peak
     pressure ``p_peak`` [Pa]).
@@ -349,6 +353,7 @@ def wear(
     nu: float = 0.25,
     strip_width: float = 0.1e-3,
     normal_method: str = "hertz-calibrated",
+    contact_plane: str = "initial-point",
     epsilon: float = 0.55,
     origin: Optional[str] = None,
     taping_line_distance: Optional[float] = None,

@@ -50,7 +50,7 @@ TEST(ContactStatusCommand, FlankContactBeyondNadalsLimitIsFlagged) {
   EXPECT_TRUE(json_true(r.out, "nadal_applies"));
   EXPECT_TRUE(json_true(r.out, "nadal_exceeded"));
   const double delta = *json_number(r.out, "nadal_delta");
-  EXPECT_NEAR(delta, 1.2053, 0.015);  // wheel_rail_test's angle bound against CONTACT
+  EXPECT_NEAR(delta, 1.2053, 0.02);  // wheel_rail_test's angle bound against CONTACT (at O)
   EXPECT_NEAR(*json_number(r.out, "nadal_limit"), std::tan(delta - std::atan(0.35)), 1e-12);
   // Y/Q within 5 % of CONTACT's: the creepages here are free rolling, CONTACT's a prescribed
   // 1e-3 (the lateral creep force is 2 % of the normal force, 0.6 % of Y/Q per 1e-3).
@@ -69,11 +69,29 @@ TEST(ContactStatusCommand, NormalMethodChoosesThePatch) {
   EXPECT_NEAR(*json_number(calibrated.out, "area"), 53.56e-6, 0.10 * 53.56e-6);
   EXPECT_NEAR(*json_number(calibrated.out, "width"), 1.8e-3, 0.10 * 1.8e-3);
   EXPECT_GT(*json_number(kp.out, "area"), 1.2 * 53.56e-6);
-  // The angle at the centre of load, where CONTACT gives its 1.2053 rad (wheel_rail_test.cpp).
-  EXPECT_NEAR(*json_number(calibrated.out, "contact_angle_centre"), 1.2053, 0.01);
+  // The angle as CONTACT reports it, its 1.2053 rad (wheel_rail_test.cpp).
+  EXPECT_NEAR(*json_number(calibrated.out, "contact_angle_centre"), 1.2053, 0.005);
   const auto bad = run_wheelwear(pair_args(0.008) + " --normal-method analyn");
   EXPECT_NE(bad.exit_code, 0);
   EXPECT_NE(bad.err.find("hertz-calibrated"), std::string::npos) << bad.err;
+}
+
+// --contact-plane weighted solves the strips in CONTACT's weighted plane: on the flank its area
+// is within 5 % of CONTACT's (measured +4.0 %, wheel_rail_test.cpp), its plane angle CONTACT's
+// (within 0.0011 rad measured), where the default's plane is O's (1.214 rad, 0.009 off); an
+// unknown plane is refused naming the choices.
+TEST(ContactStatusCommand, ContactPlaneChoosesThePlaneTheStripsAreSolvedIn) {
+  const auto weighted = run_wheelwear(pair_args(0.008) + " --contact-plane weighted");
+  const auto at_O = run_wheelwear(pair_args(0.008));
+  ASSERT_EQ(weighted.exit_code, 0) << weighted.err;
+  ASSERT_EQ(at_O.exit_code, 0) << at_O.err;
+  EXPECT_NEAR(*json_number(weighted.out, "area"), 53.56e-6, 0.05 * 53.56e-6);
+  EXPECT_NEAR(*json_number(weighted.out, "plane_angle"), 1.2053, 0.005);
+  EXPECT_NEAR(*json_number(at_O.out, "plane_angle"), *json_number(at_O.out, "contact_angle"),
+              1e-12);
+  const auto bad = run_wheelwear(pair_args(0.008) + " --contact-plane curved");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.err.find("weighted"), std::string::npos) << bad.err;
 }
 
 // --slip-point takes the lateral creepage at the contact point ahead of a yawed axle: on the

@@ -11,6 +11,7 @@
 #include "wheelwear/contactgeom/kik_piotrowski.hpp"
 #include "wheelwear/contactgeom/patch_measures.hpp"
 #include "wheelwear/contactgeom/sdec.hpp"
+#include "wheelwear/core/enum_names.hpp"
 #include "wheelwear/profiles/profile.hpp"
 
 namespace wheelwear::contactgeom {
@@ -45,8 +46,27 @@ struct WheelsetPose {
   double yaw = 0.0;  ///< yaw angle [rad]; enters the creepages, not the patch shape
 };
 
+/// The plane a patch's strips are solved in (docs/normal-contact.md, "The contact plane").
+enum class ContactPlane {
+  /// The tangent plane at O, each strip's gap the vertical one times the plane's cosine (Kik &
+  /// Piotrowski's reduction).
+  initial_point,
+  /// CONTACT's planar contact (its wheel/rail module, D = 2): inclined by the rail's contact angle
+  /// averaged over the interpenetration (weights: penetration^(5/2)), both profiles turned into
+  /// it, the wheel at its rigid approach; the gap along the plane's normal.
+  weighted,
+};
+
+/// The names scenes and the command line give them.
+inline constexpr core::NameTable<ContactPlane, 2> kContactPlaneNames = {{
+    {ContactPlane::initial_point, "initial-point"},
+    {ContactPlane::weighted, "weighted"},
+}};
+
 /// Numerical options of the wheel/rail contact.
 struct WheelRailOptions {
+  /// The plane each patch's strips are solved in.
+  ContactPlane contact_plane = ContactPlane::initial_point;
   double strip_width = 0.1e-3;  ///< lateral sampling of the gap [m] (patch strips are this wide
                                 ///< divided by cos(contact angle))
   /// Coarse scan that finds where contact is possible [m]; between two of its points the gap is
@@ -90,10 +110,21 @@ struct WheelRailPatch {
   double y_rail = 0.0;   ///< O on the rail profile, from its origin, + towards the gauge side [m]
   double s_wheel = 0.0;  ///< arc length of O on the wheel profile [m]
   double contact_angle = 0.0;  ///< angle of the contact plane to the track plane [rad]
-  /// The rail's contact angle at the patch's centre of load (its strips' line loads' lateral
-  /// centroid) [rad], where CONTACT reports its angle (at the weighted centre of its
-  /// interpenetration); contact_angle is O's. The table's patches carry O's.
+  /// The contact angle as CONTACT reports it [rad] (its wheel/rail module's planar contact, at
+  /// the weighted centre of the interpenetration): the rail's contact angle averaged over the
+  /// patch's rigid interpenetration, weighted by the penetration to the power 5/2 (its square
+  /// integrated along x under the wheel's sag); contact_angle is O's. The table's patches carry
+  /// O's.
   double contact_angle_centre = 0.0;
+  /// Inclination of the planar contact the patch was solved in [rad]: contact_angle_centre with
+  /// ContactPlane::weighted, contact_angle with ContactPlane::initial_point
+  /// (WheelRailOptions::contact_plane). The strips' s, the measures and the gap along the contact
+  /// normal are this plane's.
+  double plane_angle = 0.0;
+  /// The rigid vertical interpenetration of the undeformed surfaces at O [m]: how far the
+  /// wheel's rigid approach reaches below its surface there (a planar gap turned into the
+  /// plane depends on it, as the wheel moves down, not along the plane's normal).
+  double rigid_penetration = 0.0;
   double rolling_radius = 0.0;  ///< wheel radius at O: its material point's distance from the
                                 ///< axle [m], which a roll does not change
   double normal_force = 0.0;    ///< [N]

@@ -213,6 +213,8 @@ struct Scene {
   /// How the normal problem chooses its virtual penetration: Kik-Piotrowski's fixed epsilon
   /// (virtual_penetration), or Hertz-calibrated per patch.
   contactgeom::KpPenetration normal_method = contactgeom::KpPenetration::hertz_calibrated;
+  /// The plane each patch's strips are solved in: at O, or CONTACT's weighted plane.
+  contactgeom::ContactPlane contact_plane = contactgeom::ContactPlane::initial_point;
   /// Where a patch's lateral creepage is the wheel's rigid slip: in the axle's vertical plane
   /// (projected) or at the contact point ahead of a yawed axle (contactgeom::SlipPoint).
   contactgeom::SlipPoint slip_point = contactgeom::SlipPoint::axle_plane;

@@ -22,6 +22,8 @@ constexpr int kMaxElements = 1000;  // 10^6 elements: the FFT arrays need about 
 // Undeformed distance [m] given to elements where a profile ends: they never touch, and a
 // contact element next to one is reported (the patch would need the missing surface).
 constexpr double kNoSurface = 1.0;
+// Samples of a profile turned into the contact plane, either way from O, at most.
+constexpr int kMaxPlaneSamples = 20000;
 
 // The least undeformed distance along x in O's cross-section: a parabola through the distance
 // at x = -l, 0, l (the wheel's sag is quadratic in x to 1e-4 relative over a patch length;
@@ -119,6 +121,116 @@ std::vector<double> radius_departure_creepage(const profiles::Profile& wheel, do
   return row_vx;
 }
 
+// A profile's points turned into the contact plane: t along it towards the gauge side, n along
+// its normal (down, into the rail), both from the rail's point at O.
+struct PlaneSection {
+  std::vector<double> t, n;
+};
+
+// The value of `section` at plane coordinate t: between its two points about t, the first pair
+// found from index `from` outwards (a profile turned by the plane may fold back far from the
+// contact); nullopt where none brackets t.
+std::optional<double> section_at(const PlaneSection& section, double t, std::size_t from) {
+  const std::size_t size = section.t.size();
+  if (size < 2) return std::nullopt;
+  from = std::min(from, size - 2);
+  for (std::size_t d = 0; d < size; ++d) {
+    for (const std::size_t i : {from + d, from >= d ? from - d : size}) {
+      if (i + 1 >= size) continue;
+      const double t0 = section.t[i], t1 = section.t[i + 1];
+      if (t0 <= t && t <= t1 && t1 > t0)
+        return section.n[i] + (t - t0) / (t1 - t0) * (section.n[i + 1] - section.n[i]);
+    }
+  }
+  return std::nullopt;
+}
+
+// The undeformed distance along the normal of the patch's plane per element of `grid`, zero at
+// O's least distance (`least`, vertical, at its cross-section's lowest x, `least_x`), the wheel
+// moved down by the patch's rigid penetration there; kNoSurface (and no_surface set) where a
+// profile ends.
+std::vector<double> planar_gap(const contactgeom::WheelRailPair& pair,
+                               const contactgeom::WheelsetPose& pose,
+                               const contactgeom::WheelRailPatch& patch, double least_x,
+                               double least, const ElementGrid& grid,
+                               std::vector<bool>& no_surface) {
+  const double y_O = -patch.y_rail;
+  const double c = std::cos(patch.plane_angle), sn = std::sin(patch.plane_angle);
+  const auto at_O = pair.rail.surface_at(y_O);
+  require(at_O.has_value(), "patch.y_rail", patch.y_rail, "O must lie on the rail profile");
+  const double wheel_down = least + patch.rigid_penetration;
+  // Samples along y, at half the rows' spacing along t, walked out from O until the rail's t
+  // passes the grid's rows by two rows and by how far the wheel lies from the rail along t.
+  const double margin = 2.0 * grid.dy + std::abs(patch.rigid_penetration);
+  const double t_lo = grid.y_min - margin, t_hi = grid.y_min + grid.ny * grid.dy + margin;
+  const auto rail_t = [&](double y, double z) { return -(y - y_O) * c + (z - at_O->z) * sn; };
+  std::vector<double> ys;  // in increasing t
+  const auto walk = [&](double step, auto&& beyond) {
+    std::vector<double> out;
+    double y = y_O, t = 0.0;
+    for (int k = 0; k < kMaxPlaneSamples && !beyond(t); ++k) {
+      y += step;
+      const auto r = pair.rail.surface_at(y);
+      if (!r) break;
+      // dt = dy cos(gamma - delta) / cos(gamma) along the rail.
+      const double gamma = std::atan(-r->dz_dy);
+      const double dy_per_dt =
+          std::cos(gamma) / std::max(std::cos(gamma - patch.plane_angle), 0.05);
+      t = rail_t(y, r->z);
+      out.push_back(y);
+      step = std::copysign(0.5 * grid.dy * dy_per_dt, step);
+    }
+    return out;
+  };
+  const std::vector<double> gauge_side =
+      walk(-0.5 * grid.dy * c, [&](double t) { return t > t_hi; });
+  const std::vector<double> field_side =
+      walk(0.5 * grid.dy * c, [&](double t) { return t < t_lo; });
+  ys.assign(field_side.rbegin(), field_side.rend());
+  ys.push_back(y_O);
+  ys.insert(ys.end(), gauge_side.begin(), gauge_side.end());
+  PlaneSection rail;
+  std::vector<double> z_rail(ys.size(), 0.0);
+  for (std::size_t k = 0; k < ys.size(); ++k) {
+    z_rail[k] = pair.rail.surface_at(ys[k])->z;
+    const double y = ys[k] - y_O, z = z_rail[k] - at_O->z;
+    rail.t.push_back(-y * c + z * sn);
+    rail.n.push_back(y * sn + z * c);
+  }
+  std::vector<double> h(static_cast<std::size_t>(grid.size()), kNoSurface);
+  const auto gap_of = [&](double x, auto&& row_gap) {
+    PlaneSection wheel;
+    for (std::size_t k = 0; k < ys.size(); ++k) {
+      const auto d = contactgeom::undeformed_distance(pair, pose, x, ys[k]);
+      if (!d) continue;
+      const double y = ys[k] - y_O, z = z_rail[k] - *d + wheel_down - at_O->z;
+      wheel.t.push_back(-y * c + z * sn);
+      wheel.n.push_back(y * sn + z * c);
+    }
+    row_gap(wheel);
+  };
+  const auto gap_at = [&](const PlaneSection& wheel, double s) -> std::optional<double> {
+    const auto guess = static_cast<std::size_t>(std::lower_bound(rail.t.begin(), rail.t.end(), s) -
+                                                rail.t.begin());
+    const auto n_r = section_at(rail, s, guess);
+    const auto n_w = section_at(wheel, s, guess);
+    if (!n_r || !n_w) return std::nullopt;
+    return *n_r - *n_w;
+  };
+  double at_O_gap = 0.0;
+  gap_of(least_x, [&](const PlaneSection& wheel) { at_O_gap = gap_at(wheel, 0.0).value_or(0.0); });
+  for (int i = 0; i < grid.nx; ++i)
+    gap_of(grid.x(i), [&](const PlaneSection& wheel) {
+      for (int j = 0; j < grid.ny; ++j) {
+        const std::size_t e = static_cast<std::size_t>(j * grid.nx + i);
+        const auto gap = gap_at(wheel, grid.y(j));
+        no_surface[e] = !gap.has_value();
+        if (gap) h[e] = *gap - at_O_gap;
+      }
+    });
+  return h;
+}
+
 }  // namespace
 
 void WheelRailExactOptions::validate() const {
@@ -170,33 +282,21 @@ WheelRailExactSolution wheel_rail_exact(const contactgeom::WheelRailPair& pair,
   require_finite("patch.y_rail", patch.y_rail);
   const Material material{pair.youngs_modulus / (2.0 * (1.0 + pair.poisson)), pair.poisson};
 
-  // The contact plane is the tangent plane at O, inclined by the contact angle delta to the
-  // track plane; its lateral coordinate s points to the gauge side, the rail frame's -y. The
-  // surfaces are taken as flat in that plane's direction over the patch: the element at
-  // (x, s) lies above the track-plane point (x, y_O - s cos(delta)), and its distance along
-  // the contact normal is the vertical distance times cos(delta). This is contactgeom's own
-  // reduction (strips_of in wheel_rail_patches.cpp), so the exact solution sees the gap the
-  // Kik-Piotrowski patch saw; it holds to second order in the change of the surfaces' slope
-  // across the patch and is crude where that change is large (flange contact).
+  // The contact plane passes through O, inclined by the patch's plane angle delta to the track
+  // plane (contactgeom's: CONTACT's weighted plane, or O's tangent plane); its lateral
+  // coordinate s points to the gauge side, the rail frame's -y. The undeformed distance of an
+  // element is taken along the plane's normal between the rail and the wheel turned into the
+  // plane, the wheel placed at its rigid approach (as CONTACT's planar contact takes it, and
+  // strips_of in wheel_rail_patches.cpp): planar_gap below.
   const double y_O = -patch.y_rail;
-  const double c = std::cos(patch.contact_angle);
   const CrossSectionMinimum lowest =
       cross_section_minimum(pair, pose, y_O, 0.5 * patch.measures.length);
 
   WheelRailExactSolution out;
   const ElementGrid grid = wheel_rail_exact_grid(patch, lowest.x, options);
   const auto n = static_cast<std::size_t>(grid.size());
-  out.h.resize(n);
   std::vector<bool> no_surface(n, false);
-  for (int j = 0; j < grid.ny; ++j) {
-    const double y = y_O - grid.y(j) * c;
-    for (int i = 0; i < grid.nx; ++i) {
-      const std::size_t e = static_cast<std::size_t>(j * grid.nx + i);
-      const auto d = contactgeom::undeformed_distance(pair, pose, grid.x(i), y);
-      no_surface[e] = !d.has_value();
-      out.h[e] = d ? (*d - lowest.distance) * c : kNoSurface;
-    }
-  }
+  out.h = planar_gap(pair, pose, patch, lowest.x, lowest.distance, grid, no_surface);
 
   const NormalSolution normal = exact_normal(grid, out.h, load.N, material, options.solver);
   out.normal_iterations = normal.iterations;
