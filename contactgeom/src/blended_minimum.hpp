@@ -40,8 +40,6 @@ struct BlendedMinimum {
   double h = 0.0;      // the weighted minima's gap [m]
 };
 
-// O of samples [first, last] of the gap `h(j)` (a callable; +inf for a sample that is missing
-// or must not serve as a neighbour). The samples around the range may serve as neighbours.
 // The vertex of the parabola through samples k - 1, k, k + 1 of `h`, as a position in samples;
 // none where a sample is missing or the parabola does not open upwards.
 template <class Gap>
@@ -56,11 +54,10 @@ std::optional<ParabolaVertex> vertex_at(const Gap& h, std::ptrdiff_t k) {
 // The minimum at sample p (p == q) or between two equal samples p, q = p + 1, refined by the
 // parabola through its sample and both neighbours. Where its lower neighbour nearly ties with
 // it, that parabola is blended with the one through the neighbour (half each at a tie, none
-// once the neighbour lies kTieBlend of the three samples' second difference above): the
-// refined minimum then
-// moves continuously as the lowest sample passes to its neighbour, where either parabola alone
-// jumps by the basin's asymmetry (on coarse strips across a steep flank, 1.7 um of a 180 um
-// approach).
+// once the neighbour lies kTieBlend of the three samples' second difference above): the refined
+// minimum then moves continuously as the lowest sample passes to its neighbour, where either
+// parabola alone jumps by the basin's asymmetry (on coarse strips across a steep flank, 1.7 um
+// of a 180 um approach).
 template <class Gap>
 void refine_minimum(const Gap& h, std::ptrdiff_t p, std::ptrdiff_t q, double& index, double& gap) {
   const auto own = vertex_at(h, p);
@@ -90,6 +87,8 @@ void refine_minimum(const Gap& h, std::ptrdiff_t p, std::ptrdiff_t q, double& in
   gap += w * (other->h - gap);
 }
 
+// O of samples [first, last] of the gap `h(j)` (a callable; +inf for a sample that is missing
+// or must not serve as a neighbour). The samples around the range may serve as neighbours.
 template <class Gap>
 BlendedMinimum blended_minimum(const Gap& h, std::ptrdiff_t first, std::ptrdiff_t last,
                                double depth = kMinimumBlendDepth,
