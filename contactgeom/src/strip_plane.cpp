@@ -58,6 +58,17 @@ double weighted_plane_angle(const WheelRailGap& geometry, const GapSamples& g,
   return weight > 0.0 ? moment / weight : fallback;
 }
 
+// `run` widened by up to `samples` samples at either end, within its window.
+Run widened(const GapSamples& g, const Run& run, std::size_t samples) {
+  Run wider = run;
+  const int window = g.window[run.first];
+  for (std::size_t k = 0; k < samples; ++k) {
+    if (wider.first > 0 && g.window[wider.first - 1] == window) --wider.first;
+    if (wider.last + 1 < g.h.size() && g.window[wider.last + 1] == window) ++wider.last;
+  }
+  return wider;
+}
+
 // Kik & Piotrowski's reduction: the plane at the run's gap minimum, each sample a strip, its
 // gap the vertical one times the plane's cosine, s = -(y - y_O) / cos.
 void strips_in_plane_at_O(const WheelRailGap& geometry, const GapSamples& g, const Run& run,
@@ -94,13 +105,8 @@ void turned_gap(const WheelRailGap& geometry, const GapSamples& g, SampleDirecti
       std::clamp(static_cast<std::size_t>(std::llround((run.y_O - g.y[run.first]) / g.dy)),
                  run.first, run.last);
   const double y_ref = g.y[j_O], z_ref = directions.rail_z(geometry, g, j_O);
-  const int window = g.window[run.first];
-  std::size_t j_top = run.last, j_bottom = run.first;
-  while (j_top + 1 < g.h.size() && j_top < run.last + kWheelSearch && g.window[j_top + 1] == window)
-    ++j_top;
-  while (j_bottom > 0 && j_bottom + kWheelSearch > run.first && g.window[j_bottom - 1] == window)
-    --j_bottom;
-  const std::size_t m = j_top - j_bottom + 1, above = j_top - run.last;
+  const Run reach = widened(g, run, kWheelSearch);
+  const std::size_t j_top = reach.last, m = reach.last - reach.first + 1, above = j_top - run.last;
   b.tw.resize(m);
   b.nw.resize(m);
   const auto turned = [&](std::size_t j, double z) {
@@ -193,12 +199,7 @@ RunStrips strips_of(const WheelRailGap& geometry, const GapSamples& g, SampleDir
     // The run's ends are where the vertical gap meets the approach; the gap along the plane's
     // normal may still be below it there, so the strips reach kBeyondRun samples further (within
     // the window): a strip that appeared only as the run grew would make the load jump.
-    Run wider = run;
-    const int window = g.window[run.first];
-    for (std::size_t k = 0; k < kBeyondRun; ++k) {
-      if (wider.first > 0 && g.window[wider.first - 1] == window) --wider.first;
-      if (wider.last + 1 < g.h.size() && g.window[wider.last + 1] == window) ++wider.last;
-    }
+    const Run wider = widened(g, run, kBeyondRun);
     turned_gap(geometry, g, directions, wider, approach, plane, b);
     resampled(g, wider, out, b);
   } else {

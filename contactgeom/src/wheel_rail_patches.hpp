@@ -3,10 +3,8 @@
 // regions of the sampled gap, their strips and the description of each patch (internal to the
 // wheel/rail contact).
 
-#include <cmath>
 #include <cstddef>
 #include <limits>
-#include <span>
 #include <vector>
 
 #include "gap_run.hpp"
@@ -68,8 +66,8 @@ struct PatchForces {
 };
 
 // The forces of a Kik-Piotrowski patch solved on strips_of() `strips`: each strip's line load
-// projected with the contact angle gamma at its centre's nearest sample, sum q(s) ds
-// (cos gamma(s), sin gamma(s)). One angle for
+// projected with the contact direction at its centre (between the samples about it), sum q(s)
+// ds (cos gamma(s), sin gamma(s)). One angle for
 // the whole patch would project a patch spread over a curved rail wrongly (a patch over the
 // flange root and the flank misses the load by half with the flank's angle).
 PatchForces strip_forces(const WheelRailGap& geometry, const GapSamples& g,
