@@ -4,7 +4,8 @@
 # extension is made one nu at a time), reuses exactly the earlier nodes and equals the same
 # table solved from scratch bit for bit (the exact solve is deterministic), for both nu, with
 # its full-sliding limits per direction node; --add-sliding writes those limits into a table
-# without them, the same bits, and refuses a file that is no table, leaving it as it was.
+# without them, the same bits, and refuses a file that is no table, leaving it as it was;
+# --into writes a group into a copy of another table, keeping that table's other groups.
 # Usage: creep_table_reuse_test.sh GENERATOR
 set -euo pipefail
 generator="$1"
@@ -35,6 +36,23 @@ for nu in nu_0.25 nu_0.28; do
     h5diff "$dir/reused.h5" "$dir/fresh.h5" "$nu/$values" "$nu/$values"
   done
 done
+# --into: the nu 0.25 group extended (every node reused) into a copy of the old nu 0.28 table,
+# whose group stays as it was: groups with different a/b nodes in one file. An --into file
+# that does not exist is refused before anything is written.
+"$generator" "${common[@]}" "${new[@]}" --nu 0.25 --reuse "$dir/reused.h5" \
+  --into "$dir/old28.h5" --out "$dir/into.h5" > "$dir/log"
+grep -qxF "nu_0.25: 1080 of 1080 nodes reused from $dir/reused.h5" "$dir/log"
+for values in a_over_b Fx_muN Fy_muN Mz_muNc Fx_sliding_muN Fy_sliding_muN Mz_sliding_muNc; do
+  h5diff "$dir/into.h5" "$dir/fresh.h5" "nu_0.25/$values" "nu_0.25/$values"
+  h5diff "$dir/into.h5" "$dir/old28.h5" "nu_0.28/$values" "nu_0.28/$values"
+done
+if "$generator" "${common[@]}" --nu 0.25 --into "$dir/missing.h5" --out "$dir/into.h5" \
+  2> "$dir/err"; then
+  echo "--into accepted a file that does not exist" >&2
+  exit 1
+fi
+grep -q "missing.h5: no such file" "$dir/err"
+h5diff "$dir/into.h5" "$dir/fresh.h5" nu_0.25/Fx_muN nu_0.25/Fx_muN
 # A table without the limits (as the shipped one was solved) gets them from --add-sliding, the
 # same bits as the generator writes, its forces untouched. (Debian's python3-h5py removes them.)
 cp "$dir/fresh.h5" "$dir/added.h5"
@@ -68,4 +86,5 @@ done
 [[ "$(cat "$dir/junk.h5")" == "not a table" ]]
 cmp "$dir/other.h5" "$dir/other_before.h5"
 echo "--reuse: 300 of 1080 nodes per nu reused, each from its file; equal to a fresh table bit for bit;"
+echo "--into: the extended nu 0.25 group beside the old nu 0.28 one, each as solved"
 echo "--add-sliding: the same limits in place; a file that is no table refused and left as it was"

@@ -7,9 +7,11 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "wheelwear/contactgeom/undeformed_distance.hpp"
 #include "wheelwear/core/input_error.hpp"
+#include "wheelwear/profiles/profile.hpp"
 #include "wheelwear/tangential/exact/normal_contact.hpp"
 #include "wheelwear/tangential/exact/steady_rolling.hpp"
 
@@ -127,6 +129,18 @@ struct PlaneSection {
   std::vector<double> t, n;
 };
 
+// The contact plane through the rail's point O = (y_O, z_O), inclined by delta: turns a point
+// (y, z) of the rail frame into (t, n).
+struct ContactPlane {
+  double y_O, z_O, cos_delta, sin_delta;
+
+  void add(PlaneSection& section, double y, double z) const {
+    const double dy = y - y_O, dz = z - z_O;
+    section.t.push_back(-dy * cos_delta + dz * sin_delta);
+    section.n.push_back(dy * sin_delta + dz * cos_delta);
+  }
+};
+
 // The value of `section` at plane coordinate t: between its two points about t, the first pair
 // found from index `from` outwards (a profile turned by the plane may fold back far from the
 // contact); nullopt where none brackets t.
@@ -145,6 +159,85 @@ std::optional<double> section_at(const PlaneSection& section, double t, std::siz
   return std::nullopt;
 }
 
+// The rail's samples (y, z) from O outwards, `step` apart along y at first and then about half
+// a row apart along the plane's t, until `beyond(t)` or the rail's end.
+struct RailSamples {
+  std::vector<double> y, z;
+};
+
+template <class Beyond>
+RailSamples walk_rail(const profiles::Profile& rail, const ContactPlane& plane, double delta,
+                      double half_row, double step, Beyond&& beyond) {
+  RailSamples out;
+  double y = plane.y_O, t = 0.0;
+  for (int k = 0; k < kMaxPlaneSamples && !beyond(t); ++k) {
+    y += step;
+    const auto r = rail.surface_at(y);
+    if (!r) break;
+    // dt = dy cos(gamma - delta) / cos(gamma) along the rail.
+    const double gamma = std::atan(-r->dz_dy);
+    const double dy_per_dt = std::cos(gamma) / std::max(std::cos(gamma - delta), 0.05);
+    t = -(y - plane.y_O) * plane.cos_delta + (r->z - plane.z_O) * plane.sin_delta;
+    out.y.push_back(y);
+    out.z.push_back(r->z);
+    step = std::copysign(half_row * dy_per_dt, step);
+  }
+  return out;
+}
+
+// The rail's samples across `grid`'s rows in increasing t: walked out from O on both sides
+// until the rail's t passes the rows by two rows and by how far the wheel lies from the rail
+// along t (its rigid penetration).
+RailSamples rail_across(const profiles::Profile& rail, const ContactPlane& plane,
+                        const contactgeom::WheelRailPatch& patch, const ElementGrid& grid) {
+  const double margin = 2.0 * grid.dy + std::abs(patch.rigid_penetration);
+  const double t_lo = grid.y_min - margin, t_hi = grid.y_min + grid.ny * grid.dy + margin;
+  const double half_row = 0.5 * grid.dy, delta = patch.plane_angle;
+  const RailSamples gauge = walk_rail(rail, plane, delta, half_row, -half_row * plane.cos_delta,
+                                      [&](double t) { return t > t_hi; });
+  const RailSamples field = walk_rail(rail, plane, delta, half_row, half_row * plane.cos_delta,
+                                      [&](double t) { return t < t_lo; });
+  RailSamples out;
+  out.y.assign(field.y.rbegin(), field.y.rend());
+  out.z.assign(field.z.rbegin(), field.z.rend());
+  out.y.push_back(plane.y_O);
+  out.z.push_back(plane.z_O);
+  out.y.insert(out.y.end(), gauge.y.begin(), gauge.y.end());
+  out.z.insert(out.z.end(), gauge.z.begin(), gauge.z.end());
+  return out;
+}
+
+// The rail's n at a plane coordinate, with the index of its section to search the wheel's from.
+struct RailAt {
+  std::optional<double> n;
+  std::size_t index = 0;
+};
+
+RailAt rail_at(const PlaneSection& rail, double t) {
+  const auto index =
+      static_cast<std::size_t>(std::lower_bound(rail.t.begin(), rail.t.end(), t) - rail.t.begin());
+  return {section_at(rail, t, index), index};
+}
+
+// The wheel's cross-section at x over the rail's samples, turned into the plane: its surface
+// lies the undeformed distance above the rail's, moved down by `wheel_down`.
+PlaneSection wheel_section(const contactgeom::WheelRailPair& pair,
+                           const contactgeom::WheelsetPose& pose, const ContactPlane& plane,
+                           const RailSamples& rail, double x, double wheel_down) {
+  PlaneSection wheel;
+  for (std::size_t k = 0; k < rail.y.size(); ++k) {
+    const auto d = contactgeom::undeformed_distance(pair, pose, x, rail.y[k]);
+    if (d) plane.add(wheel, rail.y[k], rail.z[k] - *d + wheel_down);
+  }
+  return wheel;
+}
+
+std::optional<double> gap_at(const PlaneSection& wheel, const RailAt& rail, double t) {
+  const auto n_w = section_at(wheel, t, rail.index);
+  if (!rail.n || !n_w) return std::nullopt;
+  return *rail.n - *n_w;
+}
+
 // The undeformed distance along the normal of the patch's plane per element of `grid`, zero at
 // O's least distance (`least`, vertical, at its cross-section's lowest x, `least_x`), the wheel
 // moved down by the patch's rigid penetration there; kNoSurface (and no_surface set) where a
@@ -155,79 +248,28 @@ std::vector<double> planar_gap(const contactgeom::WheelRailPair& pair,
                                double least, const ElementGrid& grid,
                                std::vector<bool>& no_surface) {
   const double y_O = -patch.y_rail;
-  const double c = std::cos(patch.plane_angle), sn = std::sin(patch.plane_angle);
   const auto at_O = pair.rail.surface_at(y_O);
   require(at_O.has_value(), "patch.y_rail", patch.y_rail, "O must lie on the rail profile");
+  const ContactPlane plane{y_O, at_O->z, std::cos(patch.plane_angle), std::sin(patch.plane_angle)};
   const double wheel_down = least + patch.rigid_penetration;
-  // Samples along y, at half the rows' spacing along t, walked out from O until the rail's t
-  // passes the grid's rows by two rows and by how far the wheel lies from the rail along t.
-  const double margin = 2.0 * grid.dy + std::abs(patch.rigid_penetration);
-  const double t_lo = grid.y_min - margin, t_hi = grid.y_min + grid.ny * grid.dy + margin;
-  const auto rail_t = [&](double y, double z) { return -(y - y_O) * c + (z - at_O->z) * sn; };
-  std::vector<double> ys;  // in increasing t
-  const auto walk = [&](double step, auto&& beyond) {
-    std::vector<double> out;
-    double y = y_O, t = 0.0;
-    for (int k = 0; k < kMaxPlaneSamples && !beyond(t); ++k) {
-      y += step;
-      const auto r = pair.rail.surface_at(y);
-      if (!r) break;
-      // dt = dy cos(gamma - delta) / cos(gamma) along the rail.
-      const double gamma = std::atan(-r->dz_dy);
-      const double dy_per_dt =
-          std::cos(gamma) / std::max(std::cos(gamma - patch.plane_angle), 0.05);
-      t = rail_t(y, r->z);
-      out.push_back(y);
-      step = std::copysign(0.5 * grid.dy * dy_per_dt, step);
-    }
-    return out;
-  };
-  const std::vector<double> gauge_side =
-      walk(-0.5 * grid.dy * c, [&](double t) { return t > t_hi; });
-  const std::vector<double> field_side =
-      walk(0.5 * grid.dy * c, [&](double t) { return t < t_lo; });
-  ys.assign(field_side.rbegin(), field_side.rend());
-  ys.push_back(y_O);
-  ys.insert(ys.end(), gauge_side.begin(), gauge_side.end());
+  const RailSamples samples = rail_across(pair.rail, plane, patch, grid);
   PlaneSection rail;
-  std::vector<double> z_rail(ys.size(), 0.0);
-  for (std::size_t k = 0; k < ys.size(); ++k) {
-    z_rail[k] = pair.rail.surface_at(ys[k])->z;
-    const double y = ys[k] - y_O, z = z_rail[k] - at_O->z;
-    rail.t.push_back(-y * c + z * sn);
-    rail.n.push_back(y * sn + z * c);
-  }
+  for (std::size_t k = 0; k < samples.y.size(); ++k) plane.add(rail, samples.y[k], samples.z[k]);
+  // The rail does not depend on x: its n at each row (and at O) once for every column.
+  std::vector<RailAt> rows;
+  for (int j = 0; j < grid.ny; ++j) rows.push_back(rail_at(rail, grid.y(j)));
+  const PlaneSection wheel_at_O = wheel_section(pair, pose, plane, samples, least_x, wheel_down);
+  const double at_O_gap = gap_at(wheel_at_O, rail_at(rail, 0.0), 0.0).value_or(0.0);
   std::vector<double> h(static_cast<std::size_t>(grid.size()), kNoSurface);
-  const auto gap_of = [&](double x, auto&& row_gap) {
-    PlaneSection wheel;
-    for (std::size_t k = 0; k < ys.size(); ++k) {
-      const auto d = contactgeom::undeformed_distance(pair, pose, x, ys[k]);
-      if (!d) continue;
-      const double y = ys[k] - y_O, z = z_rail[k] - *d + wheel_down - at_O->z;
-      wheel.t.push_back(-y * c + z * sn);
-      wheel.n.push_back(y * sn + z * c);
+  for (int i = 0; i < grid.nx; ++i) {
+    const PlaneSection wheel = wheel_section(pair, pose, plane, samples, grid.x(i), wheel_down);
+    for (int j = 0; j < grid.ny; ++j) {
+      const std::size_t e = static_cast<std::size_t>(j * grid.nx + i);
+      const auto gap = gap_at(wheel, rows[static_cast<std::size_t>(j)], grid.y(j));
+      no_surface[e] = !gap.has_value();
+      if (gap) h[e] = *gap - at_O_gap;
     }
-    row_gap(wheel);
-  };
-  const auto gap_at = [&](const PlaneSection& wheel, double s) -> std::optional<double> {
-    const auto guess = static_cast<std::size_t>(std::lower_bound(rail.t.begin(), rail.t.end(), s) -
-                                                rail.t.begin());
-    const auto n_r = section_at(rail, s, guess);
-    const auto n_w = section_at(wheel, s, guess);
-    if (!n_r || !n_w) return std::nullopt;
-    return *n_r - *n_w;
-  };
-  double at_O_gap = 0.0;
-  gap_of(least_x, [&](const PlaneSection& wheel) { at_O_gap = gap_at(wheel, 0.0).value_or(0.0); });
-  for (int i = 0; i < grid.nx; ++i)
-    gap_of(grid.x(i), [&](const PlaneSection& wheel) {
-      for (int j = 0; j < grid.ny; ++j) {
-        const std::size_t e = static_cast<std::size_t>(j * grid.nx + i);
-        const auto gap = gap_at(wheel, grid.y(j));
-        no_surface[e] = !gap.has_value();
-        if (gap) h[e] = *gap - at_O_gap;
-      }
-    });
+  }
   return h;
 }
 
