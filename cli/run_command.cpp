@@ -135,6 +135,7 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
         .add("table_contacts", static_cast<double>(s.table_contacts))
         .add("patches", static_cast<double>(s.patches))
         .add("table_patches", static_cast<double>(s.table_patches))
+        .add("table_work_share", s.frictional_work > 0.0 ? s.table_work / s.frictional_work : 0.0)
         .add("processes", s.processes)
         .add("gathered_bytes", static_cast<double>(s.gathered_bytes))
         .add("waited_seconds", s.waited)
@@ -185,8 +186,11 @@ void report(const RunArgs& args, const std::string& output, const pipeline::RunS
         dropped.at("nadal_contacts"));
   }
   if (s.table_patches > 0) {
-    std::printf("  %zu of %zu patches with totals from the book of tables (best)\n",
-                s.table_patches, s.patches);
+    std::printf(
+        "  %zu of %zu patches with totals from the book of tables (best), %.2f %% of the "
+        "frictional work\n",
+        s.table_patches, s.patches,
+        s.frictional_work > 0.0 ? 100.0 * s.table_work / s.frictional_work : 0.0);
   }
   if (h.limit_step >= 0) {
     std::printf("  in-service limit (EN 15313) reached at step %d, %.1f km: %s%s\n", h.limit_step,

@@ -27,7 +27,8 @@
 //
 // Usage: wheelwear_creep_table_generator [--n 30] [--threads 2] [--out data/creep_table.h5]
 //   [--nu 0.25,0.28] [--g 0.2,0.25,...] [--psi 0,0.2,...] [--theta-count 33] [--beta-count 19]
-//   [--r 0,0.25,...,20] [--spin-scale 3] [--max-aspect 5] [--reuse OLD.h5,...] [--into T.h5]
+//   [--beta ...] [--r 0,0.25,...,20] [--spin-scale 3] [--max-aspect 5] [--reuse OLD.h5,...]
+//   [--into T.h5]
 //   or: wheelwear_creep_table_generator --add-sliding TABLE.h5 [--threads 2]
 // --add-sliding writes (or rewrites) the full-sliding limits into an existing table in place,
 // its forces untouched (how the shipped table, solved before the limits were stored, got them).
@@ -36,24 +37,33 @@
 // instead of solving it again: to add nodes along any axis (a/b, psi, theta, beta, r) to a
 // table, also one nu at a time (--nu 0.25 into one file, then both nu reusing it and the old
 // table).
+// --beta LIST gives the beta nodes themselves (radians, increasing, within -pi/2 ... pi/2; one
+// node alone for a file to --reuse), where --beta-count spaces them uniformly.
 // --into TABLE.h5 writes the groups of --nu into a copy of TABLE.h5, replacing its groups of the
-// same nu and keeping the others (the groups may differ in their a/b nodes): a table extended
-// to slender patches at one nu first (--nu 0.25 --g ...,25 --reuse data/creep_table.h5,... --into
-// data/creep_table.h5 --out data/creep_table.h5).
-// The defaults are the shipped table: 2 x 1 003 200 nodes (898 320 solves per nu), about 90 min on
-// two cores: 35 min for a/b 0.2 ... 5 and 37 min for 6 ... 10 with r up to 6, 10 min for r 7 ...
-// 12 and 5 min for 14 ... 20 (solves near full sliding take fewer sweeps), 35 MB. The nodes are
-// where interpolating (creep_table_interpolation.cpp) needs them to stay within 1 % of mu N of
-// fresh solves (tests/tangential/creep_table_test.cpp; but for a corner of wide patches near full
-// sliding, docs/validation.md): the forces turn fastest with theta where the patch begins to slide
-// fully, and with a/b below 0.3 and above 3 (with nodes at 5, 7 and 10 alone the worst of the 190
-// of 1000 test points beyond a/b = 5 reached 0.98 %). A finer solver grid (--n 40) or more nodes
-// cost in proportion to their elements and sweeps (see the printed count): nodes at a/b
-// 12, 14.5, 17.5, 21 and 25 (72 x 30 ... 150 x 30 elements) take 1.8 ... 6.4 times as long a solve
-// as those at 8.5 (105 ... 187 sweeps against 85, on a sample of 96 creepages at r up to 5), about
+// same nu and keeping the others (the groups may differ in their a/b, beta and r nodes): a table
+// refined at one nu first.
+// The defaults are the node set of both groups of the first shipped table: 2 x 1 003 200 nodes
+// (898 320 solves per nu), about 90 min on two cores: 35 min for a/b 0.2 ... 5 and 37 min for
+// 6 ... 10 with r up to 6, 10 min for r 7 ... 12 and 5 min for 14 ... 20 (solves near full
+// sliding take fewer sweeps), 35 MB. The nodes are where interpolating
+// (creep_table_interpolation.cpp) needs them to stay within 1 % of mu N of fresh solves
+// (tests/tangential/creep_table_test.cpp; but for corners near full sliding, docs/validation.md):
+// the forces turn fastest with theta where the patch begins to slide fully, and with a/b below
+// 0.3 and above 3 (with nodes at 5, 7 and 10 alone the worst of the 190 of 1000 test points
+// beyond a/b = 5 reached 0.98 %). A finer solver grid (--n 40) or more nodes cost in proportion
+// to their elements and sweeps (see the printed count).
+// The shipped table's nu = 0.25 group adds the flank's patches: a/b 12, 14.5, 17.5, 21 and 25
+// (72 x 30 ... 150 x 30 elements, 1.8 ... 6.4 times as long a solve as at 8.5), beta at +-85
+// degrees (on slender patches with spin the forces turn fast as beta nears +-90 degrees) and
+// r 25, 32, 40 and 50 (the flank's spin), each node a file of its own over the other axes of
+// the merged group (--nu 0.25 --g 12; --g ...,25 --beta 1.4835298641951802; --g ...,25
+// --beta ... --r 0,25), merged with --reuse data/creep_table.h5,g12.h5,... --into
+// data/creep_table.h5 (docs/developing.md gives the times).
 
 #include <hdf5.h>
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -63,6 +73,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "creep_table_nodes.hpp"
@@ -103,6 +114,7 @@ struct Options {
   std::vector<std::string> reuse_paths;
   std::vector<double> psis = {0.0, 0.2, 0.4, 0.6, 0.8};
   int theta_count = 33, beta_count = 19;
+  std::vector<double> betas;  // --beta: the beta nodes themselves, instead of beta_count uniform
   std::vector<double> rs = {0.0, 0.25, 0.5, 0.75, 1.0, 1.5,  2.0,  2.5,  3.0,  3.5,
                             4.0, 5.0,  6.0, 7.0,  8.0, 10.0, 12.0, 14.0, 17.0, 20.0};
   double spin_scale = 3.0;
@@ -131,6 +143,8 @@ bool parse_options(int argc, char** argv, Options& o) {
       o.theta_count = std::stoi(value);
     } else if (key == "--beta-count") {
       o.beta_count = std::stoi(value);
+    } else if (key == "--beta") {
+      o.betas = parse_list(value);
     } else if (key == "--r") {
       o.rs = parse_list(value);
     } else if (key == "--spin-scale") {
@@ -145,7 +159,7 @@ bool parse_options(int argc, char** argv, Options& o) {
     } else {
       std::cerr << "unknown option " << key
                 << "; options: --n --threads --out --into --nu --g --psi --theta-count "
-                   "--beta-count --r --spin-scale --max-aspect --reuse --add-sliding\n";
+                   "--beta-count --beta --r --spin-scale --max-aspect --reuse --add-sliding\n";
       return false;
     }
   }
@@ -160,6 +174,10 @@ std::string invalid(const Options& o) {
     if (!std::filesystem::exists(path)) return "--reuse " + path + ": no such file";
   if (!o.into.empty() && !std::filesystem::exists(o.into))
     return "--into " + o.into + ": no such file";
+  const double half_pi = std::numbers::pi / 2 + 1e-12;
+  for (std::size_t i = 0; i < o.betas.size(); ++i)
+    if (!(std::abs(o.betas[i]) <= half_pi) || (i > 0 && !(o.betas[i] > o.betas[i - 1])))
+      return "--beta: the nodes must increase within -pi/2 ... pi/2 (radians)";
   if (o.n < 8 || o.theta_count < 3 || o.beta_count < 3 || o.rs.empty() || o.rs[0] != 0.0 ||
       o.psis.empty() || o.psis[0] != 0.0)
     return "need --n >= 8, --theta-count >= 3, --beta-count >= 3, --r and --psi starting at 0";
@@ -306,7 +324,7 @@ double write_table(const Options& o, const std::string& partial_path) {
   write_attribute(file.get(), "description", description(o));
   const double pi = std::numbers::pi;
   const Axes axes{o.gs, o.psis, uniform(0.0, pi, o.theta_count),
-                  uniform(-pi / 2, pi / 2, o.beta_count), o.rs};
+                  o.betas.empty() ? uniform(-pi / 2, pi / 2, o.beta_count) : o.betas, o.rs};
   double seconds = 0;
   for (const double nu : o.nus) {
     char name[32];

@@ -1,9 +1,9 @@
 // Kalker's exact theory on slender SDEC patches (a/b 0.05, 0.1 and 5 ... 25, where the flange's
-// patches lie; the book of tables covers a/b 0.2 ... 10): how the solve converges on CONTACT's 80
-// x 80 grid (elements up to 25 times longer than wide) and on aspect_sdec_grid (40 across,
-// elements at most twice as long as wide; what method best solves there for single evaluations),
-// and how far FASTSIM-SDEC on 50 x 50 (what best gives beyond the table in runs) and the book of
-// tables (where it covers the patch) lie from it.
+// patches lie; the book of tables covers a/b 0.2 ... 25 at nu 0.25): how the solve converges on
+// CONTACT's 80 x 80 grid (elements up to 25 times longer than wide) and on aspect_sdec_grid (40
+// across, elements at most twice as long as wide; what method best solves there for single
+// evaluations), and how far FASTSIM-SDEC on 50 x 50 (what best gives beyond the table in runs)
+// and the book of tables (where it covers the patch) lie from it.
 //
 // Cases: CONTACT's reference load (p0 = 1000 MPa, c = sqrt(ab) = 4.25 mm, mu 0.35, G 80 GPa,
 // nu 0.25), psi -0.8 ... 0.8, pure spin and mixed creepages. Writes bench/results/

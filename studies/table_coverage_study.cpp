@@ -71,8 +71,10 @@ double quantile(std::vector<PatchRecord> patches, double q, Value value) {
   return patches.empty() ? NAN : value(patches.back());
 }
 
-std::string row(const std::string& name, const std::vector<PatchRecord>& patches) {
-  const tangential::CreepTableRange range = tangential::creep_table_range();
+// The collective's line of the CSV; `nu` its scene's Poisson's ratio (the table's groups may
+// differ in the a/b they reach).
+std::string row(const std::string& name, const std::vector<PatchRecord>& patches, double nu) {
+  const tangential::CreepTableRange range = tangential::creep_table_range(nu);
   double total = 0.0, table = 0.0, ab_out = 0.0, psi_out = 0.0, creep_out = 0.0, target = 0.0;
   for (const PatchRecord& p : patches) {
     total += p.work;
@@ -107,8 +109,9 @@ int main(int argc, char** argv) {
   std::ofstream csv(csv_path);
   csv << "collective,patches,work_N,share_from_table,share_outside_ab,share_outside_psi,"
          "share_outside_creepage,ab_p01,ab_p50,ab_p99,abs_psi_p99,share_ab_0.05_25_psi_0.9\n";
-  const auto emit = [&](const std::string& name, const std::vector<PatchRecord>& patches) {
-    const std::string line = row(name, patches);
+  const auto emit = [&](const std::string& name, const std::vector<PatchRecord>& patches,
+                        double nu) {
+    const std::string line = row(name, patches, nu);
     csv << line;
     std::printf("%s", line.c_str());
   };
@@ -117,7 +120,7 @@ int main(int argc, char** argv) {
     const pipeline::CollectiveEvaluator evaluator(scene);
     const profiles::Profile wheel =
         profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
-    emit("frozen", patches_of(evaluator, wheel, scene.states));
+    emit("frozen", patches_of(evaluator, wheel, scene.states), scene.poisson);
   }
   {
     pipeline::Scene scene = with_best(pipeline::load_scene(WHEELWEAR_EXAMPLE_SCENE));
@@ -127,7 +130,7 @@ int main(int argc, char** argv) {
         profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
     const pipeline::VehicleCollective v =
         pipeline::solve_vehicle_collective(*scene.vehicle_run, evaluator.kernel(), {&wheel});
-    emit("vehicle", patches_of(evaluator, wheel, v.states));
+    emit("vehicle", patches_of(evaluator, wheel, v.states), scene.poisson);
   }
   {
     std::string text = "[load_collective]\n";
@@ -138,7 +141,7 @@ int main(int argc, char** argv) {
     const pipeline::CollectiveEvaluator evaluator(scene);
     const profiles::Profile wheel =
         profiles::wheel_profile(scene.wheel_profile, scene.wheel_radius, scene.wheel_file);
-    emit("flange sweep", patches_of(evaluator, wheel, scene.states));
+    emit("flange sweep", patches_of(evaluator, wheel, scene.states), scene.poisson);
   }
   std::printf("wrote %s\n", csv_path.c_str());
   return 0;

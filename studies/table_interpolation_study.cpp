@@ -1,7 +1,9 @@
 // The book of creep-force tables against fresh exact solves on its own grid (creep_table_grid),
 // so that the difference is the table's own error:
-//   - interpolation: POINTS points spread over its whole range, the sequence
-//     tests/tangential/creep_table_test.cpp draws its first 100 from, by band of a/b;
+//   - interpolation: POINTS points spread over the range it covers at every nu, the sequence
+//     tests/tangential/creep_table_test.cpp draws its first 100 from, by band of a/b; and
+//     where one nu's group reaches more slender patches than the others (a/b 10 ... 25 at
+//     nu 0.25), POINTS more there, at that nu;
 //   - beyond its creepages: POINTS points with r log-uniform in r_max ... 40, of
 //     which the table answers those near full sliding (creep_table_forces): how many, and
 //     their error.
@@ -69,6 +71,20 @@ int main(int argc, char** argv) {
   for (int i = 0; i < count; ++i) {
     points.push_back(sequence.next());
     beyond.push_back(0);
+  }
+  // Slender: a sequence of its own over the a/b a group reaches beyond the others' (the flank's
+  // patches, tabulated at one nu first), at that group's nu.
+  namespace tangential = wheelwear::tangential;
+  const tangential::CreepTableRange common = tangential::creep_table_range();
+  for (const double nu : {common.nu_min, common.nu_max}) {
+    const tangential::CreepTableRange at_nu = tangential::creep_table_range(nu);
+    if (at_nu.a_over_b_max <= common.a_over_b_max) continue;
+    wheelwear::testing::creep_table::PointSequence slender(777);
+    for (int i = 0; i < count; ++i) {
+      points.push_back(
+          slender.next({common.a_over_b_max, at_nu.a_over_b_max, nu, nu, at_nu.r_max}));
+      beyond.push_back(0);
+    }
   }
   const double r_top = std::max(kBeyondTop, 2 * wheelwear::tangential::creep_table_range().r_max);
   int drawn_beyond = 0;

@@ -232,7 +232,11 @@ void reduce_states(const Scene& scene, const std::vector<WheelsetStateSpec>& spe
       for (const PatchOutcome& p : wheel.patches) {
         if (!p.solved) continue;
         ++out.patches;
-        if (p.solution.from_table) ++out.table_patches;
+        out.frictional_work += shares[i] * p.solution.frictional_work;
+        if (p.solution.from_table) {
+          ++out.table_patches;
+          out.table_work += shares[i] * p.solution.frictional_work;
+        }
         if (p.solution.status == tangential::SolveStatus::not_converged) ++out.unconverged_patches;
         for (std::size_t b = 0; b < p.wear.depth.size(); ++b)
           rate[p.wear.first + b] += weight * p.wear.depth[b];

@@ -239,6 +239,9 @@ RunSummary detail::loop(const Scene& scene, std::string_view scene_text,
         as_integer(scalar("table_patches", static_cast<double>(cw.table_patches), "1",
                           "of them, with totals from the book of tables "
                           "(tangential_method = best)")));
+    g.arrays.push_back(scalar(
+        "table_work_share", cw.frictional_work > 0.0 ? cw.table_work / cw.frictional_work : 0.0,
+        "1", "share of the step's frictional work on patches with totals from the book of tables"));
     g.arrays.push_back(
         as_integer(scalar("unconverged_patches", static_cast<double>(cw.unconverged_patches), "1",
                           "exact solves (tangential_method = exact) stopped at their "
@@ -324,6 +327,8 @@ RunSummary detail::loop(const Scene& scene, std::string_view scene_text,
       p.dropped = cw.dropped;
       options.progress(p);
     }
+    summary.frictional_work += cw.frictional_work * step_distance;
+    summary.table_work += cw.table_work * step_distance;
     if (step_distance == 0.0) break;
     for (std::size_t p = 0; p < worn.size(); ++p) {
       summary.worn_area += p == 0 ? smooth_rate[p].area() * step_distance : 0.0;

@@ -28,6 +28,7 @@ py::dict summary_dict(const pipeline::RunSummary& s) {
   o["table_contacts"] = s.table_contacts;
   o["patches"] = s.patches;
   o["table_patches"] = s.table_patches;
+  o["table_work_share"] = s.frictional_work > 0.0 ? s.table_work / s.frictional_work : 0.0;
   o["vehicle_solves"] = s.vehicle_solves;
   return o;
 }

@@ -169,7 +169,8 @@ def creep(
 
     Methods (``method``): fastsim-sdec (default), fastsim-eql, fastsim-eqe,
     fastsim-eqe-shifted, fastsim-elliptic, linear-sdec, she-sdec (Shen-Hedrick-Elkins),
-    table (the book of exact-theory tables: a/b 0.2-10, |psi| <= 0.8, 1-3 us a patch), best (the
+    table (the book of exact-theory tables: a/b 0.2-10, 0.2-25 at nu 0.25, |psi| <= 0.8, 1-3 us a
+    patch), best (the
     most accurate answer for one patch: by default Kalker's exact theory on 40 elements across the
     patch, elements at most twice as long as wide, 10 ms - 2 s a patch for a/b 0.05-25, within
     0.5 % of mu N of the same on twice as fine a grid; ``inside_table="table"`` takes the table's

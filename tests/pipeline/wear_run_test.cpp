@@ -135,9 +135,17 @@ TEST_F(WearRunTest, BestTakesTotalsFromTheTableWhereItReaches) {
   const tangential::Material material{scene.youngs_modulus / (2.0 * (1.0 + scene.poisson)),
                                       scene.poisson};
   std::size_t tabled = 0, patches = 0;
+  // The step's share of the frictional work from the table: each patch's work weighted by its
+  // state's share of the distance (patch arrays are [state][wheel][slot]).
+  const std::vector<double> shares = state_shares(scene.states);
+  const std::size_t slots = from_table.size() / (2 * shares.size());
+  double all_work = 0.0, table_work = 0.0;
   for (std::size_t i = 0; i < from_table.size(); ++i) {
     if (from_table[i] < 0.0) continue;  // -1: a slot without a patch
     ++patches;
+    const double weighted_work = shares[i / (2 * slots)] * work[i];
+    all_work += weighted_work;
+    if (from_table[i] == 1.0) table_work += weighted_work;
     const contactgeom::Sdec sdec{a[i], b[i], psi[i]};
     const tangential::Creepages v{vx[i], vy[i], phi[i]};
     const tangential::ContactLoad load{n[i], scene.friction};
@@ -155,6 +163,9 @@ TEST_F(WearRunTest, BestTakesTotalsFromTheTableWhereItReaches) {
   }
   EXPECT_GT(tabled, patches / 2) << "the scene's patches should mostly lie in the table";
   EXPECT_EQ(file.read_step_array(0, "table_patches")[0], static_cast<double>(tabled));
+  ASSERT_GT(all_work, 0.0);
+  // The same sums in another order: 1e-12 of the share.
+  EXPECT_NEAR(file.read_step_array(0, "table_work_share")[0], table_work / all_work, 1e-12);
   double over_steps = 0.0;  // the summary counts every evaluation, one per step
   for (int step = 0; step < file.completed_steps(); ++step)
     over_steps += file.read_step_array(step, "table_patches")[0];

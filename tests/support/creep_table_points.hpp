@@ -39,29 +39,43 @@ inline tangential::Creepages creepages_for(const contactgeom::Sdec& s,
       r * std::cos(theta) * mu_n / (tangential::creep_table_range().spin_scale * gc2 * c * k.c23)};
 }
 
-/// A fixed sequence of points spread over the whole range of the table: a/b log-uniform, psi
-/// uniform in +-psi_max, nu between the tabulated ratios, directions uniform on the sphere, r
-/// uniform in 0 ... r_max (a linear congruential generator, the same on every platform).
+/// A fixed sequence of points spread over the whole range of the table (or the Shapes given):
+/// a/b log-uniform, psi uniform in +-psi_max, nu between the tabulated ratios, directions
+/// uniform on the sphere, r uniform in 0 ... r_max (a linear congruential generator, the same on
+/// every platform).
 class PointSequence {
  public:
   explicit PointSequence(std::uint64_t seed = 12345) : state_(seed) {}
 
+  /// Where the points lie in a/b (log-uniform), nu (uniform) and up to which normalised
+  /// creepage (next: r uniform in 0 ... r_max).
+  struct Shapes {
+    double a_over_b_min, a_over_b_max, nu_min, nu_max, r_max;
+  };
+
+  /// What the table covers at every nu.
+  static Shapes whole_table() {
+    const tangential::CreepTableRange range = tangential::creep_table_range();
+    return {range.a_over_b_min, range.a_over_b_max, range.nu_min, range.nu_max, range.r_max};
+  }
+
   /// A point inside the table's creepages (r up to r_max).
-  Point next() { return draw(0.0); }
+  Point next(const Shapes& shapes = whole_table()) { return draw(0.0, shapes); }
 
   /// A point beyond them: r log-uniform in r_max ... r_top, where the table answers only near
   /// full sliding (creep_table_forces).
-  Point next_beyond(double r_top) { return draw(r_top); }
+  Point next_beyond(double r_top) { return draw(r_top, whole_table()); }
 
  private:
-  Point draw(double r_top) {
+  Point draw(double r_top, const Shapes& shapes) {
     const tangential::CreepTableRange range = tangential::creep_table_range();
     const double g =
-        range.a_over_b_min * std::pow(range.a_over_b_max / range.a_over_b_min, uniform());
+        shapes.a_over_b_min * std::pow(shapes.a_over_b_max / shapes.a_over_b_min, uniform());
     const double psi = range.psi_max * (2 * uniform() - 1);
-    const double nu = range.nu_min + (range.nu_max - range.nu_min) * uniform();
+    const double nu = shapes.nu_min + (shapes.nu_max - shapes.nu_min) * uniform();
     const double u = uniform();
-    const double r = r_top > 0.0 ? range.r_max * std::pow(r_top / range.r_max, u) : range.r_max * u;
+    const double r =
+        r_top > 0.0 ? range.r_max * std::pow(r_top / range.r_max, u) : shapes.r_max * u;
     const double theta = std::acos(2 * uniform() - 1);
     const double beta = std::numbers::pi * (2 * uniform() - 1);
     const contactgeom::Sdec s{5e-3, 5e-3 / g, psi};
@@ -71,7 +85,7 @@ class PointSequence {
       // Kalker's C's at a/b stand in for the table's normalisation (its C's are interpolated
       // between nodes): keep the table's own magnitude inside r_max.
       const double scale =
-          std::min(1.0, 0.999 * range.r_max / tangential::creep_table_magnitude(s, v, kLoad, m));
+          std::min(1.0, 0.999 * shapes.r_max / tangential::creep_table_magnitude(s, v, kLoad, m));
       v = {v.vx * scale, v.vy * scale, v.phi * scale};
     }
     return {s, v, m};

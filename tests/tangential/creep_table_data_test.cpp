@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 const fs::path kShippedTable = fs::path(WHEELWEAR_SOURCE_DIR) / "data" / "creep_table.h5";
 
 // `sha256sum data/creep_table.h5` (GNU coreutils) of the shipped table; a new table changes it.
-const char kShippedSha256[] = "bc8e8e18132e6036226342738576cbe0ed0d6d5d5caa375b97697b232918d810";
+const char kShippedSha256[] = "bddf7330b3dbf87be35a4ae7fb1240b1e9848be663ba08b930f03c617fdeef20";
 
 struct Point {
   contactgeom::Sdec sdec;
@@ -45,7 +45,10 @@ struct Point {
 // bits. Between the two nu, psi < 0, vx < 0, tiny and large creepage, a/b away from 1. The
 // first, second, third and fifth lie where the interpolation takes out the full-sliding
 // limit's error (creep_table_forces): recorded again when it did (F moved by at most 0.11 % of
-// mu N, Mz by 0.15 % of mu N c; against fresh exact solves they stay within 0.2 % of both).
+// mu N, Mz by 0.15 % of mu N c; against fresh exact solves they stay within 0.2 % of both). The
+// fourth and sixth (at nu 0.27 and 0.25, in directions whose beta stencil reaches the new nodes)
+// recorded again when the nu = 0.25 group gained beta nodes at +-75 and +-85 degrees: they moved
+// by at most 0.007 % of mu N and 0.002 % of mu N c.
 const Point kPoints[] = {
     {{4.25e-3, 4.25e-3, 0.6},
      {0, 0, 1.0},
@@ -66,12 +69,12 @@ const Point kPoints[] = {
      {1e-5, 2e-5, 0.01},
      {2e4, 0.3},
      {80e9, 0.27},
-     {-0x1.4d43525e161ddp+6, -0x1.2a35303f62aeap+8, -0x1.47e4b66ac505ap-2}},
+     {-0x1.4d4331e104d2fp+6, -0x1.2a35312a01e68p+8, -0x1.47e52c986a7ecp-2}},
     {{9e-3, 3e-3, 0.45},
      {1e-4, 2e-4, -0.2},
      {3e4, 0.25},
      {80e9, 0.25},
-     {-0x1.2dc9f675b8c53p+11, 0x1.30f7486c36d64p+12, 0x1.04c75c505c529p+4}},
+     {-0x1.2db52ddb1ca8dp+11, 0x1.30efdd0dcf314p+12, 0x1.04c507a719d9dp+4}},
 };
 
 // The recorded values came from a portable build; a build for this CPU (-march=native, the
@@ -179,7 +182,14 @@ TEST(CreepTableData, ForcesMatchTheRecordedValues) {
   EXPECT_EQ(range.nu_min, 0.25);
   EXPECT_EQ(range.nu_max, 0.28);
   EXPECT_EQ(range.a_over_b_min, 0.2);
-  EXPECT_EQ(range.a_over_b_max, 10.0);
+  EXPECT_EQ(range.a_over_b_max, 10.0);  // at every nu; the nu = 0.25 group reaches 25
+  EXPECT_EQ(creep_table_range(0.25).a_over_b_max, 25.0);
+  EXPECT_EQ(creep_table_range(0.25).r_max, 50.0);
+  EXPECT_EQ(creep_table_range(0.28).r_max, 20.0);
+  EXPECT_EQ(creep_table_range(0.265).a_over_b_max, 10.0);
+  EXPECT_EQ(creep_table_range(0.28).a_over_b_max, 10.0);
+  EXPECT_EQ(creep_table_range(0.25).a_over_b_min, 0.2);
+  EXPECT_THROW(creep_table_range(std::nan("")), InputError);
   EXPECT_EQ(range.max_element_aspect, 5.0);
   EXPECT_EQ(range.psi_max, 0.8);
   EXPECT_EQ(range.r_max, 20.0);
@@ -249,8 +259,9 @@ TEST_F(CreepTableFile, ReadsTheElementAspectOfItsGrid) {
   EXPECT_TRUE(contains(*message, "max_element_aspect")) << *message;
 }
 
-// The range, grid and extrapolation beyond r_max are the first group's, and nu is interpolated
-// node by node: a group whose spin scale (so its normalised axes) differs is refused.
+// The grid, the extrapolation beyond r_max and the normalised creepages are shared by every
+// group (their a/b nodes may differ: the shipped table's do): a group whose spin scale (so its
+// normalised axes) differs is refused.
 TEST_F(CreepTableFile, RefusesGroupsThatDoNotShareTheirAxes) {
   const fs::path file = copy("mixed.h5");
   {
@@ -264,6 +275,23 @@ TEST_F(CreepTableFile, RefusesGroupsThatDoNotShareTheirAxes) {
   const auto message = input_error([&] { load_creep_table(file); });
   ASSERT_TRUE(message);
   EXPECT_TRUE(contains(*message, "differ in their axes")) << *message;
+}
+
+// Every direction of the creepages must lie between the direction nodes: a group whose beta
+// nodes stop short of pi/2 is refused (as the generator's one-node files for --reuse are).
+TEST_F(CreepTableFile, RefusesDirectionNodesThatDoNotSpanEveryDirection) {
+  const fs::path file = copy("short_beta.h5");
+  {
+    H5::H5File h5(file.string(), H5F_ACC_RDWR);
+    H5::DataSet beta = h5.openGroup("nu_0.28").openDataSet("beta");
+    std::vector<double> values(static_cast<std::size_t>(beta.getSpace().getSimpleExtentNpoints()));
+    beta.read(values.data(), H5::PredType::NATIVE_DOUBLE);
+    values.back() -= 0.05;  // still increasing
+    beta.write(values.data(), H5::PredType::NATIVE_DOUBLE);
+  }
+  const auto message = input_error([&] { load_creep_table(file); });
+  ASSERT_TRUE(message);
+  EXPECT_TRUE(contains(*message, "do not span theta 0 ... pi and beta -pi/2 ... pi/2")) << *message;
 }
 
 // A dataset of doubles of a group, with its shape.
@@ -281,8 +309,9 @@ std::vector<double> read_dataset(const H5::Group& group, const char* name,
 
 // The full-sliding limits the table holds per direction node [a_over_b][psi][theta][beta] are
 // full_sliding_sdec's (itself tested against the closed form of pure spin) at the node's
-// direction, on the node's grid: every 7th node of both groups (7166 of 16 x 5 x 33 x 19 each),
-// which a wrong index order or a wrong normalisation would miss at once. The generator writes
+// direction, on the node's grid: every 7th node of both groups (11385 of 21 x 5 x 33 x 23 at
+// nu = 0.25, 7166 of 16 x 5 x 33 x 19 at 0.28), which a wrong index order or a wrong
+// normalisation would miss at once. The generator writes
 // doubles; the same sums in the same order agree to rounding (1e-12).
 TEST_F(CreepTableFile, HoldsTheFullSlidingLimitOfItsDirectionNodes) {
   const H5::H5File h5(kShippedTable.string(), H5F_ACC_RDONLY);
@@ -317,7 +346,7 @@ TEST_F(CreepTableFile, HoldsTheFullSlidingLimitOfItsDirectionNodes) {
       ++compared;
     }
   }
-  EXPECT_EQ(compared, 2 * 7166);
+  EXPECT_EQ(compared, 11385 + 7166);
 }
 
 // A copy of the shipped table with its full-sliding limits removed or damaged.

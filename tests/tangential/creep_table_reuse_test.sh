@@ -53,6 +53,20 @@ if "$generator" "${common[@]}" --nu 0.25 --into "$dir/missing.h5" --out "$dir/in
 fi
 grep -q "missing.h5: no such file" "$dir/err"
 h5diff "$dir/into.h5" "$dir/fresh.h5" nu_0.25/Fx_muN nu_0.25/Fx_muN
+# --beta: a direction node added to a table from a file of that node alone (as the shipped
+# table's nodes at +-75 and +-85 degrees were) equals the table solved with it from scratch.
+extra=1.3
+refined=$(/usr/bin/python3 -c "import math; print(','.join(repr(b) for b in sorted([-math.pi/2 + math.pi*i/4 for i in range(5)] + [$extra])))")
+"$generator" "${common[@]}" "${old[@]}" --nu 0.25 --beta "$extra" --out "$dir/one_beta.h5" > /dev/null
+"$generator" "${common[@]}" "${old[@]}" --nu 0.25 --beta "$refined" \
+  --reuse "$dir/old25.h5,$dir/one_beta.h5" --out "$dir/refined.h5" > "$dir/log"
+grep -qxF "nu_0.25: 300 of 360 nodes reused from $dir/old25.h5" "$dir/log"
+grep -qxF "nu_0.25: 60 of 360 nodes reused from $dir/one_beta.h5" "$dir/log"
+"$generator" "${common[@]}" "${old[@]}" --nu 0.25 --beta "$refined" --out "$dir/refined_fresh.h5" \
+  > /dev/null
+for values in beta Fx_muN Fy_muN Mz_muNc Fx_sliding_muN Fy_sliding_muN Mz_sliding_muNc; do
+  h5diff "$dir/refined.h5" "$dir/refined_fresh.h5" "nu_0.25/$values" "nu_0.25/$values"
+done
 # A table without the limits (as the shipped one was solved) gets them from --add-sliding, the
 # same bits as the generator writes, its forces untouched. (Debian's python3-h5py removes them.)
 cp "$dir/fresh.h5" "$dir/added.h5"
@@ -86,5 +100,6 @@ done
 [[ "$(cat "$dir/junk.h5")" == "not a table" ]]
 cmp "$dir/other.h5" "$dir/other_before.h5"
 echo "--reuse: 300 of 1080 nodes per nu reused, each from its file; equal to a fresh table bit for bit;"
+echo "--beta: a direction node from a file of its own, equal to the table solved with it"
 echo "--into: the extended nu 0.25 group beside the old nu 0.28 one, each as solved"
 echo "--add-sliding: the same limits in place; a file that is no table refused and left as it was"

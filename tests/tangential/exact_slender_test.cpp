@@ -182,19 +182,22 @@ TEST(ExactSlender, BestForOnePatchIsTheExactTheoryInsideTheTableToo) {
 
 // Without exact_beyond_table best gives FASTSIM-SDEC outside the table, as runs do; with it the
 // exact theory on aspect_sdec_grid, the very solution exact_sdec gives there.
+// The patch: a/b = 20 at nu = 0.28, where the table ends at a/b 10 (its nu = 0.25 group reaches
+// 25).
 TEST(ExactSlender, BestBeyondTheTableIsTheExactSolveOnTheAspectGrid) {
   const contactgeom::Sdec patch = reference_patch(20.0, 0.0);
   const ContactLoad load = reference_load(patch);
+  const Material material{80e9, 0.28};
   const Creepages spin{0, 0, 0.5};
   SolveOptions options;
-  const TangentialSolution runs = solve_patch(Method::best, patch, spin, load, {}, options);
+  const TangentialSolution runs = solve_patch(Method::best, patch, spin, load, material, options);
   EXPECT_FALSE(runs.exact.has_value());
   EXPECT_TRUE(runs.table_outside.has_value());
   options.exact_beyond_table = true;
-  const TangentialSolution single = solve_patch(Method::best, patch, spin, load, {}, options);
+  const TangentialSolution single = solve_patch(Method::best, patch, spin, load, material, options);
   ASSERT_TRUE(single.exact.has_value());
   EXPECT_TRUE(single.table_outside.has_value());
-  const ExactSolution exact = exact_sdec(patch, spin, load, {}, aspect_sdec_grid(patch), {});
+  const ExactSolution exact = exact_sdec(patch, spin, load, material, aspect_sdec_grid(patch), {});
   EXPECT_EQ(single.forces.Fx, exact.forces.Fx);
   EXPECT_EQ(single.forces.Fy, exact.forces.Fy);
   EXPECT_EQ(single.forces.Mz, exact.forces.Mz);

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "support/hollow_wheel.hpp"
@@ -97,6 +98,16 @@ TEST(ConformalPatch, SdecChainPlacesTheWearOfAWidePatchWhereTheExactChainDoes) {
     const ChainWear best = sdec_chain(tangential::Method::best, p, creepages);
     const ExactChain exact = exact_chain(pair, p, creepages);
     const WearSummary& e = exact.chain.wear;
+    std::printf(
+        "%s: area %+.2f %%, pmax %+.2f %%; centroid %+.3f mm, band %+.2f %%; work fastsim %+.2f "
+        "%%, best %+.2f %%; worn volume fastsim %+.2f %%, best %+.2f %%\n",
+        label.c_str(), 100 * relative(p.measures.area, exact.area),
+        100 * relative(p.pmax, exact.pmax), 1e3 * (fastsim.wear.centroid_s - e.centroid_s),
+        100 * relative(fastsim.wear.band_width, e.band_width),
+        100 * relative(fastsim.frictional_work, exact.chain.frictional_work),
+        100 * relative(best.frictional_work, exact.chain.frictional_work),
+        100 * relative(fastsim.wear.volume_per_metre, e.volume_per_metre),
+        100 * relative(best.wear.volume_per_metre, e.volume_per_metre));
     // Normal problem (measured -0.5 %, +0.2 %): over this flat gap the calibrated strips
     // carry the load as the exact normal solve does; 5 %, the bound of the flank's sweep.
     EXPECT_LT(std::abs(relative(p.measures.area, exact.area)), 0.05) << label;

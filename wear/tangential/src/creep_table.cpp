@@ -60,39 +60,62 @@ void validate(const contactgeom::Sdec& sdec, const Creepages& v, const ContactLo
   v.validate();
 }
 
+// The groups `nu` lies between and its weight between them (nu inside the table's range). A
+// group of zero weight (nu on the other's own value) is left out: the groups may differ in their
+// a/b nodes, and only those that count must cover the patch.
+NuBlocks nu_blocks(const CreepTableData& table, double nu) {
+  const int count = static_cast<int>(table.blocks.size());
+  const CreepTableBlock* blocks = table.blocks.data();
+  NuBlocks nb;
+  nb.lower = &blocks[0];
+  for (int i = 0; i + 1 < count; ++i) {
+    if (nu >= blocks[i].nu - 1e-12) {
+      nb.lower = &blocks[i];
+      nb.upper = &blocks[i + 1];
+      nb.t = std::clamp((nu - blocks[i].nu) / (blocks[i + 1].nu - blocks[i].nu), 0.0, 1.0);
+    }
+  }
+  if (nb.upper && nb.t >= 1.0) nb = {nb.upper, nullptr, 0.0};
+  if (nb.upper && nb.t <= 0.0) nb.upper = nullptr;
+  return nb;
+}
+
+// The largest normalised creepage every group of `nb` tabulates.
+double r_max(const NuBlocks& nb) {
+  return nb.upper ? std::min(r_max(*nb.lower), r_max(*nb.upper)) : r_max(*nb.lower);
+}
+
+// The a/b range every group of `nb` covers.
+std::pair<double, double> a_over_b_range(const NuBlocks& nb) {
+  double lo = nb.lower->a_over_b.front(), hi = nb.lower->a_over_b.back();
+  if (nb.upper) {
+    lo = std::max(lo, nb.upper->a_over_b.front());
+    hi = std::min(hi, nb.upper->a_over_b.back());
+  }
+  return {lo, hi};
+}
+
 // Empty message when the table covers the patch's shape and material (nu, a/b, psi), else the
 // reason; `out` receives the blocks for nu. The inputs are valid.
 std::string check_shape(const CreepTableData& table, const contactgeom::Sdec& sdec,
                         const Material& material, NuBlocks* out) {
-  const int count = static_cast<int>(table.blocks.size());
-  const CreepTableBlock* blocks = table.blocks.data();
-  const double nu_lo = blocks[0].nu, nu_hi = blocks[count - 1].nu;
+  const double nu_lo = table.blocks.front().nu, nu_hi = table.blocks.back().nu;
   std::ostringstream why;
   if (material.nu < nu_lo - 1e-12 || material.nu > nu_hi + 1e-12) {
     why << "nu = " << material.nu << ": the creep table covers nu = " << range_text(nu_lo, nu_hi);
     return why.str();
   }
-  NuBlocks nb;
-  nb.lower = &blocks[0];
-  for (int i = 0; i + 1 < count; ++i) {
-    if (material.nu >= blocks[i].nu - 1e-12) {
-      nb.lower = &blocks[i];
-      nb.upper = &blocks[i + 1];
-      nb.t = std::clamp((material.nu - blocks[i].nu) / (blocks[i + 1].nu - blocks[i].nu), 0.0, 1.0);
-    }
-  }
+  const NuBlocks nb = nu_blocks(table, material.nu);
   const double g = sdec.ellipticity();
-  for (const CreepTableBlock* b : {nb.lower, nb.upper}) {
-    if (!b) continue;
-    const double g_lo = b->a_over_b[0], g_hi = b->a_over_b[b->n_g - 1];
-    if (g < g_lo * (1 - kSlack) || g > g_hi * (1 + kSlack)) {
-      why << "a/b = " << g << ": the creep table covers a/b = " << range_text(g_lo, g_hi);
-      return why.str();
-    }
-    if (std::abs(sdec.psi) > psi_max(*b) + kSlack) {
-      why << "psi = " << sdec.psi << ": the creep table covers |psi| <= " << psi_max(*b);
-      return why.str();
-    }
+  const auto [g_lo, g_hi] = a_over_b_range(nb);
+  if (g < g_lo * (1 - kSlack) || g > g_hi * (1 + kSlack)) {
+    why << "a/b = " << g << ": the creep table covers a/b = " << range_text(g_lo, g_hi)
+        << " at nu = " << material.nu;
+    return why.str();
+  }
+  if (std::abs(sdec.psi) > psi_max(*nb.lower) + kSlack) {
+    why << "psi = " << sdec.psi << ": the creep table covers |psi| <= " << psi_max(*nb.lower);
+    return why.str();
   }
   if (out) *out = nb;
   return {};
@@ -193,11 +216,10 @@ struct TowardsSliding {
   double deficit = 0.0;
 };
 
-TowardsSliding towards_full_sliding(const CreepTableRange& range, const NuBlocks& nb,
-                                    const contactgeom::Sdec& sdec, const Creepages& v,
-                                    const ContactLoad& load, const Material& material, double r,
-                                    SlidingLimit& limit) {
-  const double k = range.r_max / r;
+TowardsSliding towards_full_sliding(double r_top, const NuBlocks& nb, const contactgeom::Sdec& sdec,
+                                    const Creepages& v, const ContactLoad& load,
+                                    const Material& material, double r, SlidingLimit& limit) {
+  const double k = r_top / r;
   const Creepages at_max{v.vx * k, v.vy * k, v.phi * k};
   const std::array<double, 3> tabled =
       interpolate_near_sliding(nb, sdec, at_max, load, material, limit);
@@ -227,11 +249,12 @@ Answer answer(const CreepTable& table, const contactgeom::Sdec& sdec, const Cree
   const CreepTableRange range = table.range();
   SlidingLimit limit(d, range, sdec, v, load);
   const double r = magnitude(nb, sdec, v, load, material);
-  if (r <= range.r_max * (1 + kSlack)) {
+  const double r_top = r_max(nb);
+  if (r <= r_top * (1 + kSlack)) {
     out.f = interpolate_near_sliding(nb, sdec, v, load, material, limit);
     return out;
   }
-  const TowardsSliding beyond = towards_full_sliding(range, nb, sdec, v, load, material, r, limit);
+  const TowardsSliding beyond = towards_full_sliding(r_top, nb, sdec, v, load, material, r, limit);
   if (beyond.deficit <= range.full_sliding_margin) {
     out.f = beyond.f;
     return out;
@@ -239,7 +262,7 @@ Answer answer(const CreepTable& table, const contactgeom::Sdec& sdec, const Cree
   std::ostringstream why;
   why << "normalised creepage |(xi, eta, chi)| = " << r
       << " (xi = G c^2 C11 vx/(mu N), eta = G c^2 C22 vy/(mu N), chi = " << range.spin_scale
-      << " G c^3 C23 phi/(mu N)): the creep table covers up to " << range.r_max
+      << " G c^3 C23 phi/(mu N)): the creep table covers up to " << r_top
       << ", and beyond only patches within " << range.full_sliding_margin
       << " of mu N of full sliding there (this one: " << beyond.deficit << ")";
   out.why = why.str();
@@ -265,10 +288,15 @@ CreepTableRange CreepTable::range() const {
   const CreepTableBlock& first = blocks.front();
   range.nu_min = first.nu;
   range.nu_max = blocks.back().nu;
-  range.a_over_b_min = first.a_over_b[0];
-  range.a_over_b_max = first.a_over_b[first.n_g - 1];
-  range.psi_max = psi_max(first);
+  range.a_over_b_min = first.a_over_b.front();
+  range.a_over_b_max = first.a_over_b.back();
   range.r_max = r_max(first);
+  for (const CreepTableBlock& b : blocks) {
+    range.a_over_b_min = std::max(range.a_over_b_min, b.a_over_b.front());
+    range.a_over_b_max = std::min(range.a_over_b_max, b.a_over_b.back());
+    range.r_max = std::min(range.r_max, r_max(b));
+  }
+  range.psi_max = psi_max(first);
   range.grid = first.grid;
   range.spin_scale = first.spin_scale;
   range.max_element_aspect = first.max_element_aspect;
@@ -276,8 +304,23 @@ CreepTableRange CreepTable::range() const {
   return range;
 }
 
+CreepTableRange CreepTable::range(double nu) const {
+  CreepTableRange out = range();
+  if (!std::isfinite(nu)) throw InputError("creep table range: nu = " + std::to_string(nu));
+  const NuBlocks nb = nu_blocks(*data_, std::clamp(nu, out.nu_min, out.nu_max));
+  const auto [lo, hi] = a_over_b_range(nb);
+  out.a_over_b_min = lo;
+  out.a_over_b_max = hi;
+  out.r_max = r_max(nb);
+  return out;
+}
+
 CreepTableRange creep_table_range() {
   return creep_table().range();
+}
+
+CreepTableRange creep_table_range(double nu) {
+  return creep_table().range(nu);
 }
 
 SdecGridOptions creep_table_grid(const contactgeom::Sdec& sdec) {

@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -207,6 +208,15 @@ CreepTableBlock read_block(const H5::Group& group, const fs::path& file, const s
   b.theta = read_axis(group, "theta", file, where);
   b.beta = read_axis(group, "beta", file, where);
   b.r = read_axis(group, "r", file, where);
+  // Every direction of the creepages lies between the direction nodes: theta over 0 ... pi,
+  // beta over -pi/2 ... pi/2 (the generator's single-node files for --reuse are no table).
+  const double pi = std::numbers::pi;
+  const auto spans = [](const std::vector<double>& axis, double lo, double hi) {
+    return std::abs(axis.front() - lo) <= 1e-9 && std::abs(axis.back() - hi) <= 1e-9;
+  };
+  if (!spans(b.theta, 0.0, pi) || !spans(b.beta, -pi / 2, pi / 2))
+    damaged(file,
+            where + ": its direction nodes do not span theta 0 ... pi and beta -pi/2 ... pi/2");
   b.n_g = static_cast<int>(b.a_over_b.size());
   b.n_psi = static_cast<int>(b.psi.size());
   b.n_theta = static_cast<int>(b.theta.size());
@@ -271,12 +281,13 @@ std::shared_ptr<CreepTableData> read_table(const std::string& bytes, const fs::p
   for (std::size_t i = 1; i < table->blocks.size(); ++i) {
     if (table->blocks[i].nu == table->blocks[i - 1].nu)
       damaged(file, "two groups tabulate nu = " + std::to_string(table->blocks[i].nu));
-    // The range, the grid and the extrapolation beyond r_max are the first group's: every
-    // group must share them (and nodes, so that nu is interpolated between equal axes).
+    // The grid, the spin scale (so what the normalised creepages mean) and psi are the first
+    // group's: every group must share them. Their a/b, direction and r nodes may differ (each
+    // group is interpolated on its own, then the two about nu are blended, within the creepage
+    // both reach), so that a table can be refined at one nu before the others.
     const CreepTableBlock &a = table->blocks.front(), &b = table->blocks[i];
     if (a.grid != b.grid || a.max_element_aspect != b.max_element_aspect ||
-        a.spin_scale != b.spin_scale || a.a_over_b != b.a_over_b || a.psi != b.psi ||
-        a.theta != b.theta || a.beta != b.beta || a.r != b.r)
+        a.spin_scale != b.spin_scale || a.psi != b.psi)
       damaged(file, "its groups for nu = " + std::to_string(a.nu) + " and " + std::to_string(b.nu) +
                         " differ in their axes, grid or spin scale");
     // Between two groups the correction near full sliding needs the limits of both.

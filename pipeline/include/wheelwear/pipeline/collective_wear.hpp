@@ -55,6 +55,9 @@ struct CollectiveWear {
   std::size_t table_contacts = 0;   ///< of them, interpolated in a contact table
   std::size_t patches = 0;          ///< patches solved and worn
   std::size_t table_patches = 0;    ///< of them, with totals from the book of tables ("best")
+  /// Frictional work of the solved patches, each weighted by its state's share of the distance
+  /// [J/m], and of it the work of the patches with totals from the book of tables.
+  double frictional_work = 0.0, table_work = 0.0;
   /// Exact solves ("exact") that stopped at their iteration cap; their last iterate is used.
   std::size_t unconverged_patches = 0;
   /// Patches not solved because the contact model is hertz and they have no Hertz ellipse.

@@ -59,6 +59,9 @@ struct RunSummary {
   std::size_t table_contacts = 0;   ///< of them, interpolated in the vehicle's contact tables
   std::size_t patches = 0;          ///< contact patches solved by this process
   std::size_t table_patches = 0;    ///< of them, with totals from the book of tables ("best")
+  /// The frictional work of the worn distance [J] (each step's share-weighted work times its
+  /// step distance), and of it the work with totals from the book of tables.
+  double frictional_work = 0.0, table_work = 0.0;
   int vehicle_solves = 0;           ///< a vehicle run's solves of its vehicle by this process
   int processes = 1;                ///< processes the steps were spread over
   std::size_t gathered_bytes = 0;   ///< outcomes gathered from the other processes, all steps

@@ -52,7 +52,13 @@ struct CreepTableRange {
 /// the data.
 class CreepTable {
  public:
+  /// What the table covers at every nu it tabulates (its groups, one per nu, may differ in
+  /// their a/b, direction and r nodes: then the a/b range and r_max all of them cover).
   CreepTableRange range() const;
+  /// What it covers at `nu` (clamped to nu_min ... nu_max): the a/b range and r_max of the
+  /// groups that weigh in there (the group of nu alone when nu is one of the table's). Throws
+  /// InputError when nu is not finite.
+  CreepTableRange range(double nu) const;
   const std::filesystem::path& path() const;  ///< the file read (absolute)
   /// Lower-case hex SHA-256 of the file's bytes, the very bytes the table was read from.
   const std::string& sha256() const;
@@ -92,8 +98,11 @@ std::string sha256_hex(std::string_view bytes);
 /// second creep_table() takes). Throws InputError when the file cannot be read.
 std::string file_sha256(const std::filesystem::path& file);
 
-/// The range of the table (creep_table().range()).
+/// The range of the table at every nu (creep_table().range()).
 CreepTableRange creep_table_range();
+
+/// The range of the table at `nu` (creep_table().range(nu)).
+CreepTableRange creep_table_range(double nu);
 
 /// The grid the table's nodes were solved on, for the patch `sdec` (a fresh exact solve on it
 /// differs from the table by its interpolation alone): creep_table_range().grid elements
@@ -106,7 +115,8 @@ SdecGridOptions creep_table_grid(const contactgeom::Sdec& sdec);
 /// the ellipse a/b at the table's nu, interpolated as the table does, s the table's spin scale
 /// (CreepTableRange::spin_scale: spin saturates the patch at a fraction of the normalised
 /// creepage translation needs); returns
-/// sqrt(xi^2 + eta^2 + chi^2) [-] (the larger of the two tabulated nu around `material.nu`),
+/// sqrt(xi^2 + eta^2 + chi^2) [-] (the larger of the two tabulated nu around `material.nu`;
+/// of the one when it is a tabulated nu),
 /// which the table tabulates up to creep_table_range().r_max. Throws InputError on invalid
 /// input and unless a/b, psi and nu are inside the table's range.
 double creep_table_magnitude(const contactgeom::Sdec& sdec, const Creepages& creepages,
