@@ -62,7 +62,7 @@ void validate(const contactgeom::Sdec& sdec, const Creepages& v, const ContactLo
 
 // The groups `nu` lies between and its weight between them (nu inside the table's range). A
 // group of zero weight (nu on the other's own value) is left out: the groups may differ in their
-// a/b nodes, and only those that count must cover the patch.
+// a/b, direction and r nodes, and only those that count must cover the patch.
 NuBlocks nu_blocks(const CreepTableData& table, double nu) {
   const int count = static_cast<int>(table.blocks.size());
   const CreepTableBlock* blocks = table.blocks.data();
