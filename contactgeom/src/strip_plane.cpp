@@ -42,22 +42,6 @@ constexpr std::size_t kBeyondRun = 4;
 // wheel's slope against the plane only far from the contact, where the strips never touch.
 constexpr double kLeastSag = 0.05;
 
-// The weighted plane's inclination over the run's interpenetration at `approach` (strips_of());
-// `fallback` where nothing interpenetrates.
-double weighted_plane_angle(const WheelRailGap& geometry, const GapSamples& g,
-                            SampleDirections& directions, const Run& run, double approach,
-                            double fallback) {
-  double weight = 0.0, moment = 0.0;
-  for (std::size_t j = run.first; j <= run.last; ++j) {
-    const double penetration = approach - gap_in_run(g, run, j, approach);
-    if (!(penetration > 0.0)) continue;
-    const double w = penetration * penetration * std::sqrt(penetration);
-    weight += w;
-    moment += w * directions.angle(geometry, g, j);
-  }
-  return weight > 0.0 ? moment / weight : fallback;
-}
-
 // `run` widened by up to `samples` samples at either end, within its window.
 Run widened(const GapSamples& g, const Run& run, std::size_t samples) {
   Run wider = run;
@@ -184,6 +168,20 @@ void resampled(const GapSamples& g, const Run& run, RunStrips& out, StripBuffers
 }
 
 }  // namespace
+
+double weighted_plane_angle(const WheelRailGap& geometry, const GapSamples& g,
+                            SampleDirections& directions, const Run& run, double approach,
+                            double fallback) {
+  double weight = 0.0, moment = 0.0;
+  for (std::size_t j = run.first; j <= run.last; ++j) {
+    const double penetration = approach - gap_in_run(g, run, j, approach);
+    if (!(penetration > 0.0)) continue;
+    const double w = penetration * penetration * std::sqrt(penetration);
+    weight += w;
+    moment += w * directions.angle(geometry, g, j);
+  }
+  return weight > 0.0 ? moment / weight : fallback;
+}
 
 RunStrips strips_of(const WheelRailGap& geometry, const GapSamples& g, SampleDirections& directions,
                     const Run& run, double approach, bool weighted, StripBuffers& b) {

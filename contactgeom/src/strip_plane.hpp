@@ -85,6 +85,13 @@ struct RunStrips {
   StripPlane plane;
 };
 
+// CONTACT's contact angle of `run` at the rigid approach `approach`: the rail's, weighted by the
+// rigid penetration to the power 5/2 (StripPlane::weighted_angle); `fallback` where nothing
+// interpenetrates.
+double weighted_plane_angle(const WheelRailGap& geometry, const GapSamples& g,
+                            SampleDirections& directions, const Run& run, double approach,
+                            double fallback);
+
 // The strips of `run` for the Kik-Piotrowski solver at the rigid approach `approach` (vertical,
 // the datum of g.h), in increasing s (towards the gauge side, -y in the profile frame), s
 // measured from run.y_O along the plane.

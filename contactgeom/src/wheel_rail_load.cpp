@@ -302,9 +302,11 @@ WheelRailContact solve_on_samples(const WheelRailGap& geometry, const GapSamples
       if (regions.size() == 1 &&
           std::abs(geometry.contact_angle(regions[0].y_O) - angle) < 1e-3 * std::max(1.0, angle)) {
         fast_approach = candidate;
-        // O's plane does not depend on the approach, but the angle CONTACT reports does.
+        // O's plane and its strips do not depend on the approach (no cut bounds the window),
+        // but the angle CONTACT reports does.
         if (!weighted)
-          strips = strips_of(geometry, g, directions, window, approach, false, buffers);
+          strips.plane.weighted_angle =
+              weighted_plane_angle(geometry, g, directions, window, approach, strips.plane.angle);
         PatchSet e;
         e.vertical = forces.vertical;
         e.lateral = forces.lateral;
