@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "table_hdf5.hpp"
+
 namespace wheelwear::generators {
 
 NodeProblem node_problem(const Axes& axes, const Normalisation& k, std::size_t ig, std::size_t ip,
@@ -14,6 +16,11 @@ NodeProblem node_problem(const Axes& axes, const Normalisation& k, std::size_t i
   return {{a, b, axes.psis[ip]},
           {xi * mu_n / (gc2 * k.c11[ig]), eta * mu_n / (gc2 * k.c22[ig]),
            chi * mu_n / (k.spin_scale * gc2 * c * k.c23[ig])}};
+}
+
+Axes read_axes(hid_t group) {
+  return {read_doubles(group, "a_over_b"), read_doubles(group, "psi"), read_doubles(group, "theta"),
+          read_doubles(group, "beta"), read_doubles(group, "r")};
 }
 
 }  // namespace wheelwear::generators

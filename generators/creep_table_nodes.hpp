@@ -3,6 +3,8 @@
 // creepages onto physical ones, the patch and creepages a node is solved with, and the threads
 // that solve them.
 
+#include <hdf5.h>
+
 #include <atomic>
 #include <cstddef>
 #include <exception>
@@ -40,6 +42,9 @@ struct NodeProblem {
 
 NodeProblem node_problem(const Axes& axes, const Normalisation& k, std::size_t ig, std::size_t ip,
                          double r, double theta, double beta);
+
+/// The axes of a table's group (a_over_b, psi, theta, beta, r), each empty where it is missing.
+Axes read_axes(hid_t group);
 
 /// Calls body(i) for i = 0 ... total - 1 on `threads` threads, each taking the next index; the
 /// first exception a call throws stops the others' taking and is rethrown after the join.

@@ -22,8 +22,7 @@ std::vector<long> indices_in(const std::vector<double>& old, const std::vector<d
 }
 
 void read_nodes(hid_t group, Reused& out) {
-  out.axes = {read_doubles(group, "a_over_b"), read_doubles(group, "psi"),
-              read_doubles(group, "theta"), read_doubles(group, "beta"), read_doubles(group, "r")};
+  out.axes = read_axes(group);
   out.fx = read_doubles(group, "Fx_muN");
   out.fy = read_doubles(group, "Fy_muN");
   out.mz = read_doubles(group, "Mz_muNc");

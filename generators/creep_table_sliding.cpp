@@ -27,9 +27,7 @@ std::vector<std::string> nu_groups(hid_t file) {
 }
 
 void rewrite_sliding(hid_t group, const std::string& name, unsigned threads) {
-  const Axes axes{read_doubles(group, "a_over_b"), read_doubles(group, "psi"),
-                  read_doubles(group, "theta"), read_doubles(group, "beta"),
-                  read_doubles(group, "r")};
+  const Axes axes = read_axes(group);
   const Normalisation k{read_doubles(group, "C11"), read_doubles(group, "C22"),
                         read_doubles(group, "C23"), read_number(group, "spin_scale", 1.0)};
   const std::size_t n_g = axes.gs.size();
